@@ -1,0 +1,86 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Exceptions thrown by every algorithm of the library.
+
+#ifndef CGAL_SURFACE_DESIGN_EXCEPTIONS_H
+#define CGAL_SURFACE_DESIGN_EXCEPTIONS_H
+
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace CGAL {
+namespace Surface_design {
+
+/// \ingroup PkgSurfaceDesignRef
+/// What is wrong with a mesh rejected by the input validation.
+enum class Mesh_defect
+{
+  empty,                  ///< the mesh has no face
+  invalid_index_map,      ///< an index map is not a bijection onto `[0, n)` (e.g. a `Surface_mesh` with removed elements: call `collect_garbage()`)
+  non_finite_coordinates, ///< a vertex has a NaN or infinite coordinate
+  isolated_vertex,        ///< a vertex has no incident face
+  not_triangle,           ///< a face is not a triangle
+  non_manifold_vertex,    ///< the faces around a vertex form more than one fan
+  degenerate_face         ///< a face has (numerically) zero area
+};
+
+/// \ingroup PkgSurfaceDesignRef
+/// Human-readable name of a `Mesh_defect`.
+inline const char* to_string(Mesh_defect d)
+{
+  switch(d)
+  {
+    case Mesh_defect::empty: return "empty mesh";
+    case Mesh_defect::invalid_index_map: return "invalid index map";
+    case Mesh_defect::non_finite_coordinates: return "non-finite coordinates";
+    case Mesh_defect::isolated_vertex: return "isolated vertex";
+    case Mesh_defect::not_triangle: return "not a triangle mesh";
+    case Mesh_defect::non_manifold_vertex: return "non-manifold vertex";
+    case Mesh_defect::degenerate_face: return "degenerate face";
+  }
+  return "unknown defect";
+}
+
+/// \ingroup PkgSurfaceDesignRef
+/// Thrown when an input mesh does not satisfy an algorithm's preconditions.
+/// The mesh and every output property map are left unchanged.
+/// `defect()` says what is wrong and `element()` which element (the index of the vertex or face
+/// in the index maps used by the algorithm, i.e. the input order for meshes read from a file), or
+/// `no_element` when the defect concerns the whole mesh.
+class Invalid_mesh : public std::invalid_argument
+{
+public:
+  static constexpr std::size_t no_element = (std::numeric_limits<std::size_t>::max)();
+
+  Invalid_mesh(Mesh_defect defect, std::size_t element, const std::string& what)
+    : std::invalid_argument(std::string("CGAL::Surface_design: invalid mesh (") + to_string(defect) +
+                            "): " + what),
+      m_defect(defect), m_element(element)
+  {}
+
+  Mesh_defect defect() const { return m_defect; }
+  std::size_t element() const { return m_element; }
+
+private:
+  Mesh_defect m_defect;
+  std::size_t m_element;
+};
+
+/// \ingroup PkgSurfaceDesignRef
+/// Thrown when a sparse factorization or solve fails (e.g. a matrix that should be positive
+/// definite is not). The message names the system and the solver's diagnosis.
+class Linear_solver_failure : public std::runtime_error
+{
+public:
+  explicit Linear_solver_failure(const std::string& what)
+    : std::runtime_error("CGAL::Surface_design: linear solver failure: " + what)
+  {}
+};
+
+} // namespace Surface_design
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_DESIGN_EXCEPTIONS_H

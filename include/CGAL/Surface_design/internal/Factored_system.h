@@ -1,0 +1,157 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Factor once, solve many times, through any model of SparseLinearAlgebraWithFactorTraits_d.
+
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_FACTORED_SYSTEM_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_FACTORED_SYSTEM_H
+
+#include <CGAL/Surface_design/exceptions.h>
+#include <CGAL/Surface_design/solver_traits.h>
+
+#include <CGAL/Eigen_matrix.h>
+#include <CGAL/Eigen_vector.h>
+
+#include <Eigen/Sparse>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <utility>
+
+namespace CGAL {
+namespace Surface_design {
+namespace internal {
+
+namespace factored_system_detail {
+
+// Detects solver traits exposing an Eigen LDLT factorization (`solver().vectorD()`), whose pivots
+// tell whether a matrix that must be positive definite really is.
+template <class Traits, class = void>
+struct Has_ldlt_pivots : std::false_type {};
+template <class Traits>
+struct Has_ldlt_pivots<Traits, std::void_t<decltype(std::declval<Traits&>().solver().vectorD())>>
+  : std::true_type {};
+
+} // namespace factored_system_detail
+
+/// A sparse symmetric system factored once and solved for any number of right-hand sides.
+///
+/// `SolverTraits` is any model of CGAL's `SparseLinearAlgebraWithFactorTraits_d`
+/// (`Eigen_solver_traits<SimplicialLDLT>` by default, `Eigen_solver_traits<CholmodSupernodalLLT>`,
+/// ...). Copies of an `Eigen_solver_traits` share their factorization, so every Factored_system
+/// must own its traits object: pass a fresh one.
+///
+/// The matrix is moved into the solver's own matrix type when that type is CGAL's
+/// `Eigen_sparse_matrix` (no copy), else copied coefficient by coefficient.
+template <class SolverTraits = Default_solver_traits>
+class Factored_system
+{
+  using Matrix = typename SolverTraits::Matrix;
+  using Vector = typename SolverTraits::Vector;
+
+public:
+  /// Relative size below which an LDLT pivot of a positive definite system counts as zero.
+  static constexpr double pivot_tolerance = 100. * std::numeric_limits<double>::epsilon();
+
+  explicit Factored_system(SolverTraits traits = SolverTraits(), std::string name = "linear system")
+    : m_traits(std::move(traits)), m_name(std::move(name))
+  {}
+
+  /// Factors `a` (square, symmetric; the solvers read its lower triangle).
+  /// \throws Linear_solver_failure if the factorization fails or, when `positive_definite` is
+  /// true and the solver exposes LDLT pivots, if a pivot is not safely positive.
+  void factor(Eigen::SparseMatrix<double>&& a, bool positive_definite = true)
+  {
+    m_factored = false;
+    m_size = a.rows();
+    m_matrix = std::make_unique<Matrix>(std::size_t(a.rows()), std::size_t(a.cols()));
+    if constexpr(std::is_base_of<CGAL::Eigen_sparse_matrix<double>, Matrix>::value)
+    {
+      m_matrix->eigen_object() = std::move(a);
+    }
+    else
+    {
+      for(int k = 0; k < a.outerSize(); ++k)
+        for(Eigen::SparseMatrix<double>::InnerIterator it(a, k); it; ++it)
+          m_matrix->set_coef(std::size_t(it.row()), std::size_t(it.col()), it.value(), true);
+    }
+    typename SolverTraits::NT denominator;
+    if(!m_traits.factor(*m_matrix, denominator))
+      throw Linear_solver_failure("the factorization of the " + m_name + " (" +
+                                  std::to_string(m_size) + " unknowns) failed" +
+                                  (positive_definite ? ": the matrix is not positive definite" : ""));
+    if constexpr(factored_system_detail::Has_ldlt_pivots<SolverTraits>::value)
+    {
+      if(positive_definite)
+        check_pivots(m_traits.solver().vectorD());
+    }
+    m_factored = true;
+  }
+
+  bool is_factored() const { return m_factored; }
+  Eigen::Index size() const { return m_size; }
+  SolverTraits& traits() { return m_traits; }
+
+  /// Solves A x = b with the stored factorization.
+  /// \throws Linear_solver_failure if the solver reports failure or returns non-finite values.
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x)
+  {
+    if(!m_factored)
+      throw Linear_solver_failure("the " + m_name + " was solved before being factored");
+    Vector rhs(std::size_t(b.size())), sol(std::size_t(b.size()));
+    if constexpr(std::is_base_of<Eigen::VectorXd, Vector>::value)
+      static_cast<Eigen::VectorXd&>(rhs) = b;
+    else
+      for(Eigen::Index i = 0; i < b.size(); ++i)
+        rhs[std::size_t(i)] = b[i];
+    if(!m_traits.linear_solver(rhs, sol))
+      throw Linear_solver_failure("the solve of the " + m_name + " failed");
+    x.resize(b.size());
+    for(Eigen::Index i = 0; i < b.size(); ++i)
+      x[i] = sol[std::size_t(i)];
+    if(!x.allFinite())
+      throw Linear_solver_failure("the solve of the " + m_name +
+                                  " produced non-finite values (singular or ill-conditioned matrix)");
+  }
+
+  Eigen::VectorXd solve(const Eigen::VectorXd& b)
+  {
+    Eigen::VectorXd x;
+    solve(b, x);
+    return x;
+  }
+
+private:
+  template <class Pivots>
+  void check_pivots(const Pivots& d) const
+  {
+    if(d.size() == 0)
+      return;
+    const double largest = d.cwiseAbs().maxCoeff();
+    for(Eigen::Index i = 0; i < d.size(); ++i)
+      if(!(d[i] > pivot_tolerance * largest))
+      {
+        std::ostringstream s;
+        s << "the " << m_name << " (" << m_size << " unknowns) is not positive definite: LDLT pivot "
+          << i << " is " << d[i] << " (largest " << largest << ")"
+          << (d[i] > 0 ? "; the matrix is singular to working precision" : "");
+        throw Linear_solver_failure(s.str());
+      }
+  }
+
+  SolverTraits m_traits;
+  std::unique_ptr<Matrix> m_matrix; // the traits keep a pointer to it: its address must not change
+  std::string m_name;
+  Eigen::Index m_size = 0;
+  bool m_factored = false;
+};
+
+} // namespace internal
+} // namespace Surface_design
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_FACTORED_SYSTEM_H

@@ -1,0 +1,204 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Parametric test meshes of any size, for tests, examples and benchmarks.
+
+#ifndef CGAL_SURFACE_DESIGN_MESH_GENERATORS_H
+#define CGAL_SURFACE_DESIGN_MESH_GENERATORS_H
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <stdexcept>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_design {
+
+namespace generators_detail {
+
+template <class PolygonMesh>
+void soup_to_mesh(const std::vector<std::array<double, 3>>& points,
+                  const std::vector<std::array<std::size_t, 3>>& triangles, PolygonMesh& mesh)
+{
+  using Point = typename boost::property_traits<
+    typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>::value_type;
+  std::vector<Point> pts;
+  pts.reserve(points.size());
+  for(const auto& p : points)
+    pts.emplace_back(p[0], p[1], p[2]);
+  CGAL::clear(mesh);
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pts, triangles, mesh);
+}
+
+} // namespace generators_detail
+
+/// \ingroup PkgSurfaceDesignRef
+/// Torus of major radius `R` and minor radius `r` around the z axis, tessellated as a
+/// `major_segments` x `minor_segments` grid of quads, each split into two triangles along the same
+/// diagonal: 2 * major * minor triangles, genus 1, closed. Vertex (i, j) has index i * minor + j.
+/// \pre `major_segments >= 3`, `minor_segments >= 3`, `R > r > 0`.
+template <class PolygonMesh>
+void make_torus(PolygonMesh& mesh, std::size_t major_segments, std::size_t minor_segments,
+                double R = 1., double r = 0.4)
+{
+  if(major_segments < 3 || minor_segments < 3 || !(R > r && r > 0))
+    throw std::invalid_argument("make_torus: needs >= 3 segments each way and R > r > 0");
+  const double two_pi = 2. * std::acos(-1.);
+  std::vector<std::array<double, 3>> pts;
+  std::vector<std::array<std::size_t, 3>> tris;
+  for(std::size_t i = 0; i < major_segments; ++i)
+    for(std::size_t j = 0; j < minor_segments; ++j)
+    {
+      const double u = two_pi * double(i) / double(major_segments);
+      const double v = two_pi * double(j) / double(minor_segments);
+      pts.push_back({(R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u),
+                     r * std::sin(v)});
+    }
+  auto id = [&](std::size_t i, std::size_t j) {
+    return (i % major_segments) * minor_segments + (j % minor_segments);
+  };
+  for(std::size_t i = 0; i < major_segments; ++i)
+    for(std::size_t j = 0; j < minor_segments; ++j)
+    {
+      tris.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      tris.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  generators_detail::soup_to_mesh(pts, tris, mesh);
+}
+
+/// \ingroup PkgSurfaceDesignRef
+/// Unit sphere made from a cube whose faces are `n` x `n` grids, projected radially:
+/// 12 n^2 triangles, 6 n^2 + 2 vertices, genus 0, closed, all triangles well shaped.
+/// \pre `n >= 1`.
+template <class PolygonMesh>
+void make_sphere(PolygonMesh& mesh, std::size_t n)
+{
+  if(n < 1)
+    throw std::invalid_argument("make_sphere: n must be at least 1");
+  std::vector<std::array<double, 3>> pts;
+  std::vector<std::array<std::size_t, 3>> tris;
+  std::map<std::array<long, 3>, std::size_t> lattice; // shared vertices on cube edges
+  const long N = long(n);
+  auto vertex = [&](std::array<long, 3> q) {
+    auto it = lattice.find(q);
+    if(it != lattice.end())
+      return it->second;
+    // map [0, N]^3 to [-1, 1]^3, then use the area-equalizing tangent warp before projecting
+    std::array<double, 3> p;
+    for(int k = 0; k < 3; ++k)
+      p[k] = std::tan(std::atan(1.) * (2. * double(q[k]) / double(N) - 1.));
+    const double len = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    pts.push_back({p[0] / len, p[1] / len, p[2] / len});
+    lattice.emplace(q, pts.size() - 1);
+    return pts.size() - 1;
+  };
+  // each cube face: fixed axis a at value 0 or N, spanned by axes b, c (oriented outward)
+  for(int a = 0; a < 3; ++a)
+    for(int side = 0; side < 2; ++side)
+    {
+      const int b = (a + 1) % 3, c = (a + 2) % 3;
+      for(long i = 0; i < N; ++i)
+        for(long j = 0; j < N; ++j)
+        {
+          auto corner = [&](long di, long dj) {
+            std::array<long, 3> q;
+            q[a] = side ? N : 0;
+            q[b] = i + di;
+            q[c] = j + dj;
+            return vertex(q);
+          };
+          std::size_t v00 = corner(0, 0), v10 = corner(1, 0), v11 = corner(1, 1), v01 = corner(0, 1);
+          if(side == 1)
+          {
+            tris.push_back({v00, v10, v11});
+            tris.push_back({v00, v11, v01});
+          }
+          else
+          {
+            tris.push_back({v00, v11, v10});
+            tris.push_back({v00, v01, v11});
+          }
+        }
+    }
+  generators_detail::soup_to_mesh(pts, tris, mesh);
+}
+
+/// \ingroup PkgSurfaceDesignRef
+/// Planar grid on [0, 1]^2 (z = 0) with `nx` x `ny` square cells, each split into two triangles
+/// (alternating diagonals, so that the mesh has no preferred direction). Cells (i, j) for which
+/// `is_hole(i, j)` is true are left out, which makes holes (boundary loops); vertices are numbered
+/// in the order the cells first use them (row by row), unused ones are dropped. Every interior vertex can be moved
+/// in the plane by `jitter` (a fraction of the cell size, deterministic pseudo-random), which
+/// makes obtuse triangles and negative cotangent weights for jitter above ~0.25.
+/// \pre `nx, ny >= 1`, `0 <= jitter < 0.5`.
+template <class PolygonMesh>
+void make_grid(PolygonMesh& mesh, std::size_t nx, std::size_t ny, double jitter = 0.,
+               const std::function<bool(std::size_t, std::size_t)>& is_hole = {})
+{
+  if(nx < 1 || ny < 1 || !(jitter >= 0. && jitter < 0.5))
+    throw std::invalid_argument("make_grid: needs nx, ny >= 1 and 0 <= jitter < 0.5");
+  std::vector<std::array<double, 3>> pts;
+  std::vector<std::array<std::size_t, 3>> tris;
+  std::vector<std::size_t> remap((nx + 1) * (ny + 1), std::size_t(-1));
+  unsigned long state = 12345u; // linear congruential generator: reproducible on every platform
+  auto uniform = [&state]() {
+    state = (state * 1103515245u + 12345u) % 2147483648u;
+    return double(state) / 2147483648. * 2. - 1.;
+  };
+  auto id = [&](std::size_t i, std::size_t j) {
+    std::size_t& r = remap[j * (nx + 1) + i];
+    if(r == std::size_t(-1))
+    {
+      r = pts.size();
+      pts.push_back({double(i) / double(nx), double(j) / double(ny), 0.});
+    }
+    return r;
+  };
+  for(std::size_t j = 0; j < ny; ++j)
+    for(std::size_t i = 0; i < nx; ++i)
+    {
+      if(is_hole && is_hole(i, j))
+        continue;
+      const std::size_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      if((i + j) % 2 == 0)
+      {
+        tris.push_back({a, b, c});
+        tris.push_back({a, c, d});
+      }
+      else
+      {
+        tris.push_back({a, b, d});
+        tris.push_back({b, c, d});
+      }
+    }
+  if(jitter > 0.)
+  {
+    // only vertices strictly inside the square: the outer boundary stays a convex square
+    for(std::size_t j = 1; j < ny; ++j)
+      for(std::size_t i = 1; i < nx; ++i)
+      {
+        const std::size_t r = remap[j * (nx + 1) + i];
+        const double dx = jitter * uniform() / double(nx), dy = jitter * uniform() / double(ny);
+        if(r != std::size_t(-1))
+        {
+          pts[r][0] += dx;
+          pts[r][1] += dy;
+        }
+      }
+  }
+  generators_detail::soup_to_mesh(pts, tris, mesh);
+}
+
+} // namespace Surface_design
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_DESIGN_MESH_GENERATORS_H

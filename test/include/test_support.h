@@ -1,0 +1,110 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Shared test helpers: the mesh types every test runs on, mesh loading, snapshots to prove that a
+// failed call left the mesh untouched.
+
+#ifndef CGAL_SURFACE_DESIGN_TEST_SUPPORT_H
+#define CGAL_SURFACE_DESIGN_TEST_SUPPORT_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Polyhedron_items_with_id_3.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <fstream>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace test {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Surface_mesh = CGAL::Surface_mesh<Point>;
+using Polyhedron = CGAL::Polyhedron_3<Kernel>;
+using Polyhedron_with_id = CGAL::Polyhedron_3<Kernel, CGAL::Polyhedron_items_with_id_3>;
+
+// Every generic test runs on these three: CGAL's two halfedge data structures, and Polyhedron_3
+// both with internal ids and without (dynamic index maps).
+#define SD_MESH_TYPES test::Surface_mesh, test::Polyhedron, test::Polyhedron_with_id
+
+/// Path of a mesh bundled with the project (data/).
+inline std::string data_path(const std::string& name)
+{
+  return std::string(CGAL_SURFACE_DESIGN_DATA_DIR) + "/" + name;
+}
+
+/// Path of a larger mesh from ../shared/data/meshes, or nothing when that folder is absent.
+inline std::optional<std::string> shared_mesh_path(const std::string& name)
+{
+  const char* env = std::getenv("CGAL_SURFACE_DESIGN_SHARED_MESH_DIR");
+  const std::string path =
+    (env ? std::string(env) : std::string(CGAL_SURFACE_DESIGN_SHARED_MESH_DIR)) + "/" + name;
+  if(std::ifstream(path).good())
+    return path;
+  return std::nullopt;
+}
+
+template <class Mesh>
+Mesh load_mesh_file(const std::string& path)
+{
+  Mesh mesh;
+  if(!CGAL::IO::read_polygon_mesh(path, mesh) || CGAL::is_empty(mesh))
+    throw std::runtime_error("cannot read mesh " + path);
+  return mesh;
+}
+
+/// Loads a bundled mesh (vertices and faces keep the file's order).
+template <class Mesh>
+Mesh load_mesh(const std::string& name)
+{
+  return load_mesh_file<Mesh>(data_path(name));
+}
+
+/// Everything a user can observe of a mesh: positions and faces (as vertex sequences), in
+/// iteration order. Two snapshots are equal iff the mesh was not modified.
+struct Mesh_snapshot
+{
+  std::vector<double> coordinates;
+  std::vector<std::vector<std::size_t>> faces;
+
+  template <class Mesh>
+  explicit Mesh_snapshot(const Mesh& mesh)
+  {
+    std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, std::size_t> id;
+    for(auto v : vertices(mesh))
+    {
+      id.emplace(v, id.size());
+      const auto& p = get(CGAL::vertex_point, mesh, v);
+      coordinates.insert(coordinates.end(), {p.x(), p.y(), p.z()});
+    }
+    for(auto f : CGAL::faces(mesh))
+    {
+      faces.emplace_back();
+      for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+        faces.back().push_back(id.at(v));
+    }
+  }
+
+  bool operator==(const Mesh_snapshot& other) const
+  {
+    // bitwise comparison of coordinates (NaN-safe): untouched means identical bits
+    if(coordinates.size() != other.coordinates.size() || faces != other.faces)
+      return false;
+    return std::memcmp(coordinates.data(), other.coordinates.data(),
+                       coordinates.size() * sizeof(double)) == 0;
+  }
+};
+
+} // namespace test
+
+#endif // CGAL_SURFACE_DESIGN_TEST_SUPPORT_H
