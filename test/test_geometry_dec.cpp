@@ -1,1 +1,306 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Geometry (angles, cotangents, areas, normals, lengths) and DEC operators (d0, d1, Laplacian).
+
 #include <test_support.h>
+
+#include <CGAL/Surface_design/internal/dec.h>
+#include <CGAL/Surface_design/internal/geometry.h>
+#include <CGAL/Surface_design/internal/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/topology.h>
+#include <CGAL/Surface_design/mesh_generators.h>
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <random>
+
+namespace SD = CGAL::Surface_design;
+namespace SDI = CGAL::Surface_design::internal;
+
+namespace {
+
+const double pi = std::acos(-1.);
+
+const std::vector<std::string> closed_and_open_meshes = {
+  "bunny_1k.off", "torus.off", "eight.off", "hemisphere.off", "mech-holes-shark.off",
+  "triceratops.off", "bones.off"};
+
+} // namespace
+
+TEMPLATE_TEST_CASE("d1 * d0 = 0 exactly and both have the documented structure", "[dec]",
+                   SD_MESH_TYPES)
+{
+  for(const std::string& name : closed_and_open_meshes)
+  {
+    INFO(name);
+    const TestType mesh = test::load_mesh<TestType>(name);
+    SDI::Mesh_indices<TestType> idx(mesh);
+    const SDI::Sparse_matrix d0 = SDI::d0(idx), d1 = SDI::d1(idx);
+    REQUIRE(d0.rows() == Eigen::Index(idx.number_of_edges()));
+    REQUIRE(d0.cols() == Eigen::Index(idx.number_of_vertices()));
+    REQUIRE(d1.rows() == Eigen::Index(idx.number_of_faces()));
+    REQUIRE(d1.cols() == Eigen::Index(idx.number_of_edges()));
+
+    const SDI::Sparse_matrix dd = d1 * d0;
+    for(int k = 0; k < dd.outerSize(); ++k)
+      for(SDI::Sparse_matrix::InnerIterator it(dd, k); it; ++it)
+        REQUIRE(it.value() == 0.); // exact: integer arithmetic in floating point
+
+    // d0: one -1 at the smaller vertex index, one +1 at the larger
+    for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+    {
+      const auto ij = idx.edge_vertices(e);
+      REQUIRE(d0.coeff(int(e), int(ij.first)) == -1.);
+      REQUIRE(d0.coeff(int(e), int(ij.second)) == 1.);
+    }
+    REQUIRE(d0.nonZeros() == Eigen::Index(2 * idx.number_of_edges()));
+
+    // d1 columns: an interior edge is in two faces with opposite signs (orientability), a border
+    // edge in one face
+    for(int e = 0; e < d1.outerSize(); ++e)
+    {
+      int count = 0;
+      double sum = 0.;
+      for(SDI::Sparse_matrix::InnerIterator it(d1, e); it; ++it)
+      {
+        REQUIRE(std::abs(it.value()) == 1.);
+        ++count;
+        sum += it.value();
+      }
+      const auto h = idx.oriented_halfedge(std::size_t(e));
+      const bool border = idx.is_border(h) || idx.is_border(opposite(h, mesh));
+      REQUIRE(count == (border ? 1 : 2));
+      if(!border)
+        REQUIRE(sum == 0.);
+    }
+  }
+}
+
+TEMPLATE_TEST_CASE("Corner angles, areas, lengths and normals are consistent", "[geometry]",
+                   SD_MESH_TYPES)
+{
+  for(const std::string& name : closed_and_open_meshes)
+  {
+    INFO(name);
+    const TestType mesh = test::load_mesh<TestType>(name);
+    const auto vpm = get(CGAL::vertex_point, mesh);
+    SDI::Mesh_indices<TestType> idx(mesh);
+    const auto angle = SDI::corner_angles(idx, vpm);
+    const auto area = SDI::face_areas(idx, vpm);
+    const auto length = SDI::edge_lengths(idx, vpm);
+    const auto varea = SDI::vertex_areas(idx, area);
+    const auto fnormal = SDI::face_normals(idx, vpm);
+    const auto vnormal = SDI::vertex_normals(idx, vpm);
+
+    // angles of every triangle sum to pi
+    for(std::size_t f = 0; f < idx.number_of_faces(); ++f)
+    {
+      double sum = 0.;
+      for(auto h : halfedges_around_face(halfedge(idx.face(f), mesh), mesh))
+        sum += angle[idx.index(h)];
+      REQUIRE(sum == Approx(pi).epsilon(1e-12));
+    }
+    // law of cosines links angles and edge lengths; Heron's formula links areas and lengths
+    for(std::size_t f = 0; f < idx.number_of_faces(); ++f)
+    {
+      const auto h = halfedge(idx.face(f), mesh);
+      const double a = length[idx.edge_index(h)], b = length[idx.edge_index(next(h, mesh))],
+                   c = length[idx.edge_index(prev(h, mesh))];
+      // the angle at target(h) lies between h (length a) and next(h) (length b), opposite c
+      const double gamma = angle[idx.index(h)];
+      REQUIRE(c * c == Approx(a * a + b * b - 2 * a * b * std::cos(gamma)).epsilon(1e-8).margin(1e-12 * c * c));
+      const double s = 0.5 * (a + b + c);
+      const double heron2 = s * (s - a) * (s - b) * (s - c);
+      REQUIRE(area[f] * area[f] == Approx(heron2).epsilon(1e-6).margin(1e-9 * s * s * s * s));
+      REQUIRE(fnormal[f].norm() == Approx(1.).epsilon(1e-12));
+    }
+    // barycentric vertex areas sum to the total area
+    double total = 0., vtotal = 0.;
+    for(double x : area)
+      total += x;
+    for(double x : varea)
+      vtotal += x;
+    REQUIRE(vtotal == Approx(total).epsilon(1e-12));
+    for(const auto& n : vnormal)
+      REQUIRE(n.norm() == Approx(1.).epsilon(1e-12));
+
+    // discrete Gauss-Bonnet: sum of angle defects (2 pi at interior vertices, pi at border
+    // vertices) equals 2 pi chi, for each mesh as a whole
+    const SDI::Topology topo = SDI::compute_topology(idx);
+    const auto sums = SDI::vertex_angle_sums(idx, angle);
+    std::vector<bool> on_border(idx.number_of_vertices(), false);
+    for(const auto& loop : topo.boundary.loops)
+      for(std::size_t h : loop)
+        on_border[idx.target_index(idx.halfedge(h))] = true;
+    double defect = 0.;
+    long chi = 0;
+    for(std::size_t v = 0; v < sums.size(); ++v)
+      defect += (on_border[v] ? pi : 2 * pi) - sums[v];
+    for(const auto& c : topo.components.info)
+      chi += c.euler_characteristic();
+    REQUIRE(defect == Approx(2 * pi * double(chi)).margin(1e-8));
+  }
+}
+
+TEMPLATE_TEST_CASE("Normals point outwards on a sphere and areas converge", "[geometry]", SD_MESH_TYPES)
+{
+  TestType mesh;
+  SD::make_sphere(mesh, 24);
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  SDI::Mesh_indices<TestType> idx(mesh);
+  const auto fnormal = SDI::face_normals(idx, vpm);
+  const auto vnormal = SDI::vertex_normals(idx, vpm);
+  for(std::size_t f = 0; f < idx.number_of_faces(); ++f)
+  {
+    Eigen::Vector3d a, b, c;
+    SDI::triangle_of(idx, vpm, halfedge(idx.face(f), mesh), a, b, c);
+    REQUIRE(fnormal[f].dot((a + b + c) / 3.) > 0.99);
+  }
+  for(std::size_t v = 0; v < idx.number_of_vertices(); ++v)
+    REQUIRE(vnormal[v].dot(SDI::position(vpm, idx.vertex(v))) > 0.999);
+  double total = 0.;
+  for(double x : SDI::face_areas(idx, vpm))
+    total += x;
+  REQUIRE(total == Approx(4 * pi).epsilon(2e-3)); // inscribed polyhedron: slightly smaller
+  REQUIRE(total < 4 * pi);
+}
+
+TEMPLATE_TEST_CASE("Cotangents: CGAL::Weights agrees with the corner angles", "[geometry]", SD_MESH_TYPES)
+{
+  for(const std::string name : {"triceratops.off", "bunny_1k.off", "mech-holes-shark.off"})
+  {
+    INFO(name);
+    const TestType mesh = test::load_mesh<TestType>(name);
+    const auto vpm = get(CGAL::vertex_point, mesh);
+    SDI::Mesh_indices<TestType> idx(mesh);
+    const auto angle = SDI::corner_angles(idx, vpm);
+    const auto cot = SDI::halfedge_cotangents(idx, vpm);
+    std::size_t negative = 0;
+    for(std::size_t h = 0; h < idx.number_of_halfedges(); ++h)
+    {
+      const auto hd = idx.halfedge(h);
+      if(idx.is_border(hd))
+      {
+        REQUIRE(cot[h] == 0.);
+        continue;
+      }
+      const double opposite_angle = angle[idx.index(next(hd, mesh))];
+      const double expected = std::cos(opposite_angle) / std::sin(opposite_angle);
+      REQUIRE(cot[h] == Approx(expected).epsilon(1e-9).margin(1e-12));
+      negative += cot[h] < 0;
+    }
+    REQUIRE(negative > 0); // these meshes have obtuse triangles: the test covers negative values
+  }
+}
+
+TEMPLATE_TEST_CASE("The cotangent Laplacian: symmetric, PSD, constants in its kernel", "[dec]",
+                   SD_MESH_TYPES)
+{
+  for(const std::string name : {"bunny_1k.off", "triceratops.off", "hemisphere.off", "bones.off"})
+  {
+    INFO(name);
+    const TestType mesh = test::load_mesh<TestType>(name);
+    const auto vpm = get(CGAL::vertex_point, mesh);
+    SDI::Mesh_indices<TestType> idx(mesh);
+    const auto w = SDI::cotangent_weights(idx, vpm);
+    const SDI::Sparse_matrix L = SDI::weighted_laplacian(idx, w);
+
+    // equals d0^T W d0 assembled from the operators
+    const SDI::Sparse_matrix d0 = SDI::d0(idx);
+    const SDI::Sparse_matrix reference = SDI::Sparse_matrix(d0.transpose()) * SDI::diagonal_matrix(w) * d0;
+    REQUIRE((L - reference).norm() <= 1e-12 * L.norm());
+    REQUIRE((L - SDI::Sparse_matrix(L.transpose())).norm() == 0.);
+
+    // constants are in the kernel
+    const Eigen::VectorXd ones = Eigen::VectorXd::Ones(L.rows());
+    REQUIRE((L * ones).norm() <= 1e-12 * L.norm());
+
+    // positive semi-definite: quadratic form of random vectors, and (on small meshes) the
+    // spectrum, with exactly one zero eigenvalue per connected component
+    std::mt19937 rng(7);
+    std::normal_distribution<double> normal;
+    for(int trial = 0; trial < 20; ++trial)
+    {
+      Eigen::VectorXd x(L.rows());
+      for(Eigen::Index i = 0; i < x.size(); ++i)
+        x[i] = normal(rng);
+      REQUIRE(x.dot(L * x) >= -1e-12 * L.norm() * x.squaredNorm());
+    }
+    if(idx.number_of_vertices() <= 3000)
+    {
+      const Eigen::MatrixXd dense = Eigen::MatrixXd(L);
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(dense, Eigen::EigenvaluesOnly);
+      const Eigen::VectorXd lambda = eig.eigenvalues(); // ascending
+      const double scale = lambda.cwiseAbs().maxCoeff();
+      const std::size_t components = SDI::compute_topology(idx).components.size();
+      REQUIRE(lambda[0] >= -1e-10 * scale);
+      double zero_noise = 0.;
+      for(std::size_t k = 0; k < components; ++k)
+        zero_noise = (std::max)(zero_noise, std::abs(lambda[Eigen::Index(k)]));
+      REQUIRE(zero_noise <= 1e-10 * scale);
+      // the next eigenvalue is clearly separated from the numerical zeros
+      REQUIRE(lambda[Eigen::Index(components)] > 1e3 * zero_noise);
+    }
+  }
+}
+
+TEMPLATE_TEST_CASE("The cotangent Laplacian has linear precision on planar meshes", "[dec]",
+                   SD_MESH_TYPES)
+{
+  // jittered grids have obtuse triangles and negative weights; linear precision must still hold
+  for(double jitter : {0., 0.15, 0.3})
+  {
+    INFO("jitter " << jitter);
+    TestType mesh;
+    SD::make_grid(mesh, 20, 17, jitter, [](std::size_t i, std::size_t j) {
+      return i >= 6 && i < 9 && j >= 5 && j < 8; // one hole: two boundary loops
+    });
+    const auto vpm = get(CGAL::vertex_point, mesh);
+    SDI::Mesh_indices<TestType> idx(mesh);
+    const auto w = SDI::cotangent_weights(idx, vpm);
+    for(const Eigen::Vector3d& n : SDI::face_normals(idx, vpm))
+      REQUIRE(n.z() > 0.); // no flipped triangle: the premise of linear precision
+    if(jitter >= 0.3)
+      REQUIRE(*std::min_element(w.begin(), w.end()) < -1.); // strongly non-Delaunay
+    const SDI::Sparse_matrix L = SDI::weighted_laplacian(idx, w);
+    std::vector<bool> on_border(idx.number_of_vertices(), false);
+    for(std::size_t h = 0; h < idx.number_of_halfedges(); ++h)
+      if(idx.is_border(idx.halfedge(h)))
+        on_border[idx.target_index(idx.halfedge(h))] = true;
+    for(int coordinate = 0; coordinate < 2; ++coordinate)
+    {
+      Eigen::VectorXd f(L.rows());
+      for(std::size_t v = 0; v < idx.number_of_vertices(); ++v)
+      {
+        const Eigen::Vector3d p = SDI::position(vpm, idx.vertex(v));
+        f[Eigen::Index(v)] = 0.3 + (coordinate == 0 ? 2. * p.x() - p.y() : p.y() + 0.5 * p.x());
+      }
+      const Eigen::VectorXd Lf = L * f;
+      for(std::size_t v = 0; v < idx.number_of_vertices(); ++v)
+        if(!on_border[v])
+          REQUIRE(std::abs(Lf[Eigen::Index(v)]) <= 1e-12 * L.norm());
+    }
+  }
+}
+
+TEMPLATE_TEST_CASE("Operators do not depend on the mesh data structure", "[dec]", test::Polyhedron,
+                   test::Polyhedron_with_id)
+{
+  const test::Surface_mesh reference_mesh = test::load_mesh<test::Surface_mesh>("eight.off");
+  const TestType mesh = test::load_mesh<TestType>("eight.off");
+  SDI::Mesh_indices<test::Surface_mesh> ridx(reference_mesh);
+  SDI::Mesh_indices<TestType> idx(mesh);
+  // edges may be numbered differently: compare through the vertex pairs
+  std::map<std::pair<std::size_t, std::size_t>, double> reference_weight;
+  const auto rw = SDI::cotangent_weights(ridx, get(CGAL::vertex_point, reference_mesh));
+  for(std::size_t e = 0; e < ridx.number_of_edges(); ++e)
+    reference_weight[ridx.edge_vertices(e)] = rw[e];
+  const auto w = SDI::cotangent_weights(idx, get(CGAL::vertex_point, mesh));
+  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+    REQUIRE(w[e] == reference_weight.at(idx.edge_vertices(e)));
+  const SDI::Sparse_matrix L = SDI::weighted_laplacian(idx, w);
+  const SDI::Sparse_matrix rL = SDI::weighted_laplacian(ridx, rw);
+  REQUIRE((L - rL).norm() <= 1e-14 * L.norm()); // vertex-indexed: identical up to summation order
+}

@@ -137,8 +137,9 @@ void make_sphere(PolygonMesh& mesh, std::size_t n)
 /// (alternating diagonals, so that the mesh has no preferred direction). Cells (i, j) for which
 /// `is_hole(i, j)` is true are left out, which makes holes (boundary loops); vertices are numbered
 /// in the order the cells first use them (row by row), unused ones are dropped. Every interior vertex can be moved
-/// in the plane by `jitter` (a fraction of the cell size, deterministic pseudo-random), which
-/// makes obtuse triangles and negative cotangent weights for jitter above ~0.25.
+/// in the plane by up to `jitter` cell sizes along each axis (deterministic pseudo-random), which
+/// makes obtuse triangles and negative cotangent weights. No triangle can flip for jitter < 1/6;
+/// larger values may flip some (check the orientation if it matters).
 /// \pre `nx, ny >= 1`, `0 <= jitter < 0.5`.
 template <class PolygonMesh>
 void make_grid(PolygonMesh& mesh, std::size_t nx, std::size_t ny, double jitter = 0.,

@@ -1,0 +1,273 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Where the benchmark meshes come from: files bundled with the project (`bundled:NAME`), the larger
+// shared set (`shared:NAME`, optional, `.off.gz` read through `gzip -dc`), and generated spheres
+// and tori of a requested size (`sphere:F`, `torus:F`); plus named lists of sources (presets).
+
+#ifndef CGAL_SURFACE_DESIGN_BENCHMARK_MESH_SOURCES_H
+#define CGAL_SURFACE_DESIGN_BENCHMARK_MESH_SOURCES_H
+
+#include "harness.h"
+
+#include <CGAL/Surface_design/exceptions.h>
+#include <CGAL/Surface_design/internal/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/validation.h>
+#include <CGAL/Surface_design/mesh_generators.h>
+
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/IO/OFF.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#ifndef CGAL_SURFACE_DESIGN_DATA_DIR
+#error "CGAL_SURFACE_DESIGN_DATA_DIR must be defined (see benchmark/CMakeLists.txt)"
+#endif
+#ifndef CGAL_SURFACE_DESIGN_SHARED_MESH_DIR
+#error "CGAL_SURFACE_DESIGN_SHARED_MESH_DIR must be defined (see benchmark/CMakeLists.txt)"
+#endif
+
+namespace benchmark {
+
+enum class Mesh_origin { bundled, shared, sphere, torus };
+
+/// A parsed `--mesh` argument. Its text (`spec`) names the mesh in every report.
+struct Mesh_source
+{
+  std::string spec;
+  Mesh_origin origin = Mesh_origin::bundled;
+  std::string file;      ///< bundled, shared: file name relative to the folder
+  std::size_t faces = 0; ///< sphere, torus: requested number of faces
+};
+
+/// A named list of mesh sources (`--preset NAME`).
+struct Preset
+{
+  const char* name;
+  const char* description;
+  std::vector<const char*> sources;
+};
+
+inline const std::vector<Preset>& presets()
+{
+  static const std::vector<Preset> table{
+    {"quick", "the default: a scanned and a generated mesh of moderate size",
+     {"bundled:bunny_8k.off", "sphere:63000"}},
+    {"sizes", "scaling on well-shaped spheres, ~1k to ~1M faces",
+     {"sphere:1000", "sphere:8000", "sphere:63000", "sphere:250000", "sphere:1000000"}},
+    {"bunny", "scaling on the shared bunny meshes, 1k to 955k faces (skipped when absent)",
+     {"shared:bunny_1k.off", "shared:bunny_8k.off", "shared:bunny_60k.off",
+      "shared:bunny_loop1_239k.off", "shared:bunny_loop2_955k.off.gz"}},
+    {"tori", "scaling on genus-1 tori, ~8k to ~250k faces",
+     {"torus:8000", "torus:63000", "torus:250000"}},
+  };
+  return table;
+}
+
+inline const Preset* find_preset(const std::string& name)
+{
+  for(const Preset& p : presets())
+    if(name == p.name)
+      return &p;
+  return nullptr;
+}
+
+/// Parses a face count: digits with an optional suffix `k` (x 1000) or `M` (x 10^6).
+inline bool parse_face_count(const std::string& text, std::size_t& count)
+{
+  std::size_t digits = 0;
+  while(digits < text.size() && text[digits] >= '0' && text[digits] <= '9')
+    ++digits;
+  const std::string suffix = text.substr(digits);
+  if(digits == 0 || digits > 9 || !(suffix.empty() || suffix == "k" || suffix == "M"))
+    return false;
+  count = std::size_t(std::stoul(text.substr(0, digits))) *
+          (suffix == "k" ? 1000u : suffix == "M" ? 1000000u : 1u);
+  return count > 0;
+}
+
+/// Parses `bundled:NAME`, `shared:NAME`, `sphere:F` or `torus:F`; on failure returns false and
+/// explains why in `error`.
+inline bool parse_mesh_source(const std::string& spec, Mesh_source& source, std::string& error)
+{
+  const std::size_t colon = spec.find(':');
+  const std::string kind = spec.substr(0, colon);
+  const std::string argument = colon == std::string::npos ? std::string() : spec.substr(colon + 1);
+  source = Mesh_source();
+  source.spec = spec;
+  if(kind == "bundled" || kind == "shared")
+  {
+    source.origin = kind == "bundled" ? Mesh_origin::bundled : Mesh_origin::shared;
+    source.file = argument;
+    if(argument.empty())
+    {
+      error = "mesh source \"" + spec + "\" names no file";
+      return false;
+    }
+    return true;
+  }
+  if(kind == "sphere" || kind == "torus")
+  {
+    source.origin = kind == "sphere" ? Mesh_origin::sphere : Mesh_origin::torus;
+    if(!parse_face_count(argument, source.faces))
+    {
+      error = "mesh source \"" + spec + "\": the face count must be a positive integer "
+              "(optionally with suffix k or M)";
+      return false;
+    }
+    return true;
+  }
+  error = "mesh source \"" + spec + "\" is not bundled:NAME, shared:NAME, sphere:F or torus:F";
+  return false;
+}
+
+/// Folder of the shared meshes: the environment variable CGAL_SURFACE_DESIGN_SHARED_MESH_DIR if
+/// set, else the folder configured in CMake.
+inline std::string shared_mesh_dir()
+{
+  const char* env = std::getenv("CGAL_SURFACE_DESIGN_SHARED_MESH_DIR");
+  return env && *env ? std::string(env) : std::string(CGAL_SURFACE_DESIGN_SHARED_MESH_DIR);
+}
+
+namespace mesh_sources_detail {
+
+inline bool ends_with(const std::string& s, const std::string& tail)
+{
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+/// Quotes `s` for /bin/sh: inside single quotes everything is literal except the quote itself.
+inline std::string shell_quoted(const std::string& s)
+{
+  std::string q = "'";
+  for(char c : s)
+    q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+/// Reads a gzip-compressed OFF file through a `gzip -dc` pipe.
+inline bool read_gzipped_off(const std::string& path, Mesh& mesh, std::string& error)
+{
+  const std::string command = "gzip -dc -- " + shell_quoted(path);
+  FILE* pipe = popen(command.c_str(), "r");
+  if(!pipe)
+  {
+    error = "cannot start \"" + command + "\"";
+    return false;
+  }
+  std::string text;
+  char buffer[1 << 16];
+  std::size_t n;
+  while((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0)
+    text.append(buffer, n);
+  const int status = pclose(pipe);
+  if(status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+  {
+    error = "\"" + command + "\" failed (is gzip installed, is the file intact?)";
+    return false;
+  }
+  std::istringstream in(text);
+  if(!CGAL::IO::read_OFF(in, mesh))
+  {
+    error = "cannot parse the decompressed OFF data of " + path;
+    return false;
+  }
+  return true;
+}
+
+} // namespace mesh_sources_detail
+
+enum class Load_status
+{
+  loaded,
+  skipped, ///< an optional file or folder is absent: not an error
+  failed   ///< unreadable or invalid mesh
+};
+
+/// Loads or generates the mesh of `source` and checks it with the library's own validation.
+/// On `skipped` or `failed`, `message` says why.
+inline Load_status load_mesh(const Mesh_source& source, Mesh& mesh, std::string& message)
+{
+  namespace fs = std::filesystem;
+  using namespace mesh_sources_detail;
+  CGAL::clear(mesh);
+  if(source.origin == Mesh_origin::sphere)
+  {
+    // make_sphere gives 12 n^2 faces
+    const double n = std::round(std::sqrt(double(source.faces) / 12.));
+    CGAL::Surface_design::make_sphere(mesh, std::max<std::size_t>(1, std::size_t(n)));
+  }
+  else if(source.origin == Mesh_origin::torus)
+  {
+    // make_torus gives 2 * major * minor faces; major ~ 2.5 minor, the proportion of R/r = 1/0.4
+    const std::size_t minor_segments = std::max<std::size_t>(
+      3, std::size_t(std::round(std::sqrt(double(source.faces) / 5.))));
+    const std::size_t major_segments = std::size_t(std::round(2.5 * double(minor_segments)));
+    CGAL::Surface_design::make_torus(mesh, major_segments, minor_segments);
+  }
+  else
+  {
+    const bool shared = source.origin == Mesh_origin::shared;
+    const std::string dir = shared ? shared_mesh_dir() : std::string(CGAL_SURFACE_DESIGN_DATA_DIR);
+    const std::string path = dir + "/" + source.file;
+    std::error_code ec;
+    if(!fs::is_directory(dir, ec))
+    {
+      message = "skipped: " + source.spec + ": mesh folder " + dir + " not found" +
+                (shared ? " (set CGAL_SURFACE_DESIGN_SHARED_MESH_DIR to the shared mesh folder)" : "");
+      return shared ? Load_status::skipped : Load_status::failed;
+    }
+    if(!fs::is_regular_file(path, ec))
+    {
+      message = "skipped: " + source.spec + ": file " + path + " not found";
+      return shared ? Load_status::skipped : Load_status::failed;
+    }
+    std::string error;
+    bool ok;
+    if(ends_with(path, ".off.gz"))
+      ok = read_gzipped_off(path, mesh, error);
+    else if(ends_with(path, ".gz"))
+    {
+      ok = false;
+      error = "only gzip-compressed OFF files (.off.gz) are supported";
+    }
+    else
+    {
+      ok = CGAL::IO::read_polygon_mesh(path, mesh);
+      error = "cannot read " + path + " as a polygon mesh";
+    }
+    if(!ok || CGAL::is_empty(mesh))
+    {
+      message = source.spec + ": " + (ok ? "the mesh " + path + " is empty" : error);
+      return Load_status::failed;
+    }
+  }
+
+  try
+  {
+    const CGAL::Surface_design::internal::Mesh_indices<Mesh> indices(mesh);
+    CGAL::Surface_design::internal::validate_mesh(indices, get(CGAL::vertex_point, mesh));
+  }
+  catch(const CGAL::Surface_design::Invalid_mesh& e)
+  {
+    message = source.spec + ": invalid mesh: " + e.what();
+    return Load_status::failed;
+  }
+  return Load_status::loaded;
+}
+
+} // namespace benchmark
+
+#endif // CGAL_SURFACE_DESIGN_BENCHMARK_MESH_SOURCES_H
