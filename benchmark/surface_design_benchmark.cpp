@@ -144,21 +144,28 @@ int parse_options(int argc, char** argv, Options& options)
   bool solver_given = false;
   for(int i = 1; i < argc; ++i)
   {
+    static const std::vector<std::string> value_options{
+      "--workload", "--mesh", "--preset", "--solver", "--warmup", "--runs", "--json"};
     std::string option = argv[i], value;
-    const bool takes_value = option != "--list" && option != "--help" && option != "-h";
-    if(takes_value)
+    const std::size_t equal = option.compare(0, 2, "--") == 0 ? option.find('=') : std::string::npos;
+    const bool inline_value = equal != std::string::npos;
+    if(inline_value)
     {
-      const std::size_t equal = option.find('=');
-      if(equal != std::string::npos)
-      {
-        value = option.substr(equal + 1);
-        option.erase(equal);
-      }
-      else if(i + 1 < argc)
-        value = argv[++i];
-      else
-        return fail("option " + option + " needs a value");
+      value = option.substr(equal + 1);
+      option.erase(equal);
     }
+    const bool takes_value =
+      std::find(value_options.begin(), value_options.end(), option) != value_options.end();
+    if(!takes_value && option != "--list" && option != "--help" && option != "-h")
+      return fail(std::string("unknown option ") + argv[i]);
+    if(takes_value && !inline_value)
+    {
+      if(i + 1 >= argc)
+        return fail("option " + option + " needs a value");
+      value = argv[++i];
+    }
+    if(!takes_value && inline_value)
+      return fail("option " + option + " takes no value");
 
     std::string error;
     if(option == "--help" || option == "-h")
@@ -217,8 +224,6 @@ int parse_options(int argc, char** argv, Options& options)
         return fail("--json needs a file name");
       options.json = value;
     }
-    else
-      return fail("unknown option " + option);
   }
 
   if(options.workloads.empty())
