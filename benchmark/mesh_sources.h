@@ -222,16 +222,18 @@ inline Load_status load_mesh(const Mesh_source& source, Mesh& mesh, std::string&
     const bool shared = source.origin == Mesh_origin::shared;
     const std::string dir = shared ? shared_mesh_dir() : std::string(CGAL_SURFACE_DESIGN_DATA_DIR);
     const std::string path = dir + "/" + source.file;
+    // an absent shared mesh is expected (the folder is optional); an absent bundled one is not
+    const std::string prefix = shared ? "skipped: " : "";
     std::error_code ec;
     if(!fs::is_directory(dir, ec))
     {
-      message = "skipped: " + source.spec + ": mesh folder " + dir + " not found" +
+      message = prefix + source.spec + ": mesh folder " + dir + " not found" +
                 (shared ? " (set CGAL_SURFACE_DESIGN_SHARED_MESH_DIR to the shared mesh folder)" : "");
       return shared ? Load_status::skipped : Load_status::failed;
     }
     if(!fs::is_regular_file(path, ec))
     {
-      message = "skipped: " + source.spec + ": file " + path + " not found";
+      message = prefix + source.spec + ": file " + path + " not found";
       return shared ? Load_status::skipped : Load_status::failed;
     }
     std::string error;

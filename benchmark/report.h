@@ -83,6 +83,11 @@ inline std::string format_ms(double ms)
 
 inline void print_results(std::ostream& out, const std::vector<Phase_result>& results)
 {
+  if(results.empty())
+  {
+    out << "no results\n";
+    return;
+  }
   Text_table table({"workload", "mesh", "|V|", "|F|", "solver", "phase", "median ms", "min ms",
                     "max ms"},
                    {false, false, true, true, false, false, true, true, true});
