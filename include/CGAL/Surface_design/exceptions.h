@@ -70,6 +70,18 @@ private:
 };
 
 /// \ingroup PkgSurfaceDesignRef
+/// Thrown when user constraints are inconsistent or refer to elements that do not exist: e.g.
+/// singularity indices whose sum violates Stokes' theorem on a component, a face or loop index out
+/// of range. The message gives the numbers involved. Nothing is modified.
+class Invalid_constraints : public std::invalid_argument
+{
+public:
+  explicit Invalid_constraints(const std::string& what)
+    : std::invalid_argument("CGAL::Surface_design: invalid constraints: " + what)
+  {}
+};
+
+/// \ingroup PkgSurfaceDesignRef
 /// Thrown when a sparse factorization or solve fails (e.g. a matrix that should be positive
 /// definite is not). The message names the system and the solver's diagnosis.
 class Linear_solver_failure : public std::runtime_error

@@ -1,0 +1,163 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// One-call field-aligned parameterization, and singularity detection.
+
+#ifndef CGAL_SURFACE_DESIGN_FIELD_ALIGNED_PARAMETERIZATION_H
+#define CGAL_SURFACE_DESIGN_FIELD_ALIGNED_PARAMETERIZATION_H
+
+#include <CGAL/Surface_design/Field_aligned_parameterizer.h>
+#include <CGAL/Surface_design/parameters.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+
+#include <cmath>
+#include <map>
+#include <type_traits>
+
+namespace CGAL {
+namespace Surface_design {
+
+namespace fap_detail {
+
+// Calls fn(value) if the named parameter is present.
+template <class NP, class Tag, class Fn>
+void if_given(const NP& np, Tag tag, Fn&& fn)
+{
+  const auto p = CGAL::parameters::get_parameter(np, tag);
+  if constexpr(!std::is_same<std::decay_t<decltype(p)>, CGAL::internal_np::Param_not_found>::value)
+    fn(p);
+  (void)p;
+}
+
+} // namespace fap_detail
+
+/// \ingroup PkgSurfaceDesignRef
+///
+/// Computes a stripe function alpha (per vertex, in [-pi, pi)) whose differential follows the
+/// vector field `field`, with a singularity of index `get(face_indices, f)` in every face `f`
+/// where that is non-zero, and nowhere else. See `Field_aligned_parameterizer` for the
+/// formulation; this function builds one, solves once and writes the outputs. The mesh is never
+/// modified; on any exception no output map is written.
+///
+/// \param tm a triangle mesh (any number of connected components, with or without boundary)
+/// \param field a readable vertex -> `Vector_3` map (projected to the tangent planes)
+/// \param face_indices a readable face -> integer map
+/// \param alpha a writable vertex -> double map (output)
+/// \param np optional named parameters among:
+/// - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
+/// - `sparse_linear_solver`: a model of `SparseLinearAlgebraWithFactorTraits_d`; default
+///   `Default_solver_traits` (Eigen `SimplicialLDLT`)
+/// - `stripes_per_unit_length` (double): when positive the field is normalized and alpha
+///   advances by 2 pi times this per unit length along it; default 0 = use the field as given
+///   (|X| radians per unit length)
+/// - `one_form_convention` (`One_form_convention`): default `projected`
+/// - `loop_windings` (`std::map<std::size_t, int>`: loop number -> winding): windings of the
+///   listed loops (generators first, then boundary loops); unlisted loops are automatic
+/// - `edge_dalpha_map` (writable edge -> double): dalpha along `halfedge(e, tm)`, unwrapped
+/// - `edge_omega_map` (writable edge -> double): the target 1-form along `halfedge(e, tm)`
+/// - `corner_coordinate_map` (writable halfedge -> double): see
+///   `Field_aligned_parameterizer::corner_coordinates()`
+///
+/// \returns the energy sum_e w_e (dalpha_e - omega_e)^2 of the result
+/// \throws Invalid_mesh, Invalid_constraints, Linear_solver_failure
+template <class TriangleMesh, class VertexVectorMap, class FaceIndexMap, class VertexScalarMap,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+double field_aligned_parameterization(const TriangleMesh& tm, const VertexVectorMap& field,
+                                      const FaceIndexMap& face_indices, VertexScalarMap alpha,
+                                      const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using Vpm = typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type;
+  using Solver = typename CGAL::internal_np::Lookup_named_param_def<
+    CGAL::internal_np::sparse_linear_solver_t, NamedParameters, Default_solver_traits>::type;
+
+  const Vpm vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                   get_const_property_map(CGAL::vertex_point, tm));
+  const Solver solver = choose_parameter<Solver>(get_parameter(np, CGAL::internal_np::sparse_linear_solver));
+  const double stripes = choose_parameter(get_parameter(np, internal_np::stripes_per_unit_length), 0.);
+  const One_form_convention convention =
+    choose_parameter(get_parameter(np, internal_np::one_form_convention), One_form_convention::projected);
+
+  Field_aligned_parameterizer<TriangleMesh, Vpm, Solver> fap(tm, vpm, solver);
+  fap.set_field(field, stripes, convention);
+  fap.set_indices(face_indices);
+  fap_detail::if_given(
+    np, internal_np::loop_windings, [&](const auto& windings) {
+      for(const auto& [loop, winding] : windings)
+        fap.set_loop_winding(loop, winding);
+    });
+  fap.solve();
+
+  // outputs, written only after everything succeeded
+  fap.alpha(alpha);
+  fap_detail::if_given(
+    np, internal_np::edge_dalpha_map, [&](const auto& map) { fap.dalpha(map); });
+  fap_detail::if_given(
+    np, internal_np::edge_omega_map, [&](const auto& map) {
+      for(auto e : edges(tm))
+        put(map, e, fap.omega(halfedge(e, tm)));
+    });
+  fap_detail::if_given(
+    np, internal_np::corner_coordinate_map, [&](const auto& map) { fap.corner_coordinates(map); });
+  return fap.energy();
+}
+
+/// \ingroup PkgSurfaceDesignRef
+/// Detects the singularities of a stripe function: for every face, the winding number of alpha
+/// around it, (1 / 2 pi) times the sum over its edges of the difference of alpha wrapped to
+/// [-pi, pi), written to `face_indices` (face -> int). This recovers the prescribed indices
+/// wherever the mesh resolves the stripes (|dalpha| < pi on the face's edges).
+/// \returns the number of faces with a non-zero index
+template <class PolygonMesh, class VertexScalarMap, class FaceIndexMap>
+std::size_t stripe_singularities(const PolygonMesh& tm, const VertexScalarMap& alpha,
+                                 FaceIndexMap face_indices)
+{
+  const double two_pi = 2. * std::acos(-1.);
+  std::size_t count = 0;
+  for(auto f : faces(tm))
+  {
+    double sum = 0.;
+    for(auto h : halfedges_around_face(halfedge(f, tm), tm))
+      sum += internal::wrap_angle(double(get(alpha, target(h, tm))) - double(get(alpha, source(h, tm))));
+    const int k = int(std::lround(sum / two_pi));
+    put(face_indices, f, k);
+    count += (k != 0);
+  }
+  return count;
+}
+
+/// \ingroup PkgSurfaceDesignRef
+/// The singularities a 1-form asks for: for every face, the nearest integer to
+/// (1 / 2 pi) times the integral of the form around the face (its discrete curl), written to
+/// `face_indices`. `one_form` maps each edge `e` to the form's value along `halfedge(e, tm)`.
+/// For the target form of a smooth field this is 0 almost everywhere; a vortex of the field
+/// concentrated in a face shows as a non-zero index there.
+/// \returns the number of faces with a non-zero index
+template <class PolygonMesh, class EdgeScalarMap, class FaceIndexMap>
+std::size_t one_form_singularities(const PolygonMesh& tm, const EdgeScalarMap& one_form,
+                                   FaceIndexMap face_indices)
+{
+  const double two_pi = 2. * std::acos(-1.);
+  std::size_t count = 0;
+  for(auto f : faces(tm))
+  {
+    double sum = 0.;
+    for(auto h : halfedges_around_face(halfedge(f, tm), tm))
+    {
+      const auto e = edge(h, tm);
+      sum += (halfedge(e, tm) == h ? 1. : -1.) * double(get(one_form, e));
+    }
+    const int k = int(std::lround(sum / two_pi));
+    put(face_indices, f, k);
+    count += (k != 0);
+  }
+  return count;
+}
+
+} // namespace Surface_design
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_DESIGN_FIELD_ALIGNED_PARAMETERIZATION_H

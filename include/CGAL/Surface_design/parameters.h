@@ -1,0 +1,61 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Named parameters of the library, in the style of CGAL::parameters.
+
+#ifndef CGAL_SURFACE_DESIGN_PARAMETERS_H
+#define CGAL_SURFACE_DESIGN_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace CGAL {
+namespace Surface_design {
+
+// Tags of the library's own named parameters. (Always qualify CGAL::internal_np:: for CGAL's.)
+namespace internal_np {
+enum stripes_per_unit_length_t { stripes_per_unit_length };
+enum loop_windings_t { loop_windings };
+enum one_form_convention_t { one_form_convention };
+enum edge_dalpha_map_t { edge_dalpha_map };
+enum edge_omega_map_t { edge_omega_map };
+enum corner_coordinate_map_t { corner_coordinate_map };
+} // namespace internal_np
+
+/// \ingroup PkgSurfaceDesignRef
+/// Named parameters of `CGAL::Surface_design`. All of `CGAL::parameters` is available here too, so
+/// one namespace serves: `CGAL::Surface_design::parameters::stripes_per_unit_length(4.).vertex_point_map(vpm)`.
+/// A library parameter can be combined with an existing pack by passing the pack as second
+/// argument: `stripes_per_unit_length(4., CGAL::parameters::vertex_point_map(vpm))`.
+namespace parameters {
+
+using namespace CGAL::parameters;
+
+#define CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(NAME)                                              \
+  template <typename K>                                                                            \
+  CGAL::Named_function_parameters<K, internal_np::NAME##_t> NAME(const K& k)                       \
+  {                                                                                                \
+    return CGAL::Named_function_parameters<K, internal_np::NAME##_t>(k);                           \
+  }                                                                                                \
+  template <typename K, typename T, typename Tag, typename Base>                                   \
+  CGAL::Named_function_parameters<K, internal_np::NAME##_t,                                        \
+                                  CGAL::Named_function_parameters<T, Tag, Base>>                   \
+  NAME(const K& k, const CGAL::Named_function_parameters<T, Tag, Base>& np)                        \
+  {                                                                                                \
+    return CGAL::Named_function_parameters<K, internal_np::NAME##_t,                               \
+                                           CGAL::Named_function_parameters<T, Tag, Base>>(k, np);  \
+  }
+
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(stripes_per_unit_length)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(loop_windings)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(one_form_convention)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(edge_dalpha_map)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(edge_omega_map)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(corner_coordinate_map)
+
+#undef CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER
+
+} // namespace parameters
+} // namespace Surface_design
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_DESIGN_PARAMETERS_H

@@ -1,0 +1,613 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Field-aligned parameterization with prescribed singularities: optimality, constraints,
+// recovered singularities, re-solves, windings, the face-space reference, bad input.
+
+#include <test_support.h>
+
+#include <CGAL/Surface_design/field_aligned_parameterization.h>
+#include <CGAL/Surface_design/Field_aligned_parameterizer.h>
+#include <CGAL/Surface_design/internal/Face_space_stripe_solver.h>
+#include <CGAL/Surface_design/mesh_generators.h>
+
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/Bbox_3.h>
+#include <CGAL/subdivision_method_3.h>
+#include <CGAL/boost/graph/property_maps.h>
+
+#include <boost/property_map/function_property_map.hpp>
+#include <boost/property_map/vector_property_map.hpp>
+
+#include <cmath>
+#include <map>
+#include <limits>
+#include <numeric>
+
+namespace SD = CGAL::Surface_design;
+namespace SDI = CGAL::Surface_design::internal;
+
+namespace {
+
+const double pi = std::acos(-1.);
+
+#if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
+#define SD_FOR_EACH_SOLVER(F) F(SD::Default_solver_traits, "ldlt") F(SD::Cholmod_solver_traits, "cholmod")
+#else
+#define SD_FOR_EACH_SOLVER(F) F(SD::Default_solver_traits, "ldlt")
+#endif
+
+template <class Mesh>
+using Vpm = typename boost::property_map<Mesh, CGAL::vertex_point_t>::const_type;
+template <class Mesh, class Solver>
+using Fap = SD::Field_aligned_parameterizer<Mesh, Vpm<Mesh>, Solver>;
+
+template <class Mesh>
+Mesh make_case(const std::string& name)
+{
+  Mesh mesh;
+  if(name == "staggered torus")
+    SD::make_torus(mesh, 40, 12, 1., 0.3, true);
+  else if(name == "sphere")
+    SD::make_sphere(mesh, 10);
+  else if(name == "subdivided eight")
+  {
+    mesh = test::load_mesh<Mesh>("eight.off");
+    CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(1));
+  }
+  else
+    mesh = test::load_mesh<Mesh>(name);
+  return mesh;
+}
+
+// A stripe frequency the mesh resolves: at most `fraction` stripe per longest edge, so that the
+// target 1-form stays well below pi on every edge.
+template <class Mesh>
+double resolved_frequency(const Mesh& mesh, double fraction = 0.15)
+{
+  double longest = 0.;
+  for(auto e : edges(mesh))
+    longest = (std::max)(longest, std::sqrt(CGAL::squared_distance(
+                                    get(CGAL::vertex_point, mesh, source(halfedge(e, mesh), mesh)),
+                                    get(CGAL::vertex_point, mesh, target(halfedge(e, mesh), mesh)))));
+  return fraction / longest;
+}
+
+// A constant direction, projected by the solver onto the tangent planes.
+template <class Mesh>
+auto axis_field(const Mesh&)
+{
+  using V = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  return boost::make_function_property_map<V>([](V) { return test::Kernel::Vector_3(1., 0.4, 0.2); });
+}
+
+// Faces (by index) holding +1 / -1 singularities, spread over the mesh, in well-shaped faces.
+// A singular face must carry a curl of 2 pi on its three edges; the optimum puts most of it on
+// an edge of small cotangent weight, and beyond pi per edge the stripes no longer resolve the
+// singularity (its wrapped winding differs). Faces whose edges all have weight > 0.3 avoid that.
+template <class F>
+double smallest_weight(const F& fap, std::size_t f)
+{
+  const auto& idx = fap.indices();
+  double w = std::numeric_limits<double>::max();
+  for(auto h : halfedges_around_face(halfedge(idx.face(f), fap.mesh()), fap.mesh()))
+    w = (std::min)(w, fap.cotangent_weights()[idx.edge_index(h)]);
+  return w;
+}
+
+// Among the n/8 faces from index `start` on, not yet taken, the one whose smallest edge weight
+// is largest.
+template <class F>
+std::size_t well_shaped_face(const F& fap, std::size_t start, const std::map<std::size_t, int>& taken = {})
+{
+  const std::size_t n = fap.indices().number_of_faces();
+  std::size_t best = n;
+  for(std::size_t f = start; f < start + (std::max)(n / 8, std::size_t(20)); ++f)
+    if(!taken.count(f % n) && (best == n || smallest_weight(fap, f % n) > smallest_weight(fap, best)))
+      best = f % n;
+  return best;
+}
+
+// Two +1/-1 pairs (each within one connected component), plus `sum` in one more face.
+template <class F>
+std::map<std::size_t, int> singularities_for(const F& fap, int sum)
+{
+  const std::size_t n = fap.indices().number_of_faces();
+  const auto& component = fap.topology().components.face_component;
+  std::map<std::size_t, int> k;
+  auto place = [&](std::size_t f, int index) {
+    const std::size_t g = well_shaped_face(fap, f, k);
+    k[g] += index;
+    return g;
+  };
+  for(std::size_t start : {n / 7, (4 * n) / 5})
+  {
+    const std::size_t a = place(start, 1);
+    // the partner: the best face of the same component a little further on
+    std::size_t b = (a + (std::max)(n / 3, std::size_t(1))) % n;
+    std::size_t tries = 0;
+    while(component[b] != component[a] && tries++ < n)
+      b = (b + 1) % n;
+    if(component[b] != component[a] || b == a)
+      b = (a + 1) % n;
+    std::map<std::size_t, int> taken = k;
+    std::size_t best = n;
+    for(std::size_t f = b, i = 0; i < n / 8 + 20; ++i, f = (f + 1) % n)
+      if(component[f] == component[a] && !taken.count(f) &&
+         (best == n || smallest_weight(fap, f) > smallest_weight(fap, best)))
+        best = f;
+    k[best] -= 1;
+  }
+  if(sum != 0)
+    place((2 * n) / 3, sum);
+  return k;
+}
+
+// Checks KKT optimality, the constraints, integration and the recovered singularities.
+template <class F>
+void check_solution(const F& fap, bool fully_resolved = false)
+{
+  const auto& idx = fap.indices();
+  const auto& tm = fap.mesh();
+  const std::vector<double>& y = fap.one_form();
+  const std::vector<double>& omega = fap.target_one_form();
+  const std::vector<double>& w = fap.cotangent_weights();
+
+  // KKT: d0^T W (y - omega) = 0 at every vertex (free directions of the feasible set)
+  const SDI::Sparse_matrix d0 = SDI::d0(idx);
+  Eigen::VectorXd r(Eigen::Index(y.size())), wy(Eigen::Index(y.size()));
+  double scale = 0.;
+  for(std::size_t e = 0; e < y.size(); ++e)
+  {
+    r[Eigen::Index(e)] = w[e] * (y[e] - omega[e]);
+    scale = (std::max)(scale, std::abs(w[e]) * (std::abs(y[e]) + std::abs(omega[e])));
+  }
+  const Eigen::VectorXd kkt = SDI::Sparse_matrix(d0.transpose()) * r;
+  REQUIRE(kkt.cwiseAbs().maxCoeff() <= 1e-9 * scale);
+
+  // constraints: face curls, loop integrals
+  const Eigen::VectorXd curl = SDI::d1(idx) * Eigen::Map<const Eigen::VectorXd>(y.data(), Eigen::Index(y.size()));
+  for(std::size_t f = 0; f < idx.number_of_faces(); ++f)
+    REQUIRE(std::abs(curl[Eigen::Index(f)] - 2 * pi * fap.indices_per_face()[f]) <= 1e-9);
+  const auto loops = fap.loops_as_indices();
+  for(std::size_t l = 0; l < loops.size(); ++l)
+    REQUIRE(std::abs(SDI::integrate_along_loop(idx, loops[l], y) - 2 * pi * fap.loop_winding(l)) <= 1e-9);
+
+  // alpha integrates dalpha: alpha_j = alpha_i + y_ij mod 2 pi on every edge, alpha in [-pi, pi)
+  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+  {
+    const auto h = idx.oriented_halfedge(e);
+    const double ai = fap.alpha(source(h, tm)), aj = fap.alpha(target(h, tm));
+    REQUIRE(ai >= -pi);
+    REQUIRE(ai < pi);
+    REQUIRE(std::abs(SDI::wrap_angle(aj - ai - y[e])) <= 1e-9);
+  }
+
+  // Exactly the prescribed singularities appear in alpha. The winding of the wrapped alpha
+  // around a face equals its curl / 2 pi when every edge of the face carries |dalpha| < pi
+  // (the stripes resolve the face). The optimum may load one edge of a singular face with more
+  // than pi (the vortex sits off-centre, e.g. next to an edge of small cotangent weight); then
+  // that face and its neighbour across the edge are not resolved. Every resolved face must show
+  // its prescribed index, and unresolved faces may only touch a singular face.
+  auto alpha_map = boost::make_function_property_map<typename F::vertex_descriptor>(
+    [&fap](typename F::vertex_descriptor v) { return fap.alpha(v); });
+  std::map<typename F::face_descriptor, int> found;
+  SD::stripe_singularities(tm, alpha_map, boost::make_assoc_property_map(found));
+  std::vector<bool> near_singularity(idx.number_of_faces(), false);
+  std::size_t singular = 0, unresolved = 0;
+  for(std::size_t f = 0; f < idx.number_of_faces(); ++f)
+  {
+    if(fap.indices_per_face()[f] == 0)
+      continue;
+    ++singular;
+    for(auto v : vertices_around_face(halfedge(idx.face(f), tm), tm))
+      for(auto g : faces_around_target(halfedge(v, tm), tm))
+        if(g != boost::graph_traits<std::decay_t<decltype(tm)>>::null_face())
+          near_singularity[idx.index(g)] = true;
+  }
+  for(std::size_t f = 0; f < idx.number_of_faces(); ++f)
+  {
+    bool resolved = true;
+    for(auto h : halfedges_around_face(halfedge(idx.face(f), tm), tm))
+      resolved = resolved && std::abs(y[idx.edge_index(h)]) < pi;
+    if(resolved)
+    {
+      INFO("face " << f);
+      REQUIRE(found.at(idx.face(f)) == fap.indices_per_face()[f]);
+    }
+    else
+    {
+      ++unresolved;
+      REQUIRE(near_singularity[f]);
+    }
+  }
+  REQUIRE(unresolved <= 2 * singular);
+  if(fully_resolved)
+    REQUIRE(unresolved == 0);
+}
+
+} // namespace
+
+TEMPLATE_TEST_CASE("Optimal, feasible, and exactly the prescribed singularities", "[stripes]",
+                   SD_MESH_TYPES)
+{
+  // genus 0, 1, 2, a disk, four boundary loops, 26 components
+  for(const std::string name : {"bunny_1k.off", "staggered torus", "eight.off", "hemisphere.off",
+                                "mech-holes-shark.off", "bones.off"})
+  {
+    INFO(name);
+    const TestType mesh = make_case<TestType>(name);
+#define SD_RUN(SOLVER, NAME)                                                                       \
+    {                                                                                              \
+      INFO("solver " << NAME);                                                                     \
+      Fap<TestType, SOLVER> fap(mesh);                                                             \
+      fap.set_field(axis_field(mesh), resolved_frequency(mesh));                                   \
+      /* closed: indices sum to 0; with boundary, automatic windings absorb the sum */             \
+      const int sum = fap.number_of_boundary_loops() > 0 ? 1 : 0;                                  \
+      for(const auto& [f, k] : singularities_for(fap, sum))                                        \
+        fap.set_index(f, k);                                                                       \
+      fap.solve();                                                                                 \
+      check_solution(fap, name == "staggered torus" || name == "hemisphere.off");                  \
+    }
+    SD_FOR_EACH_SOLVER(SD_RUN)
+#undef SD_RUN
+  }
+}
+
+TEMPLATE_TEST_CASE("Both solvers give the same stripes", "[stripes]", SD_MESH_TYPES)
+{
+#if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
+  const TestType mesh = make_case<TestType>("eight.off");
+  Fap<TestType, SD::Default_solver_traits> a(mesh);
+  Fap<TestType, SD::Cholmod_solver_traits> b(mesh);
+  for(auto* fap : {static_cast<void*>(&a), static_cast<void*>(&b)})
+    (void)fap;
+  a.set_field(axis_field(mesh), resolved_frequency(mesh));
+  b.set_field(axis_field(mesh), resolved_frequency(mesh));
+  a.set_index(std::size_t(10), 1);
+  b.set_index(std::size_t(10), 1);
+  a.set_index(std::size_t(900), -1);
+  b.set_index(std::size_t(900), -1);
+  a.solve();
+  b.solve();
+  for(std::size_t e = 0; e < a.one_form().size(); ++e)
+    REQUIRE(std::abs(a.one_form()[e] - b.one_form()[e]) <= 1e-10 * (1. + std::abs(a.one_form()[e])));
+  for(std::size_t l = 0; l < a.number_of_loops(); ++l)
+    REQUIRE(a.loop_winding(l) == b.loop_winding(l));
+#else
+  WARN("CHOLMOD is not available: skipped");
+#endif
+}
+
+TEMPLATE_TEST_CASE("Re-solving after editing equals a fresh solve", "[stripes]", SD_MESH_TYPES)
+{
+  const TestType mesh = make_case<TestType>("staggered torus");
+  const auto& faces_ = SDI::Mesh_indices<TestType>(mesh);
+  Fap<TestType, SD::Default_solver_traits> editor(mesh);
+  editor.set_field(axis_field(mesh), resolved_frequency(mesh));
+  const auto f1 = faces_.face(well_shaped_face(editor, 100)), f2 = faces_.face(well_shaped_face(editor, 1500)),
+             f3 = faces_.face(well_shaped_face(editor, 2000));
+  editor.set_index(f1, 1);
+  editor.set_index(f2, -1);
+  editor.solve();
+  editor.move_singularity(f1, f3); // now +1 at f3, -1 at f2
+  editor.solve();
+  check_solution(editor);
+
+  Fap<TestType, SD::Default_solver_traits> fresh(mesh);
+  fresh.set_field(axis_field(mesh), resolved_frequency(mesh));
+  fresh.set_index(f3, 1);
+  fresh.set_index(f2, -1);
+  fresh.solve();
+  for(std::size_t e = 0; e < fresh.one_form().size(); ++e)
+    REQUIRE(std::abs(editor.one_form()[e] - fresh.one_form()[e]) <= 1e-10);
+
+  editor.annihilate(f3, f2);
+  editor.solve();
+  Fap<TestType, SD::Default_solver_traits> none(mesh);
+  none.set_field(axis_field(mesh), resolved_frequency(mesh));
+  none.solve();
+  for(std::size_t e = 0; e < none.one_form().size(); ++e)
+    REQUIRE(std::abs(editor.one_form()[e] - none.one_form()[e]) <= 1e-10);
+  REQUIRE(editor.energy() == Approx(none.energy()).epsilon(1e-12));
+  CHECK_THROWS_AS(editor.annihilate(f3, f2), SD::Invalid_constraints); // nothing left there
+}
+
+TEMPLATE_TEST_CASE("Vertex-space and face-space solvers agree when all weights are positive",
+                   "[stripes]", SD_MESH_TYPES)
+{
+  for(const std::string name : {"hemisphere.off", "staggered torus"})
+  {
+    INFO(name);
+    const TestType mesh = make_case<TestType>(name);
+    Fap<TestType, SD::Default_solver_traits> fap(mesh);
+    const auto& w = fap.cotangent_weights();
+    REQUIRE(*std::min_element(w.begin(), w.end()) > 0.); // the premise of the face-space method
+    fap.set_field(axis_field(mesh), resolved_frequency(mesh));
+    fap.set_index(std::size_t(37), 1);
+    fap.set_index(std::size_t(num_faces(mesh) / 2), fap.number_of_boundary_loops() ? 0 : -1);
+    fap.solve();
+    std::vector<int> windings(fap.number_of_loops());
+    for(std::size_t l = 0; l < windings.size(); ++l)
+      windings[l] = fap.loop_winding(l);
+
+    SDI::Face_space_stripe_solver<SD::Default_solver_traits> reference(
+      fap.indices(), fap.topology(), w, fap.loops_as_indices());
+    const std::vector<double> y = reference.solve(fap.target_one_form(), fap.indices_per_face(), windings);
+    for(std::size_t e = 0; e < y.size(); ++e)
+      REQUIRE(std::abs(y[e] - fap.one_form()[e]) <= 1e-8);
+  }
+}
+
+TEMPLATE_TEST_CASE("Negative cotangent weights: the face-space method fails, ours does not",
+                   "[stripes]", SD_MESH_TYPES)
+{
+  for(const std::string name : {"triceratops.off", "kitten.off"})
+  {
+    INFO(name);
+    const TestType mesh = make_case<TestType>(name);
+    Fap<TestType, SD::Default_solver_traits> fap(mesh);
+    const auto& w = fap.cotangent_weights();
+    REQUIRE(*std::min_element(w.begin(), w.end()) < 0.);
+    CHECK_THROWS_AS((SDI::Face_space_stripe_solver<SD::Default_solver_traits>(
+                      fap.indices(), fap.topology(), w, fap.loops_as_indices())),
+                    SD::Linear_solver_failure);
+    fap.set_field(axis_field(mesh), resolved_frequency(mesh));
+    fap.set_index(std::size_t(11), 1);
+    fap.set_index(std::size_t(num_faces(mesh) / 2), -1);
+    fap.solve();
+    // optimality and constraints hold (the triceratops' slivers are not resolved by any stripe
+    // frequency, so only the algebraic conditions are checked there)
+    const auto& idx = fap.indices();
+    const std::vector<double>& y = fap.one_form();
+    Eigen::VectorXd r(Eigen::Index(y.size()));
+    double scale = 0.;
+    for(std::size_t e = 0; e < y.size(); ++e)
+    {
+      r[Eigen::Index(e)] = w[e] * (y[e] - fap.target_one_form()[e]);
+      scale = (std::max)(scale, std::abs(w[e]) * (std::abs(y[e]) + std::abs(fap.target_one_form()[e])));
+    }
+    REQUIRE((SDI::Sparse_matrix(SDI::d0(idx).transpose()) * r).cwiseAbs().maxCoeff() <= 1e-9 * scale);
+    const Eigen::VectorXd curl = SDI::d1(idx) * Eigen::Map<const Eigen::VectorXd>(y.data(), Eigen::Index(y.size()));
+    for(std::size_t f = 0; f < idx.number_of_faces(); ++f)
+      REQUIRE(std::abs(curl[Eigen::Index(f)] - 2 * pi * fap.indices_per_face()[f]) <= 1e-9);
+  }
+}
+
+TEMPLATE_TEST_CASE("Automatic windings are integers no worse than their neighbours", "[stripes]",
+                   SD_MESH_TYPES)
+{
+  for(const std::string name : {"staggered torus", "eight.off", "mech-holes-shark.off"})
+  {
+    INFO(name);
+    const TestType mesh = make_case<TestType>(name);
+    Fap<TestType, SD::Default_solver_traits> fap(mesh);
+    // a field that winds around the surface: the windings matter
+    fap.set_field(axis_field(mesh), resolved_frequency(mesh, 0.2));
+    fap.set_index(well_shaped_face(fap, 5), 1);
+    fap.set_index(well_shaped_face(fap, num_faces(mesh) / 2), fap.number_of_boundary_loops() ? 0 : -1);
+    fap.solve();
+    std::vector<int> best(fap.number_of_loops());
+    for(std::size_t l = 0; l < best.size(); ++l)
+      best[l] = fap.loop_winding(l);
+    const double e0 = fap.energy_with_windings(best);
+    REQUIRE(e0 == Approx(fap.energy()).epsilon(1e-10));
+    const std::size_t G = fap.number_of_generator_loops();
+    for(std::size_t l = 0; l < best.size(); ++l)
+      for(int d : {-1, 1})
+      {
+        std::vector<int> neighbour = best;
+        neighbour[l] += d;
+        if(l >= G)
+        {
+          // boundary windings are tied by Stokes: move another boundary loop the other way
+          if(best.size() - G < 2)
+            continue;
+          neighbour[l == G ? G + 1 : G] -= d;
+        }
+        REQUIRE(fap.energy_with_windings(neighbour) >= e0 * (1. - 1e-12));
+      }
+    // explicit windings are honoured
+    std::vector<int> chosen = best;
+    if(G > 0)
+    {
+      chosen[0] += 2;
+      fap.set_loop_winding(0, chosen[0]);
+      fap.solve();
+      REQUIRE(fap.loop_winding(0) == chosen[0]);
+      check_solution(fap);
+    }
+  }
+}
+
+TEMPLATE_TEST_CASE("The two conventions for omega agree on planar meshes", "[stripes]", SD_MESH_TYPES)
+{
+  TestType mesh;
+  SD::make_grid(mesh, 12, 9, 0.15);
+  Fap<TestType, SD::Default_solver_traits> projected(mesh), rescaled(mesh);
+  projected.set_field(axis_field(mesh), 2.);
+  rescaled.set_field(axis_field(mesh), 2., SD::One_form_convention::angle_rescaled);
+  for(std::size_t e = 0; e < projected.target_one_form().size(); ++e)
+    REQUIRE(rescaled.target_one_form()[e] == Approx(projected.target_one_form()[e]).margin(1e-12));
+
+  // on a curved mesh they differ, but only by the discretization of the tangent spaces
+  const TestType bunny = make_case<TestType>("bunny_1k.off");
+  Fap<TestType, SD::Default_solver_traits> p2(bunny), r2(bunny);
+  p2.set_field(axis_field(bunny), resolved_frequency(bunny));
+  r2.set_field(axis_field(bunny), resolved_frequency(bunny), SD::One_form_convention::angle_rescaled);
+  double diff = 0., norm = 0.;
+  for(std::size_t e = 0; e < p2.target_one_form().size(); ++e)
+  {
+    diff += CGAL::square(p2.target_one_form()[e] - r2.target_one_form()[e]);
+    norm += CGAL::square(p2.target_one_form()[e]);
+  }
+  REQUIRE(diff > 0.);
+  REQUIRE(std::sqrt(diff / norm) < 0.5);
+}
+
+TEMPLATE_TEST_CASE("The one-call function writes every output", "[stripes]", SD_MESH_TYPES)
+{
+  const TestType mesh = make_case<TestType>("mech-holes-shark.off");
+  using V = typename boost::graph_traits<TestType>::vertex_descriptor;
+  using F = typename boost::graph_traits<TestType>::face_descriptor;
+  using E = typename boost::graph_traits<TestType>::edge_descriptor;
+  using H = typename boost::graph_traits<TestType>::halfedge_descriptor;
+  std::map<V, double> alpha;
+  std::map<F, int> k;
+  std::map<E, double> dalpha, omega;
+  std::map<H, double> corner;
+  for(auto f : faces(mesh))
+    k[f] = 0;
+  SDI::Mesh_indices<TestType> idx(mesh);
+  const Fap<TestType, SD::Default_solver_traits> shape(mesh);
+  k[idx.face(well_shaped_face(shape, 20))] = 1;
+  k[idx.face(well_shaped_face(shape, 3000))] = -1;
+  k[idx.face(well_shaped_face(shape, 7000))] = 1;
+  namespace P = SD::parameters;
+  const double energy = SD::field_aligned_parameterization(
+    mesh, axis_field(mesh), boost::make_assoc_property_map(k), boost::make_assoc_property_map(alpha),
+    P::stripes_per_unit_length(resolved_frequency(mesh),
+      P::edge_dalpha_map(boost::make_assoc_property_map(dalpha),
+        P::edge_omega_map(boost::make_assoc_property_map(omega),
+          P::corner_coordinate_map(boost::make_assoc_property_map(corner),
+            P::loop_windings(std::map<std::size_t, int>{{1, 0}}))))));
+  REQUIRE(energy > 0.);
+  REQUIRE(alpha.size() == num_vertices(mesh));
+  REQUIRE(dalpha.size() == num_edges(mesh));
+  REQUIRE(omega.size() == num_edges(mesh));
+  for(auto e : edges(mesh))
+  {
+    const H h = halfedge(e, mesh);
+    REQUIRE(std::abs(SDI::wrap_angle(alpha[target(h, mesh)] - alpha[source(h, mesh)] - dalpha[e])) <= 1e-9);
+  }
+  // corner coordinates: unwrapped alpha within each face. (Orientation signs come from edges():
+  // on a Surface_mesh, halfedge(edge(h)) is h itself, not the edge's canonical halfedge.)
+  std::map<H, double> sign;
+  for(auto e : edges(mesh))
+  {
+    sign[halfedge(e, mesh)] = 1.;
+    sign[opposite(halfedge(e, mesh), mesh)] = -1.;
+  }
+  for(auto f : faces(mesh))
+  {
+    double curl = 0.;
+    for(H h : halfedges_around_face(halfedge(f, mesh), mesh))
+    {
+      REQUIRE(std::abs(SDI::wrap_angle(corner.at(h) - alpha[target(h, mesh)])) <= 1e-9);
+      const E e = edge(h, mesh);
+      curl += sign.at(h) * dalpha[e];
+    }
+    REQUIRE(std::abs(curl - 2 * pi * k[f]) <= 1e-9);
+  }
+  // the detected singularities are the prescribed ones wherever the stripes resolve the face
+  std::map<F, int> found;
+  SD::stripe_singularities(mesh, boost::make_assoc_property_map(alpha), boost::make_assoc_property_map(found));
+  std::size_t resolved = 0;
+  for(auto f : faces(mesh))
+  {
+    bool ok = true;
+    for(H h : halfedges_around_face(halfedge(f, mesh), mesh))
+      ok = ok && std::abs(dalpha[edge(h, mesh)]) < pi;
+    if(ok)
+    {
+      REQUIRE(found.at(f) == k.at(f));
+      ++resolved;
+    }
+  }
+  REQUIRE(resolved + 6 >= num_faces(mesh));
+}
+
+TEMPLATE_TEST_CASE("Bad input throws and leaves the mesh and the outputs untouched", "[stripes]",
+                   SD_MESH_TYPES)
+{
+  using V = typename boost::graph_traits<TestType>::vertex_descriptor;
+  using F = typename boost::graph_traits<TestType>::face_descriptor;
+  auto run = [](const TestType& mesh, const std::map<F, int>& k) {
+    const test::Mesh_snapshot before(mesh);
+    std::map<V, double> alpha;
+    for(auto v : vertices(mesh))
+      alpha[v] = 42.;
+    const auto alpha_before = alpha;
+    std::map<F, int> kk = k;
+    try
+    {
+      SD::field_aligned_parameterization(mesh, axis_field(mesh), boost::make_assoc_property_map(kk),
+                                         boost::make_assoc_property_map(alpha));
+    }
+    catch(...)
+    {
+      CHECK(test::Mesh_snapshot(mesh) == before);
+      CHECK(alpha == alpha_before);
+      throw;
+    }
+  };
+  SECTION("indices that do not sum to zero on a closed surface")
+  {
+    const TestType mesh = make_case<TestType>("torus.off");
+    std::map<F, int> k;
+    for(auto f : faces(mesh))
+      k[f] = 0;
+    k[*faces(mesh).begin()] = 1;
+    try
+    {
+      run(mesh, k);
+      FAIL("no exception");
+    }
+    catch(const SD::Invalid_constraints& e)
+    {
+      INFO(e.what());
+      CHECK(std::string(e.what()).find("sum to 1") != std::string::npos);
+      CHECK(std::string(e.what()).find("must sum to 0") != std::string::npos);
+    }
+  }
+  SECTION("explicit boundary windings inconsistent with the indices")
+  {
+    const TestType mesh = make_case<TestType>("hemisphere.off");
+    Fap<TestType, SD::Default_solver_traits> fap(mesh);
+    fap.set_index(std::size_t(3), 2);
+    fap.set_loop_winding(0, 1);
+    CHECK_THROWS_WITH(fap.solve(), Catch::Contains("sum to 2") && Catch::Contains("boundary windings, 1"));
+    CHECK_FALSE(fap.is_solved());
+  }
+  SECTION("faces and loops that do not exist")
+  {
+    const TestType mesh = make_case<TestType>("torus.off");
+    Fap<TestType, SD::Default_solver_traits> fap(mesh);
+    CHECK_THROWS_AS(fap.set_index(std::size_t(num_faces(mesh)), 1), SD::Invalid_constraints);
+    CHECK_THROWS_AS(fap.set_loop_winding(2, 1), SD::Invalid_constraints); // genus 1: loops 0, 1
+    const TestType other = make_case<TestType>("torus.off");
+    if constexpr(std::is_same<TestType, test::Surface_mesh>::value)
+      CHECK_THROWS_AS(fap.set_index(F(std::size_t(num_faces(mesh) + 5)), 1), SD::Invalid_constraints);
+    else
+      CHECK_THROWS_AS(fap.set_index(*faces(other).begin(), 1), SD::Invalid_constraints);
+  }
+  SECTION("invalid meshes")
+  {
+    TestType empty;
+    CHECK_THROWS_AS(run(empty, {}), SD::Invalid_mesh);
+    TestType quads;
+    std::vector<V> vs;
+    for(int i = 0; i < 4; ++i)
+      vs.push_back(add_vertex(quads));
+    put(get(CGAL::vertex_point, quads), vs[0], test::Point(0, 0, 0));
+    put(get(CGAL::vertex_point, quads), vs[1], test::Point(1, 0, 0));
+    put(get(CGAL::vertex_point, quads), vs[2], test::Point(1, 1, 0));
+    put(get(CGAL::vertex_point, quads), vs[3], test::Point(0, 1, 0));
+    CGAL::Euler::add_face(vs, quads);
+    std::map<F, int> k{{*faces(quads).begin(), 0}};
+    CHECK_THROWS_AS(run(quads, k), SD::Invalid_mesh);
+    TestType bowtie;
+    std::vector<V> b;
+    for(int i = 0; i < 5; ++i)
+      b.push_back(add_vertex(bowtie));
+    const double xy[5][2] = {{0, 0}, {1, 0}, {1, 1}, {-1, 0}, {-1, -1}};
+    for(int i = 0; i < 5; ++i)
+      put(get(CGAL::vertex_point, bowtie), b[std::size_t(i)], test::Point(xy[i][0], xy[i][1], 0));
+    CGAL::Euler::add_face(std::vector<V>{b[0], b[1], b[2]}, bowtie);
+    CGAL::Euler::add_face(std::vector<V>{b[0], b[3], b[4]}, bowtie);
+    std::map<F, int> kb;
+    for(auto f : faces(bowtie))
+      kb[f] = 0;
+    CHECK_THROWS_AS(run(bowtie, kb), SD::Invalid_mesh);
+  }
+}
