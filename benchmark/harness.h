@@ -104,12 +104,20 @@ private:
 /// `run.phase()`. It may throw: the harness reports the error and goes on with the next contender.
 using Workload_function = void (*)(const Mesh& mesh, const std::string& solver, Run& run);
 
+/// Whether a workload's time depends on the sparse solver.
+enum class Solver_use
+{
+  compared, ///< run once per selected solver, side by side
+  none      ///< run once, with solver name "none"
+};
+
 /// One line of the workload table.
 struct Workload
 {
   const char* name;
   const char* description;
   Workload_function function;
+  Solver_use solver_use = Solver_use::compared;
 };
 
 // --- solvers
@@ -209,10 +217,11 @@ struct Measurement
   std::size_t failures = 0; ///< contenders that threw
 };
 
-/// Runs `workload` on `mesh` with every solver of `solvers`: `settings.warmup` warm-up calls, then
-/// `settings.runs` measured calls per solver. The solvers take turns call by call, so that a slow
-/// drift of the machine (frequency, other load) affects every contender alike. Checks are enabled
-/// on the first call of each solver. Progress, checks and errors go to `log`.
+/// Runs `workload` on `mesh` with every solver of `solvers` (or once with solver "none" if the
+/// workload uses none): `settings.warmup` warm-up calls, then `settings.runs` measured calls per
+/// solver. The solvers take turns call by call, so that a slow drift of the machine (frequency,
+/// other load) affects every contender alike. Checks are enabled on the first call of each solver.
+/// Progress, checks and errors go to `log`.
 inline Measurement measure(const Workload& workload, const Mesh& mesh, const std::string& mesh_name,
                            const std::vector<std::string>& solvers,
                            const Timing_settings& settings, std::ostream& log)
@@ -225,8 +234,11 @@ inline Measurement measure(const Workload& workload, const Mesh& mesh, const std
     std::vector<std::vector<double>> samples;     // per phase, one time per measured run
   };
   std::vector<Contender> contenders;
-  for(const std::string& s : solvers)
-    contenders.push_back(Contender{s, false, {}, {}});
+  if(workload.solver_use == Solver_use::none)
+    contenders.push_back(Contender{"none", false, {}, {}});
+  else
+    for(const std::string& s : solvers)
+      contenders.push_back(Contender{s, false, {}, {}});
 
   Measurement m;
   const Clock::time_point start = Clock::now();

@@ -110,8 +110,8 @@ inline Machine_info machine_info()
   m.build_type = SURFACE_DESIGN_BENCHMARK_BUILD_TYPE " (assertions on)";
 #endif
   m.cgal_version = CGAL_VERSION_STR;
-  m.eigen_version = std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) +
-                    "." + std::to_string(EIGEN_MINOR_VERSION);
+  m.eigen_version = std::to_string(EIGEN_WORLD_VERSION) + "." +
+                    std::to_string(EIGEN_MAJOR_VERSION) + "." + std::to_string(EIGEN_MINOR_VERSION);
 #if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
   m.cholmod = true;
   m.cholmod_version = std::to_string(CHOLMOD_MAIN_VERSION) + "." +

@@ -211,7 +211,7 @@ inline Load_status load_mesh(const Mesh_source& source, Mesh& mesh, std::string&
   }
   else if(source.origin == Mesh_origin::torus)
   {
-    // make_torus gives 2 * major * minor faces; major ~ 2.5 minor, the proportion of R/r = 1/0.4
+    // make_torus gives 2 * major * minor faces; major = 2.5 minor, as R / r = 1 / 0.4: square cells
     const std::size_t minor_segments = std::max<std::size_t>(
       3, std::size_t(std::round(std::sqrt(double(source.faces) / 5.))));
     const std::size_t major_segments = std::size_t(std::round(2.5 * double(minor_segments)));
@@ -222,18 +222,21 @@ inline Load_status load_mesh(const Mesh_source& source, Mesh& mesh, std::string&
     const bool shared = source.origin == Mesh_origin::shared;
     const std::string dir = shared ? shared_mesh_dir() : std::string(CGAL_SURFACE_DESIGN_DATA_DIR);
     const std::string path = dir + "/" + source.file;
+    // messages show the paths without "..", which the OS resolves (through symlinks) when opening
+    auto shown = [](const std::string& p) { return fs::path(p).lexically_normal().string(); };
     // an absent shared mesh is expected (the folder is optional); an absent bundled one is not
     const std::string prefix = shared ? "skipped: " : "";
     std::error_code ec;
     if(!fs::is_directory(dir, ec))
     {
-      message = prefix + source.spec + ": mesh folder " + dir + " not found" +
-                (shared ? " (set CGAL_SURFACE_DESIGN_SHARED_MESH_DIR to the shared mesh folder)" : "");
+      message = prefix + source.spec + ": mesh folder " + shown(dir) + " not found";
+      if(shared)
+        message += " (set CGAL_SURFACE_DESIGN_SHARED_MESH_DIR to the shared mesh folder)";
       return shared ? Load_status::skipped : Load_status::failed;
     }
     if(!fs::is_regular_file(path, ec))
     {
-      message = prefix + source.spec + ": file " + path + " not found";
+      message = prefix + source.spec + ": file " + shown(path) + " not found";
       return shared ? Load_status::skipped : Load_status::failed;
     }
     std::string error;

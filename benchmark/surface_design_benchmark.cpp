@@ -147,7 +147,8 @@ int parse_options(int argc, char** argv, Options& options)
     static const std::vector<std::string> value_options{
       "--workload", "--mesh", "--preset", "--solver", "--warmup", "--runs", "--json"};
     std::string option = argv[i], value;
-    const std::size_t equal = option.compare(0, 2, "--") == 0 ? option.find('=') : std::string::npos;
+    const std::size_t equal =
+      option.compare(0, 2, "--") == 0 ? option.find('=') : std::string::npos;
     const bool inline_value = equal != std::string::npos;
     if(inline_value)
     {
@@ -180,8 +181,9 @@ int parse_options(int argc, char** argv, Options& options)
       const Workload* w = find_workload(value);
       if(!w)
         return fail("unknown workload \"" + value + "\" (see --list)");
-      if(std::find(options.workloads.begin(), options.workloads.end(), w) == options.workloads.end())
-        options.workloads.push_back(w);
+      auto& chosen = options.workloads;
+      if(std::find(chosen.begin(), chosen.end(), w) == chosen.end())
+        chosen.push_back(w);
     }
     else if(option == "--mesh")
     {
@@ -302,7 +304,8 @@ int run_benchmark(int argc, char** argv)
   print_results(std::cout, results);
   if(!comparisons.empty())
   {
-    std::cout << "\nratio = baseline median / contender median (above 1: the contender is faster)\n";
+    std::cout << "\nratio = baseline median / contender median"
+              << " (above 1: the contender is faster)\n";
     print_comparisons(std::cout, comparisons);
   }
   const std::size_t failed_checks = std::size_t(
