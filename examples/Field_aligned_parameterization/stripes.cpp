@@ -1,0 +1,377 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// stripes: field-aligned stripe patterns with prescribed singularities on any triangle mesh.
+// Run without arguments for the usage.
+
+#include "../common/example_support.h"
+
+#include <CGAL/Surface_design/field_aligned_parameterization.h>
+#include <CGAL/Surface_design/Field_aligned_parameterizer.h>
+#include <CGAL/Surface_design/internal/geometry.h>
+
+#include <CGAL/Heat_method_3/Surface_mesh_geodesic_distances_3.h>
+
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace SD = CGAL::Surface_design;
+using example::Mesh;
+using example::Point;
+using example::Vector;
+
+namespace {
+
+const char* usage =
+  "usage: stripes INPUT [options]\n"
+  "  Stripe pattern (circle-valued function alpha) whose gradient follows a vector field, with\n"
+  "  singularities exactly at the given faces (faces numbered in the input file's order).\n"
+  "options:\n"
+  "  --field axis:X,Y,Z        constant direction projected on the surface (default axis:0,1,0)\n"
+  "  --field heat:V[:DEGREES]  gradient of the geodesic distance from vertex V (CGAL Heat_method_3),\n"
+  "                            rotated by DEGREES in the tangent plane: 0 rings, 90 spokes, else\n"
+  "                            spirals (spokes and spirals need --singularity at a face next to V)\n"
+  "  --field smoothest         smoothest direction field (comes with the direction-field package)\n"
+  "  --scale S                 stripes per unit length (default: 10 stripes across the bounding box)\n"
+  "  --singularity FACE:INDEX  prescribe a singularity (repeatable); on a closed surface the\n"
+  "                            indices must sum to 0 (boundary windings absorb the sum otherwise)\n"
+  "  --winding LOOP:N          prescribe the winding of a loop (repeatable; others automatic)\n"
+  "  --solver ldlt|cholmod     sparse solver (default ldlt)\n"
+  "  --convention projected|angle_rescaled   how omega is computed from the field\n"
+  "  --output OUT.ply          mesh with vertex alpha, face index, edge omega/dalpha\n"
+  "  --picture OUT.png         picture of the stripes (cos alpha), rendered with f3d\n"
+  "  --up +Y|+Z|...            up direction of the picture (default +Y)\n";
+
+struct Options
+{
+  std::string input, field = "axis:0,1,0", output, picture, up = "+Y", solver = "ldlt";
+  std::optional<double> scale;
+  std::vector<std::pair<std::size_t, int>> singularities;
+  std::map<std::size_t, int> windings;
+  SD::One_form_convention convention = SD::One_form_convention::projected;
+};
+
+std::pair<long, long> parse_pair(const std::string& s, const char* what)
+{
+  const auto colon = s.find(':');
+  try
+  {
+    if(colon == std::string::npos)
+      throw std::invalid_argument(s);
+    return {std::stol(s.substr(0, colon)), std::stol(s.substr(colon + 1))};
+  }
+  catch(const std::exception&)
+  {
+    throw std::invalid_argument(std::string("expected ") + what + ", got '" + s + "'");
+  }
+}
+
+Options parse(int argc, char** argv)
+{
+  Options o;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    auto next = [&]() -> std::string {
+      if(i + 1 >= argc)
+        throw std::invalid_argument(a + " needs a value");
+      return argv[++i];
+    };
+    if(a == "--field")
+      o.field = next();
+    else if(a == "--scale")
+      o.scale = std::stod(next());
+    else if(a == "--singularity")
+    {
+      const auto [f, k] = parse_pair(next(), "FACE:INDEX");
+      if(f < 0)
+        throw std::invalid_argument("face numbers start at 0");
+      o.singularities.emplace_back(std::size_t(f), int(k));
+    }
+    else if(a == "--winding")
+    {
+      const auto [l, n] = parse_pair(next(), "LOOP:N");
+      if(l < 0)
+        throw std::invalid_argument("loop numbers start at 0");
+      o.windings[std::size_t(l)] = int(n);
+    }
+    else if(a == "--solver")
+      o.solver = next();
+    else if(a == "--convention")
+    {
+      const std::string c = next();
+      if(c == "projected")
+        o.convention = SD::One_form_convention::projected;
+      else if(c == "angle_rescaled")
+        o.convention = SD::One_form_convention::angle_rescaled;
+      else
+        throw std::invalid_argument("unknown convention " + c);
+    }
+    else if(a == "--output")
+      o.output = next();
+    else if(a == "--picture")
+      o.picture = next();
+    else if(a == "--up")
+      o.up = next();
+    else if(!a.empty() && a[0] == '-')
+      throw std::invalid_argument("unknown option " + a);
+    else if(o.input.empty())
+      o.input = a;
+    else
+      throw std::invalid_argument("more than one input file");
+  }
+  if(o.input.empty())
+    throw std::invalid_argument("no input mesh");
+  return o;
+}
+
+// The vector field the stripes follow, one vector per vertex.
+std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec)
+{
+  namespace SDI = CGAL::Surface_design::internal;
+  if(spec.rfind("axis:", 0) == 0)
+  {
+    double x, y, z;
+    if(std::sscanf(spec.c_str() + 5, "%lf,%lf,%lf", &x, &y, &z) != 3)
+      throw std::invalid_argument("expected --field axis:X,Y,Z, got " + spec);
+    return std::vector<Vector>(num_vertices(mesh), Vector(x, y, z));
+  }
+  if(spec.rfind("heat:", 0) == 0)
+  {
+    long v = -1;
+    double degrees = 0.;
+    if(std::sscanf(spec.c_str() + 5, "%ld:%lf", &v, &degrees) < 1 || v < 0 ||
+       std::size_t(v) >= num_vertices(mesh))
+      throw std::invalid_argument("expected --field heat:VERTEX[:DEGREES] with a vertex of the mesh "
+                                  "(0.." + std::to_string(num_vertices(mesh) - 1) + "), got " + spec);
+    std::vector<double> distance_values(num_vertices(mesh), 0.);
+    auto distance = CGAL::make_property_map(distance_values);
+    CGAL::Heat_method_3::estimate_geodesic_distances(mesh, distance, Mesh::Vertex_index(std::uint32_t(v)));
+    // gradient of the piecewise-linear distance in every face, area-averaged to the vertices,
+    // then rotated about the vertex normal
+    SDI::Mesh_indices<Mesh> idx(mesh);
+    const auto normal = SDI::vertex_normals(idx, mesh.points());
+    std::vector<Eigen::Vector3d> g(num_vertices(mesh), Eigen::Vector3d::Zero());
+    for(auto f : faces(mesh))
+    {
+      Eigen::Vector3d p[3];
+      double d[3];
+      Mesh::Vertex_index vs[3];
+      int k = 0;
+      for(auto w : vertices_around_face(halfedge(f, mesh), mesh))
+      {
+        vs[k] = w;
+        p[k] = SDI::position(mesh.points(), w);
+        d[k] = distance_values[std::size_t(w)];
+        ++k;
+      }
+      const Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]);
+      const double area2 = n.squaredNorm();
+      // grad d = sum_i d_i (N x e_i) / (2A), e_i the edge opposite vertex i
+      Eigen::Vector3d grad = Eigen::Vector3d::Zero();
+      for(int i = 0; i < 3; ++i)
+        grad += d[i] * n.cross(p[(i + 2) % 3] - p[(i + 1) % 3]);
+      grad /= area2;
+      for(int i = 0; i < 3; ++i)
+        g[std::size_t(vs[i])] += std::sqrt(area2) * grad;
+    }
+    const double theta = degrees * std::acos(-1.) / 180.;
+    std::vector<Vector> field;
+    for(std::size_t i = 0; i < g.size(); ++i)
+    {
+      const Eigen::Vector3d r = std::cos(theta) * g[i] + std::sin(theta) * normal[i].cross(g[i]);
+      field.emplace_back(r.x(), r.y(), r.z());
+    }
+    return field;
+  }
+  if(spec == "smoothest")
+    throw std::invalid_argument("--field smoothest needs the direction-field package, which is not "
+                                "available yet; use --field axis:X,Y,Z or --field heat:V[:DEGREES]");
+  throw std::invalid_argument("unknown field " + spec);
+}
+
+template <class Solver>
+int run(const Options& o)
+{
+  example::Stopwatch clock, total;
+  Mesh mesh = example::read_mesh(o.input);
+  std::cout << "read " << o.input << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh)
+            << " faces (" << clock.lap() << " ms)\n";
+
+  SD::Field_aligned_parameterizer<Mesh, Mesh::Property_map<Mesh::Vertex_index, Point>, Solver> fap(
+    mesh, mesh.points());
+  std::cout << "validate, topology, weights, factorization: " << clock.lap() << " ms\n";
+  const auto& topo = fap.topology();
+  std::cout << "  " << topo.components.size() << " component(s), genus";
+  for(const auto& c : topo.components.info)
+    std::cout << ' ' << c.genus();
+  std::cout << ", " << fap.number_of_generator_loops() << " generator loop(s), "
+            << fap.number_of_boundary_loops() << " boundary loop(s)\n";
+
+  const std::vector<Vector> field = make_field(mesh, o.field);
+  CGAL::Bbox_3 box;
+  for(const Point& p : mesh.points())
+    box += p.bbox();
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+  const double scale = o.scale ? *o.scale : 10. / diagonal;
+  fap.set_field(CGAL::make_property_map(field), scale, o.convention);
+  std::cout << "field " << o.field << ", " << scale << " stripes per unit length: " << clock.lap() << " ms\n";
+
+  std::map<std::size_t, int> indices; // repeated faces add up
+  for(const auto& [f, k] : o.singularities)
+    indices[f] += k;
+  for(const auto& [f, k] : indices)
+    fap.set_index(f, k);
+  for(const auto& [l, n] : o.windings)
+    fap.set_loop_winding(l, n);
+  fap.solve();
+  std::cout << "solve: " << clock.lap() << " ms (energy " << fap.energy() << ")\n";
+  for(std::size_t l = 0; l < fap.number_of_loops(); ++l)
+    std::cout << "  loop " << l << (fap.is_boundary_loop(l) ? " (boundary)" : " (generator)") << ": "
+              << fap.loop(l).size() << " edges, winding " << fap.loop_winding(l)
+              << (o.windings.count(l) ? " (prescribed)" : " (automatic)") << '\n';
+
+  // detected singularities of alpha
+  auto alpha = mesh.add_property_map<Mesh::Vertex_index, double>("v:alpha", 0.).first;
+  auto detected = mesh.add_property_map<Mesh::Face_index, int>("f:index", 0).first;
+  fap.alpha(alpha);
+  const std::size_t found = SD::stripe_singularities(mesh, alpha, detected);
+  std::cout << "singularities of alpha (" << found << "):";
+  for(auto f : faces(mesh))
+    if(detected[f] != 0)
+      std::cout << ' ' << std::size_t(f) << ':' << detected[f];
+  std::cout << '\n';
+  const auto& prescribed = fap.indices_per_face();
+  for(auto f : faces(mesh))
+    if(detected[f] != prescribed[std::size_t(f)])
+    {
+      std::cout << "  note: some faces next to a singularity carry |dalpha| >= pi on an edge, so the\n"
+                   "  wrapped alpha shows their winding differently (refine the mesh or lower --scale)\n";
+      break;
+    }
+
+  if(!o.output.empty())
+  {
+    const auto& idx = fap.indices();
+    std::vector<std::array<std::size_t, 2>> edge_vertices;
+    example::Ply_property omega{"omega", "double", {}}, dalpha{"dalpha", "double", {}};
+    for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+    {
+      const auto ij = idx.edge_vertices(e); // oriented from vertex1 to vertex2
+      edge_vertices.push_back({ij.first, ij.second});
+      omega.values.push_back(fap.target_one_form()[e]);
+      dalpha.values.push_back(fap.one_form()[e]);
+    }
+    example::Ply_property alpha_prop{"alpha", "double", {}}, index_prop{"index", "int", {}};
+    for(auto v : vertices(mesh))
+      alpha_prop.values.push_back(alpha[v]);
+    for(auto f : faces(mesh))
+      index_prop.values.push_back(detected[f]);
+    example::write_ply(o.output, mesh, {alpha_prop}, {index_prop}, edge_vertices, {omega, dalpha});
+    std::cout << "wrote " << o.output << " (" << clock.lap() << " ms)\n";
+  }
+
+  if(!o.picture.empty())
+  {
+    // Each triangle is split into n^2 sub-triangles carrying the unwrapped per-corner alpha, so
+    // the rendered stripes cos(alpha) are crisp and seamless.
+    auto corner = mesh.add_property_map<Mesh::Halfedge_index, double>("h:corner", 0.).first;
+    fap.corner_coordinates(corner);
+    namespace SDI = CGAL::Surface_design::internal;
+    const auto normal = SDI::vertex_normals(fap.indices(), mesh.points());
+    double largest = 0.;
+    for(double y : fap.one_form())
+      largest = (std::max)(largest, std::abs(y));
+    const std::size_t budget = 3000000 / (std::max<std::size_t>)(num_faces(mesh), 1);
+    std::size_t n = std::size_t(std::ceil(largest / 0.6));
+    n = (std::max<std::size_t>)(1, (std::min)(n, (std::min<std::size_t>)(8, std::size_t(std::sqrt(double(budget))))));
+    example::Vtk_surface vtk;
+    vtk.scalar_name = "stripes";
+    for(auto f : faces(mesh))
+    {
+      const auto h0 = halfedge(f, mesh);
+      const Mesh::Halfedge_index hs[3] = {prev(h0, mesh), h0, next(h0, mesh)}; // corners at a, b, c
+      Eigen::Vector3d p[3], nn[3];
+      double u[3];
+      for(int i = 0; i < 3; ++i)
+      {
+        const auto v = target(hs[i], mesh);
+        p[i] = SDI::position(mesh.points(), v);
+        nn[i] = normal[std::size_t(v)];
+        u[i] = corner[hs[i]];
+      }
+      const std::size_t base = vtk.points.size();
+      auto id = [&](std::size_t i, std::size_t j) { return base + j * (n + 1) - j * (j - 1) / 2 + i; };
+      for(std::size_t j = 0; j <= n; ++j)
+        for(std::size_t i = 0; i + j <= n; ++i)
+        {
+          const double b = double(i) / double(n), c = double(j) / double(n), a = 1. - b - c;
+          const Eigen::Vector3d q = a * p[0] + b * p[1] + c * p[2];
+          const Eigen::Vector3d m = (a * nn[0] + b * nn[1] + c * nn[2]).normalized();
+          vtk.points.push_back({q.x(), q.y(), q.z()});
+          vtk.normals.push_back({m.x(), m.y(), m.z()});
+          vtk.scalars.push_back(std::cos(a * u[0] + b * u[1] + c * u[2]));
+        }
+      for(std::size_t j = 0; j < n; ++j)
+        for(std::size_t i = 0; i + j < n; ++i)
+        {
+          vtk.triangles.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
+          if(i + j + 1 < n)
+            vtk.triangles.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+        }
+    }
+    const std::string vtk_path = o.picture + ".vtk";
+    vtk.write(vtk_path);
+    if(example::render_png(vtk_path, o.picture, "stripes", -1., 1., o.up))
+      std::cout << "wrote " << o.picture << " (" << clock.lap() << " ms; surface in " << vtk_path << ")\n";
+  }
+  std::cout << "total " << total.lap() << " ms\n";
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  try
+  {
+    if(argc < 2)
+    {
+      std::cerr << usage;
+      return 2;
+    }
+    const Options o = parse(argc, argv);
+    if(o.solver == "ldlt")
+      return run<SD::Default_solver_traits>(o);
+#if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
+    if(o.solver == "cholmod")
+      return run<SD::Cholmod_solver_traits>(o);
+#endif
+    throw std::invalid_argument("solver " + o.solver + " is not available in this build");
+  }
+  catch(const SD::Invalid_mesh& e)
+  {
+    std::cerr << "stripes: " << e.what() << '\n';
+    return 1;
+  }
+  catch(const SD::Invalid_constraints& e)
+  {
+    std::cerr << "stripes: " << e.what() << '\n';
+    return 1;
+  }
+  catch(const std::invalid_argument& e)
+  {
+    std::cerr << "stripes: " << e.what() << "\n\n" << usage;
+    return 2;
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "stripes: " << e.what() << '\n';
+    return 1;
+  }
+}
