@@ -499,6 +499,23 @@ TEMPLATE_TEST_CASE("The one-call function writes every output", "[stripes]", SD_
     }
     REQUIRE(std::abs(curl - 2 * pi * k[f]) <= 1e-9);
   }
+  // the curl of the written dalpha gives back exactly the prescribed indices
+  std::map<F, int> from_form;
+  REQUIRE(SD::one_form_singularities(mesh, boost::make_assoc_property_map(dalpha),
+                                     boost::make_assoc_property_map(from_form)) == 3);
+  REQUIRE(from_form == k);
+
+  // the same call with CHOLMOD gives the same alpha
+#if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
+  std::map<V, double> alpha_cholmod;
+  SD::field_aligned_parameterization(
+    mesh, axis_field(mesh), boost::make_assoc_property_map(k), boost::make_assoc_property_map(alpha_cholmod),
+    P::stripes_per_unit_length(resolved_frequency(mesh),
+      P::loop_windings(std::map<std::size_t, int>{{1, 0}}, P::sparse_linear_solver(SD::Cholmod_solver_traits()))));
+  for(auto v : vertices(mesh))
+    REQUIRE(std::abs(SDI::wrap_angle(alpha_cholmod[v] - alpha[v])) <= 1e-9);
+#endif
+
   // the detected singularities are the prescribed ones wherever the stripes resolve the face
   std::map<F, int> found;
   SD::stripe_singularities(mesh, boost::make_assoc_property_map(alpha), boost::make_assoc_property_map(found));

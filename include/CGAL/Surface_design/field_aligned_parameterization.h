@@ -15,6 +15,7 @@
 #include <cmath>
 #include <map>
 #include <type_traits>
+#include <vector>
 
 namespace CGAL {
 namespace Surface_design {
@@ -141,17 +142,24 @@ std::size_t one_form_singularities(const PolygonMesh& tm, const EdgeScalarMap& o
                                    FaceIndexMap face_indices)
 {
   const double two_pi = 2. * std::acos(-1.);
-  std::size_t count = 0;
-  for(auto f : faces(tm))
+  // Accumulate edge by edge: the orientation of an edge must come from edges(tm), because on a
+  // Surface_mesh halfedge(edge(h, tm), tm) is h itself whichever side h is on.
+  internal::Mesh_indices<PolygonMesh> idx(tm);
+  std::vector<double> curl(idx.number_of_faces(), 0.);
+  for(auto e : edges(tm))
   {
-    double sum = 0.;
-    for(auto h : halfedges_around_face(halfedge(f, tm), tm))
-    {
-      const auto e = edge(h, tm);
-      sum += (halfedge(e, tm) == h ? 1. : -1.) * double(get(one_form, e));
-    }
-    const int k = int(std::lround(sum / two_pi));
-    put(face_indices, f, k);
+    const auto h = halfedge(e, tm);
+    const double value = double(get(one_form, e));
+    if(!is_border(h, tm))
+      curl[idx.index(face(h, tm))] += value;
+    if(!is_border(opposite(h, tm), tm))
+      curl[idx.index(face(opposite(h, tm), tm))] -= value;
+  }
+  std::size_t count = 0;
+  for(std::size_t f = 0; f < curl.size(); ++f)
+  {
+    const int k = int(std::lround(curl[f] / two_pi));
+    put(face_indices, idx.face(f), k);
     count += (k != 0);
   }
   return count;

@@ -16,6 +16,10 @@
 #include <Eigen/CholmodSupport>
 #endif
 
+#if defined(CGAL_SURFACE_DESIGN_HAS_METIS)
+#include <Eigen/MetisSupport>
+#endif
+
 namespace CGAL {
 namespace Surface_design {
 
@@ -34,6 +38,21 @@ using Default_solver_traits =
 /// reference BLAS.
 using Cholmod_solver_traits =
   CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<CGAL::Eigen_sparse_matrix<double>::EigenType>>;
+#endif
+
+#if defined(CGAL_SURFACE_DESIGN_HAS_METIS) || defined(DOXYGEN_RUNNING)
+/// \ingroup PkgSurfaceDesignRef
+/// Eigen's `SimplicialLDLT` as in `Default_solver_traits`, but with the nested-dissection
+/// fill-reducing ordering of METIS (`METIS_NodeND`) instead of AMD. Nested dissection targets the
+/// fill-in of large 2D-like graphs such as mesh Laplacians, where AMD's fill grows faster; the
+/// factorization itself stays simplicial, single-threaded and BLAS-free. Its LDLT pivots are
+/// exposed as for the default, so `Factored_system` checks positive definiteness the same way.
+/// Defined when the library was configured with METIS (macro `CGAL_SURFACE_DESIGN_HAS_METIS`, set
+/// by the CMake target; Debian: `libmetis-dev`) built with 32-bit indices (`IDXTYPEWIDTH` 32, the
+/// default): Eigen's `MetisOrdering<int>` passes `int` arrays to METIS.
+using Metis_ldlt_solver_traits =
+  CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::EigenType,
+                                                  Eigen::Lower, Eigen::MetisOrdering<int>>>;
 #endif
 
 } // namespace Surface_design
