@@ -102,9 +102,6 @@ public:
   edge_descriptor edge(std::size_t i) const { return m_edges[i]; }
   face_descriptor face(std::size_t i) const { return m_faces[i]; }
 
-  const std::vector<vertex_descriptor>& vertex_descriptors() const { return m_vertices; }
-  const std::vector<face_descriptor>& face_descriptors() const { return m_faces; }
-
   std::size_t source_index(halfedge_descriptor h) const { return index(source(h, *m_tm)); }
   std::size_t target_index(halfedge_descriptor h) const { return index(target(h, *m_tm)); }
   std::size_t edge_index(halfedge_descriptor h) const { return m_edge_of_halfedge[index(h)]; }
