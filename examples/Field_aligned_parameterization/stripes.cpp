@@ -34,7 +34,8 @@ const char* usage =
   "  --field axis:X,Y,Z        constant direction projected on the surface (default axis:0,1,0)\n"
   "  --field heat:V[:DEGREES]  gradient of the geodesic distance from vertex V (CGAL Heat_method_3),\n"
   "                            rotated by DEGREES in the tangent plane: 0 rings, 90 spokes, else\n"
-  "                            spirals (spokes and spirals need --singularity at a face next to V)\n"
+  "                            spirals (spokes and spirals need --singularity at a face next to V;\n"
+  "                            the faces around V are printed)\n"
   "  --field smoothest         smoothest direction field (comes with the direction-field package)\n"
   "  --scale S                 stripes per unit length (default: 10 stripes across the bounding box)\n"
   "  --singularity FACE:INDEX  prescribe a singularity (repeatable); on a closed surface the\n"
@@ -148,9 +149,16 @@ std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec)
        std::size_t(v) >= num_vertices(mesh))
       throw std::invalid_argument("expected --field heat:VERTEX[:DEGREES] with a vertex of the mesh "
                                   "(0.." + std::to_string(num_vertices(mesh) - 1) + "), got " + spec);
+    const Mesh::Vertex_index source_vertex(static_cast<std::uint32_t>(v));
+    // the faces where a singularity centres the rings, spokes or spiral
+    std::cout << "faces around vertex " << v << ":";
+    for(auto f : faces_around_target(halfedge(source_vertex, mesh), mesh))
+      if(f != Mesh::null_face())
+        std::cout << ' ' << std::size_t(f);
+    std::cout << '\n';
     std::vector<double> distance_values(num_vertices(mesh), 0.);
     auto distance = CGAL::make_property_map(distance_values);
-    CGAL::Heat_method_3::estimate_geodesic_distances(mesh, distance, Mesh::Vertex_index(std::uint32_t(v)));
+    CGAL::Heat_method_3::estimate_geodesic_distances(mesh, distance, source_vertex);
     // gradient of the piecewise-linear distance in every face, area-averaged to the vertices,
     // then rotated about the vertex normal
     SDI::Mesh_indices<Mesh> idx(mesh);

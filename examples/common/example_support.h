@@ -170,8 +170,10 @@ struct Vtk_surface
 };
 
 /// Renders a VTK file to PNG headlessly with f3d (Debian package `f3d`, run under `xvfb-run`
-/// when there is no display). Colours by the point scalar `scalar` in [lo, hi] with a two-colour
-/// map when `scalar` is not empty. Returns false, with a message, if f3d is unavailable or fails.
+/// when there is no display; f3d 1.3 has no offscreen mode of its own). Colours by the point
+/// scalar `scalar` in [lo, hi] with a two-colour map when `scalar` is not empty; `--dry-run`
+/// ignores any user configuration of f3d. f3d's exit code does not tell whether it rendered, so
+/// success is judged by the PNG file. Returns false, with a message, if f3d is unavailable or fails.
 inline bool render_png(const std::string& vtk, const std::string& png, const std::string& scalar = "",
                        double lo = -1., double hi = 1., const std::string& up = "+Y")
 {
@@ -185,12 +187,17 @@ inline bool render_png(const std::string& vtk, const std::string& png, const std
   }
   std::ostringstream cmd;
   cmd << (has_display ? "" : "xvfb-run -a ") << "f3d '" << vtk << "' --output='" << png
-      << "' --resolution=1200,900 --bg-color=1,1,1 --camera-view-angle=20 --up=" << up << " -a --quiet";
+      << "' --dry-run --quiet --resolution=1200,900 --bg-color=1,1,1 --camera-view-angle=20"
+      << " --roughness=0.8 --up=" << up << " -a";
   if(!scalar.empty())
     cmd << " --scalars=" << scalar << " --range=" << lo << ',' << hi
         << " --colormap=0,0.1,0.18,0.42,0.4,0.1,0.18,0.42,0.6,0.96,0.9,0.78,1,0.96,0.9,0.78";
   cmd << " >/dev/null 2>&1";
-  if(std::system(cmd.str().c_str()) != 0 || !std::ifstream(png).good())
+  std::remove(png.c_str());
+  // xvfb-run can lose a race for a display number: try once more before giving up
+  for(int attempt = 0; attempt < 2 && !std::ifstream(png).good(); ++attempt)
+    (void)std::system(cmd.str().c_str());
+  if(!std::ifstream(png).good())
   {
     std::cerr << "warning: f3d could not render " << png << " (command: " << cmd.str() << ")\n";
     return false;

@@ -47,7 +47,7 @@ inline double wrap_angle(double x)
 
 } // namespace internal
 
-/// \ingroup PkgSurfaceDesignRef
+/// \ingroup PkgFieldAlignedParameterizationRef
 ///
 /// Computes a circle-valued *stripe function* alpha (one angle per vertex) whose differential
 /// follows a target 1-form omega (from a tangent vector field) in the cotangent-weighted least
@@ -83,7 +83,9 @@ inline double wrap_angle(double x)
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
 /// \tparam VertexPointMap a readable property map from vertices to `Point_3`
-/// \tparam SolverTraits a model of `SparseLinearAlgebraWithFactorTraits_d`
+/// \tparam SolverTraits a model of `SparseLinearAlgebraWithFactorTraits_d`. Copies of a
+/// `CGAL::Eigen_solver_traits` share one factorization: give every parameterizer its own solver
+/// object (the default argument does), never one object to two parameterizers.
 template <class TriangleMesh,
           class VertexPointMap = typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type,
           class SolverTraits = Default_solver_traits>
@@ -250,7 +252,11 @@ public:
   void set_automatic_winding(std::size_t l) { m_winding[checked_loop(l)] = std::nullopt; }
   void set_all_windings_automatic() { std::fill(m_winding.begin(), m_winding.end(), std::nullopt); }
   /// Winding of loop `l` in the last solve().
-  int loop_winding(std::size_t l) const { return m_used_winding.at(checked_loop(l)); }
+  int loop_winding(std::size_t l) const
+  {
+    require_solved();
+    return m_used_winding[checked_loop(l)];
+  }
   /// @}
 
   /// \name Solving
@@ -294,6 +300,7 @@ public:
     }
     m_y = std::move(y);
     m_used_winding = winding;
+    m_energy = energy_of(m_y);
 
     // alpha: integrate dalpha along the primal tree from each component's root (alpha = 0)
     m_alpha = internal::integrate_along_tree(m_idx, m_topology.tree, m_y);
@@ -305,7 +312,11 @@ public:
   bool is_solved() const { return m_solved; }
 
   /// alpha at vertex `v`, in [-pi, pi).
-  double alpha(vertex_descriptor v) const { return m_alpha.at(m_idx.index(v)); }
+  double alpha(vertex_descriptor v) const
+  {
+    require_solved();
+    return m_alpha[m_idx.index(v)];
+  }
 
   /// Writes alpha (in [-pi, pi)) to a vertex -> double map.
   template <class VertexScalarMap>
@@ -353,11 +364,13 @@ public:
     }
   }
 
-  /// The energy sum_e w_e (dalpha_e - omega_e)^2 of the last solve.
+  /// The energy sum_e w_e (dalpha_e - omega_e)^2 of the last solve (with the field of that
+  /// solve). With negative cotangent weights it can be negative: the energy is convex on the
+  /// feasible set, not positive on every 1-form.
   double energy() const
   {
     require_solved();
-    return energy_of(m_y);
+    return m_energy;
   }
 
   /// The energy of the optimal dalpha for the current field and indices with the given windings
@@ -687,6 +700,7 @@ private:
 
   bool m_solved = false;
   std::vector<double> m_y, m_alpha;
+  double m_energy = 0.;
   std::vector<int> m_used_winding;
 };
 

@@ -46,7 +46,9 @@ inline const char* to_string(Mesh_defect d)
 
 /// \ingroup PkgSurfaceDesignRef
 /// Thrown when an input mesh does not satisfy an algorithm's preconditions.
-/// The mesh and every output property map are left unchanged.
+/// The mesh's geometry and connectivity and every output property map are left unchanged. (As
+/// everywhere in CGAL, `get_initialized_*_index_map()` may renumber the ids of a `Polyhedron_3`
+/// with `Polyhedron_items_with_id_3` whose ids are not a valid numbering.)
 /// `defect()` says what is wrong and `element()` which element (the index of the vertex or face
 /// in the index maps used by the algorithm, i.e. the input order for meshes read from a file), or
 /// `no_element` when the defect concerns the whole mesh.

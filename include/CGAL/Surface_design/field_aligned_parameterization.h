@@ -34,7 +34,7 @@ void if_given(const NP& np, Tag tag, Fn&& fn)
 
 } // namespace fap_detail
 
-/// \ingroup PkgSurfaceDesignRef
+/// \ingroup PkgFieldAlignedParameterizationRef
 ///
 /// Computes a stripe function alpha (per vertex, in [-pi, pi)) whose differential follows the
 /// vector field `field`, with a singularity of index `get(face_indices, f)` in every face `f`
@@ -106,11 +106,13 @@ double field_aligned_parameterization(const TriangleMesh& tm, const VertexVector
   return fap.energy();
 }
 
-/// \ingroup PkgSurfaceDesignRef
+/// \ingroup PkgFieldAlignedParameterizationRef
 /// Detects the singularities of a stripe function: for every face, the winding number of alpha
 /// around it, (1 / 2 pi) times the sum over its edges of the difference of alpha wrapped to
 /// [-pi, pi), written to `face_indices` (face -> int). This recovers the prescribed indices
-/// wherever the mesh resolves the stripes (|dalpha| < pi on the face's edges).
+/// wherever the mesh resolves the stripes (|dalpha| < pi on the face's edges). Since each wrapped
+/// difference lies in [-pi, pi), a triangle can show at most |index| 1: a singularity of index
+/// 2 or more appears spread over neighbouring faces (dalpha itself carries it exactly).
 /// \returns the number of faces with a non-zero index
 template <class PolygonMesh, class VertexScalarMap, class FaceIndexMap>
 std::size_t stripe_singularities(const PolygonMesh& tm, const VertexScalarMap& alpha,
@@ -130,7 +132,7 @@ std::size_t stripe_singularities(const PolygonMesh& tm, const VertexScalarMap& a
   return count;
 }
 
-/// \ingroup PkgSurfaceDesignRef
+/// \ingroup PkgFieldAlignedParameterizationRef
 /// The singularities a 1-form asks for: for every face, the nearest integer to
 /// (1 / 2 pi) times the integral of the form around the face (its discrete curl), written to
 /// `face_indices`. `one_form` maps each edge `e` to the form's value along `halfedge(e, tm)`.
@@ -143,7 +145,8 @@ std::size_t one_form_singularities(const PolygonMesh& tm, const EdgeScalarMap& o
 {
   const double two_pi = 2. * std::acos(-1.);
   // Accumulate edge by edge: the orientation of an edge must come from edges(tm), because on a
-  // Surface_mesh halfedge(edge(h, tm), tm) is h itself whichever side h is on.
+  // Surface_mesh and a Polyhedron_3 alike halfedge(edge(h, tm), tm) is h itself, whichever side
+  // of the edge h is on.
   internal::Mesh_indices<PolygonMesh> idx(tm);
   std::vector<double> curl(idx.number_of_faces(), 0.);
   for(auto e : edges(tm))

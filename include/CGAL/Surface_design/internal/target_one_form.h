@@ -18,7 +18,7 @@
 namespace CGAL {
 namespace Surface_design {
 
-/// \ingroup PkgSurfaceDesignRef
+/// \ingroup PkgFieldAlignedParameterizationRef
 /// How the target 1-form omega is computed from a per-vertex field X. Both integrate X along each
 /// edge e = (i, j), X_i ruling the half of the edge next to i (paper, eq. 12):
 /// omega_ij = 1/2 (integral contribution of X_i + that of X_j).
@@ -29,8 +29,11 @@ enum class One_form_convention
   projected,
   /// The paper's convention (sec. 4.1, after Knöppel et al. 2015): angles around vertex i are
   /// rescaled by s_i = 2 pi / (angle sum at i) (s_i = 1 on the boundary) so that the vertex star
-  /// is flat; with theta_i the rescaled angle of X_i and phi_ij that of edge ij,
-  /// omega_ij = l_ij / 2 (|X_i| cos(theta_i - phi_ij) + |X_j| cos(theta_j - phi_ji)).
+  /// is flat; with theta_i the rescaled angle of X_i and phi_ij that of the edge leaving i towards
+  /// j, omega_ij = l_ij / 2 (|X_i| cos(theta_i - phi_ij) - |X_j| cos(theta_j - phi_ji)): X_j is
+  /// integrated along i -> j, i.e. against the direction phi_ji of the edge leaving j. (The paper's
+  /// eq. 12 prints "+"; with phi_ji read as the direction j -> i that sign would make the integral
+  /// of a constant planar field vanish, so the consistent sign is used.)
   /// A 3D vector is converted to a rescaled angle by locating it, after projection to the
   /// tangent plane, in the wedge of one corner and interpolating linearly inside that corner.
   angle_rescaled

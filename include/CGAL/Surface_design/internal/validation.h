@@ -26,8 +26,9 @@ struct Validation_options
   bool require_triangles = true; ///< reject faces that are not triangles
   bool reject_degenerate_faces = true; ///< reject (numerically) zero-area triangles
   /// A triangle is degenerate when twice its area is at most
-  /// `degenerate_tolerance * (longest edge)^2`, i.e. when the sine of its largest angle is about
-  /// that small: scale invariant. 1e-12 accepts slivers with angles down to ~1e-10 degrees.
+  /// `degenerate_tolerance * (longest edge)^2`. That ratio is sin(a) sin(b) / sin(c) for the
+  /// angles a, b and the largest angle c: about the sine of the smallest angle, scale invariant.
+  /// 1e-12 accepts slivers with angles down to about 1e-10 degrees.
   double degenerate_tolerance = 1e-12;
 };
 
