@@ -100,8 +100,8 @@ struct Mesh_snapshot
     // bitwise comparison of coordinates (NaN-safe): untouched means identical bits
     if(coordinates.size() != other.coordinates.size() || faces != other.faces)
       return false;
-    return std::memcmp(coordinates.data(), other.coordinates.data(),
-                       coordinates.size() * sizeof(double)) == 0;
+    return coordinates.empty() || std::memcmp(coordinates.data(), other.coordinates.data(),
+                                              coordinates.size() * sizeof(double)) == 0;
   }
 };
 

@@ -68,7 +68,11 @@ public:
   {
     m_factored = false;
     m_size = a.rows();
-    m_matrix = std::make_unique<Matrix>(std::size_t(a.rows()), std::size_t(a.cols()));
+    if(a.rows() != a.cols() || a.rows() == 0)
+      throw Linear_solver_failure("the " + m_name + " is not a non-empty square matrix (" +
+                                  std::to_string(a.rows()) + " x " + std::to_string(a.cols()) + ")");
+    // the square constructor: CGAL 5.5's rectangular one reads a member before initializing it
+    m_matrix = std::make_unique<Matrix>(int(a.rows()));
     if constexpr(std::is_base_of<CGAL::Eigen_sparse_matrix<double>, Matrix>::value)
     {
       m_matrix->eigen_object() = std::move(a);
