@@ -40,7 +40,7 @@ namespace internal {
 /// x wrapped into [-pi, pi).
 inline double wrap_angle(double x)
 {
-  const double pi = std::acos(-1.), two_pi = 2. * pi;
+  constexpr double pi = 3.14159265358979323846, two_pi = 2. * pi;
   const double w = x - two_pi * std::floor((x + pi) / two_pi);
   return w >= pi ? w - two_pi : w; // guard against rounding at the upper end
 }
@@ -134,6 +134,7 @@ public:
     m_omega.assign(m_idx.number_of_edges(), 0.);
     m_index.assign(m_idx.number_of_faces(), 0);
     m_winding.assign(number_of_loops(), std::nullopt);
+    build_solve_plans();
   }
 
   /// Same, with the mesh's internal vertex point map.
@@ -303,7 +304,9 @@ public:
     m_energy = energy_of(m_y);
 
     // alpha: integrate dalpha along the primal tree from each component's root (alpha = 0)
-    m_alpha = internal::integrate_along_tree(m_idx, m_topology.tree, m_y);
+    m_alpha.assign(m_idx.number_of_vertices(), 0.);
+    for(const Tree_step& step : m_tree_steps)
+      m_alpha[step.vertex] = m_alpha[step.parent] + step.edge.sign * m_y[step.edge.edge];
     for(double& a : m_alpha)
       a = internal::wrap_angle(a);
     m_solved = true;
@@ -539,32 +542,25 @@ private:
     return dirs;
   }
 
-  // y* with (d1 y*)_f = 2 pi k_f, generator integrals 2 pi h and boundary integrals 2 pi W;
-  // zero on the primal tree. O(|E|).
-  std::vector<double> particular_solution(const std::vector<int>& k, const std::vector<int>& windings) const
+  // Everything solve() walks over, flattened once into index arrays so that a re-solve is a few
+  // tight loops: the dual-tree peeling order (for y*) and the primal-tree order (for alpha).
+  void build_solve_plans()
   {
-    const double two_pi = 2. * std::acos(-1.);
     const internal::Tree_cotree& t = m_topology.tree;
-    const std::size_t nf = m_idx.number_of_faces(), G = number_of_generator_loops();
-    std::vector<double> y(m_idx.number_of_edges(), 0.);
-    for(std::size_t g = 0; g < G; ++g)
-      y[t.generator_edges[g]] = two_pi * windings[g]; // the loop runs along its generator edge
-    // peel the dual tree from its leaves; a virtual face runs along the border halfedges, i.e.
-    // against the boundary orientation: its curl is -2 pi W
+    const std::size_t nf = m_idx.number_of_faces();
+    auto signed_edge = [this](std::size_t h) {
+      const auto hd = m_idx.halfedge(h);
+      return Signed_edge{m_idx.edge_index(hd), double(m_idx.orientation_sign(hd))};
+    };
     for(auto it = t.dual_order.rbegin(); it != t.dual_order.rend(); ++it)
     {
-      const std::size_t node = *it;
-      const std::size_t parent_h = t.dual_parent_halfedge[node];
+      const std::size_t node = *it, parent_h = t.dual_parent_halfedge[node];
       if(parent_h == npos)
         continue; // a root: closes by consistency
-      const double target = node < nf ? two_pi * k[node] : -two_pi * windings[G + node - nf];
-      double others = 0.;
+      Peel_step step{node, signed_edge(parent_h), m_peel_others.size(), 0};
       auto add = [&](std::size_t h) {
         if(h != parent_h)
-        {
-          const auto hd = m_idx.halfedge(h);
-          others += m_idx.orientation_sign(hd) * y[m_idx.edge_index(hd)];
-        }
+          m_peel_others.push_back(signed_edge(h));
       };
       if(node < nf)
         for(auto h : halfedges_around_face(halfedge(m_idx.face(node), m_tm), m_tm))
@@ -572,8 +568,33 @@ private:
       else
         for(std::size_t h : m_topology.boundary.loops[node - nf])
           add(h);
-      const auto phd = m_idx.halfedge(parent_h);
-      y[m_idx.edge_index(phd)] = m_idx.orientation_sign(phd) * (target - others);
+      step.others_end = m_peel_others.size();
+      m_peel.push_back(step);
+    }
+    for(std::size_t v : t.vertex_order)
+      if(t.parent_halfedge[v] != npos)
+        m_tree_steps.push_back({v, m_idx.source_index(m_idx.halfedge(t.parent_halfedge[v])),
+                                signed_edge(t.parent_halfedge[v])});
+  }
+
+  // y* with (d1 y*)_f = 2 pi k_f, generator integrals 2 pi h and boundary integrals 2 pi W;
+  // zero on the primal tree. O(|E|): the dual tree is peeled from its leaves, each node fixing
+  // the edge to its parent; a virtual face runs along the border halfedges, i.e. against the
+  // boundary orientation, so its curl is -2 pi W.
+  std::vector<double> particular_solution(const std::vector<int>& k, const std::vector<int>& windings) const
+  {
+    constexpr double two_pi = 2. * 3.14159265358979323846;
+    const std::size_t nf = m_idx.number_of_faces(), G = number_of_generator_loops();
+    std::vector<double> y(m_idx.number_of_edges(), 0.);
+    for(std::size_t g = 0; g < G; ++g)
+      y[m_topology.tree.generator_edges[g]] = two_pi * windings[g]; // the loop runs along its edge
+    for(const Peel_step& step : m_peel)
+    {
+      const double target = step.node < nf ? two_pi * k[step.node] : -two_pi * windings[G + step.node - nf];
+      double others = 0.;
+      for(std::size_t i = step.others_begin; i < step.others_end; ++i)
+        others += m_peel_others[i].sign * y[m_peel_others[i].edge];
+      y[step.parent.edge] = step.parent.sign * (target - others);
     }
     return y;
   }
@@ -693,6 +714,26 @@ private:
   std::vector<double> m_omega;
   std::vector<int> m_index;
   std::vector<std::optional<int>> m_winding;
+
+  struct Signed_edge
+  {
+    std::size_t edge;
+    double sign;
+  };
+  struct Peel_step
+  {
+    std::size_t node;
+    Signed_edge parent;
+    std::size_t others_begin, others_end; // range in m_peel_others
+  };
+  struct Tree_step
+  {
+    std::size_t vertex, parent;
+    Signed_edge edge;
+  };
+  std::vector<Peel_step> m_peel;
+  std::vector<Signed_edge> m_peel_others;
+  std::vector<Tree_step> m_tree_steps;
 
   std::vector<Direction> m_xi_dirs;
   std::vector<std::vector<double>> m_xi;
