@@ -42,8 +42,17 @@ inline std::string format_number(const char* format, double value)
 /// Name of the synthetic phase holding the sum of a run's phases (added when a run has several).
 inline const std::string total_phase = "total";
 
-/// What a workload sees of the harness during one call: it wraps each phase in `phase()` and
-/// reports its untimed sanity checks through `check()`.
+/// Thrown by a workload that does not apply to a mesh (say, a method that needs positive cotangent
+/// weights): the harness reports "not applicable (reason)" for that workload, mesh and solver,
+/// which is not an error.
+class Not_applicable : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+/// What a workload sees of the harness during one call: it wraps each phase in `phase()`, may
+/// add derived phases with `sum_phase()`, and reports its untimed sanity checks through `check()`.
 class Run
 {
 public:
@@ -67,6 +76,23 @@ public:
     add_time(name, std::chrono::duration<double, std::milli>(stop - start).count());
   }
 
+  /// Records phase `name` as the sum of phases already timed in this run (say, "full" = factor +
+  /// field + solve): a number to report, not a measurement; it does not count in `total`.
+  /// \throws std::logic_error if one of `parts` has not run yet
+  void sum_phase(const std::string& name, const std::vector<std::string>& parts)
+  {
+    double ms = 0.;
+    for(const std::string& part : parts)
+    {
+      const auto it = std::find_if(m_times.begin(), m_times.end(),
+                                   [&part](const auto& t) { return t.first == part; });
+      if(it == m_times.end())
+        throw std::logic_error("sum_phase(\"" + name + "\"): phase \"" + part + "\" has not run");
+      ms += it->second;
+    }
+    m_sums.emplace_back(name, ms);
+  }
+
   /// True on exactly one call per (workload, mesh, solver): do the (untimed, possibly costly)
   /// sanity checks only then.
   bool checks_enabled() const { return m_checks_enabled; }
@@ -81,6 +107,8 @@ public:
 
   /// Phase names and times (ms) in the order the phases first ran.
   const std::vector<std::pair<std::string, double>>& phase_times() const { return m_times; }
+  /// The phases added by `sum_phase()`, in the order they were added.
+  const std::vector<std::pair<std::string, double>>& sum_phase_times() const { return m_sums; }
   const std::vector<Check>& checks() const { return m_checks; }
 
 private:
@@ -96,12 +124,13 @@ private:
   }
 
   bool m_checks_enabled;
-  std::vector<std::pair<std::string, double>> m_times;
+  std::vector<std::pair<std::string, double>> m_times, m_sums;
   std::vector<Check> m_checks;
 };
 
 /// A workload runs one algorithm once on `mesh` with the named solver, timing its phases via
-/// `run.phase()`. It may throw: the harness reports the error and goes on with the next contender.
+/// `run.phase()`. It may throw: the harness reports the error and goes on with the next contender
+/// (`Not_applicable` is reported as such, not as an error).
 using Workload_function = void (*)(const Mesh& mesh, const std::string& solver, Run& run);
 
 /// Whether a workload's time depends on the sparse solver.
@@ -118,18 +147,57 @@ struct Workload
   const char* description;
   Workload_function function;
   Solver_use solver_use = Solver_use::compared;
+  /// Another workload of the table that solves the same problem another way (a reference method),
+  /// or null. When both ran, every phase of this workload is compared with the phase of the same
+  /// name of the reference, on the same mesh with the same solver:
+  /// ratio = reference median / this workload's median.
+  const char* reference = nullptr;
 };
 
 // --- solvers
 
+/// A sparse solver the harness knows, whether or not this build has it.
+struct Solver_info
+{
+  const char* name;
+  const char* description;
+  bool available;      ///< compiled into this build
+  const char* missing; ///< why not, when it is not
+};
+
+/// Every solver the harness knows, in the order of `--solver all` (the first is the baseline).
+inline const std::vector<Solver_info>& known_solvers()
+{
+#if defined(CGAL_SURFACE_DESIGN_HAS_METIS)
+  constexpr bool has_metis = true;
+#else
+  constexpr bool has_metis = false;
+#endif
+#if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
+  constexpr bool has_cholmod = true;
+#else
+  constexpr bool has_cholmod = false;
+#endif
+  static const std::vector<Solver_info> table{
+    {"ldlt", "Default_solver_traits: Eigen SimplicialLDLT, AMD ordering", true, ""},
+    {"ldlt-metis", "Metis_ldlt_solver_traits: Eigen SimplicialLDLT, METIS nested dissection",
+     has_metis, "built without METIS: CGAL_SURFACE_DESIGN_HAS_METIS is not defined"},
+    {"cholmod", "Cholmod_solver_traits: CHOLMOD supernodal LLT on the loaded BLAS", has_cholmod,
+     "built without CHOLMOD: CGAL_SURFACE_DESIGN_HAS_CHOLMOD is not defined"},
+  };
+  return table;
+}
+
 /// Names of the solvers of this build, baseline first (comparisons divide by the first).
 inline const std::vector<std::string>& compiled_solvers()
 {
-#if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
-  static const std::vector<std::string> names{"ldlt", "cholmod"};
-#else
-  static const std::vector<std::string> names{"ldlt"};
-#endif
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for(const Solver_info& s : known_solvers())
+      if(s.available)
+        n.push_back(s.name);
+    return n;
+  }();
   return names;
 }
 
@@ -142,13 +210,18 @@ struct Solver_tag
 };
 
 /// Calls `f(Solver_tag<Traits>())` with the traits named `solver` ("ldlt": the library's
-/// `Default_solver_traits`, "cholmod": `Cholmod_solver_traits`).
+/// `Default_solver_traits`, "ldlt-metis": `Metis_ldlt_solver_traits`, "cholmod":
+/// `Cholmod_solver_traits`).
 /// \throws std::invalid_argument for a name that is not in `compiled_solvers()`.
 template <class F>
 void with_solver_traits(const std::string& solver, F&& f)
 {
   if(solver == "ldlt")
     f(Solver_tag<CGAL::Surface_design::Default_solver_traits>());
+#if defined(CGAL_SURFACE_DESIGN_HAS_METIS)
+  else if(solver == "ldlt-metis")
+    f(Solver_tag<CGAL::Surface_design::Metis_ldlt_solver_traits>());
+#endif
 #if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
   else if(solver == "cholmod")
     f(Solver_tag<CGAL::Surface_design::Cholmod_solver_traits>());
@@ -196,12 +269,27 @@ struct Check_result
   bool passed() const { return std::isfinite(value) && value < bound; }
 };
 
-/// Two contenders of the same (workload, mesh, phase): ratio = baseline median / contender median,
-/// so a ratio above 1 means the contender is faster.
+/// A workload that did not apply to a mesh with a solver (it threw `Not_applicable`).
+struct Not_applicable_result
+{
+  std::string workload, mesh, solver, reason;
+};
+
+/// Two contenders of the same mesh and phase: ratio = baseline median / contender median, so a
+/// ratio above 1 means the contender is faster. A contender is a (workload, solver) pair:
+/// - kind `solver`: the same workload with two solvers, the baseline being the first solver;
+/// - kind `reference`: a workload and its reference workload (`Workload::reference`, the
+///   baseline) with the same solver.
 struct Comparison
 {
-  std::string workload, mesh, phase, baseline, contender;
+  enum class Kind { solver, reference };
+
+  Kind kind = Kind::solver;
+  std::string mesh, phase;
+  std::string baseline_workload, baseline_solver, contender_workload, contender_solver;
   double baseline_ms = 0., contender_ms = 0., ratio = 0.;
+
+  const char* kind_name() const { return kind == Kind::solver ? "solver" : "reference"; }
 };
 
 struct Timing_settings
@@ -214,14 +302,16 @@ struct Measurement
 {
   std::vector<Phase_result> results;
   std::vector<Check_result> checks;
-  std::size_t failures = 0; ///< contenders that threw
+  std::vector<Not_applicable_result> not_applicable;
+  std::size_t failures = 0; ///< contenders that threw (other than `Not_applicable`)
 };
 
 /// Runs `workload` on `mesh` with every solver of `solvers` (or once with solver "none" if the
 /// workload uses none): `settings.warmup` warm-up calls, then `settings.runs` measured calls per
 /// solver. The solvers take turns call by call, so that a slow drift of the machine (frequency,
 /// other load) affects every contender alike. Checks are enabled on the first call of each solver.
-/// Progress, checks and errors go to `log`.
+/// A contender that throws is dropped (its earlier samples too). Progress, checks and errors go
+/// to `log`.
 inline Measurement measure(const Workload& workload, const Mesh& mesh, const std::string& mesh_name,
                            const std::vector<std::string>& solvers,
                            const Timing_settings& settings, std::ostream& log)
@@ -229,7 +319,7 @@ inline Measurement measure(const Workload& workload, const Mesh& mesh, const std
   struct Contender
   {
     std::string solver;
-    bool failed = false;
+    bool failed = false; // threw: an error, or not applicable
     std::vector<std::string> phases;              // in order of first appearance
     std::vector<std::vector<double>> samples;     // per phase, one time per measured run
   };
@@ -254,6 +344,13 @@ inline Measurement measure(const Workload& workload, const Mesh& mesh, const std
       {
         workload.function(mesh, c.solver, run);
       }
+      catch(const Not_applicable& e)
+      {
+        c.failed = true;
+        m.not_applicable.push_back(Not_applicable_result{workload.name, mesh_name, c.solver, e.what()});
+        log << "  not applicable with " << c.solver << ": " << e.what() << std::endl;
+        continue;
+      }
       catch(const std::exception& e)
       {
         c.failed = true;
@@ -272,12 +369,15 @@ inline Measurement measure(const Workload& workload, const Mesh& mesh, const std
       }
       if(call < settings.warmup)
         continue;
+      // timed phases, then the sums the workload reported, then the total of the timed phases
       std::vector<std::pair<std::string, double>> times = run.phase_times();
-      if(times.size() > 1)
+      const std::size_t timed = times.size();
+      times.insert(times.end(), run.sum_phase_times().begin(), run.sum_phase_times().end());
+      if(timed > 1)
       {
         double total = 0.;
-        for(const auto& t : times)
-          total += t.second;
+        for(std::size_t i = 0; i < timed; ++i)
+          total += times[i].second;
         times.emplace_back(total_phase, total);
       }
       for(const auto& t : times)
@@ -308,8 +408,30 @@ inline Measurement measure(const Workload& workload, const Mesh& mesh, const std
   return m;
 }
 
-/// Pairs every contender with the baseline (the first solver that ran) of the same workload, mesh
-/// and phase.
+namespace harness_detail {
+
+inline Comparison make_comparison(Comparison::Kind kind, const Phase_result& baseline,
+                                  const Phase_result& contender)
+{
+  const double ratio = contender.time.median_ms > 0.
+                         ? baseline.time.median_ms / contender.time.median_ms
+                         : std::nan("");
+  return Comparison{kind,
+                    contender.mesh,
+                    contender.phase,
+                    baseline.workload,
+                    baseline.solver,
+                    contender.workload,
+                    contender.solver,
+                    baseline.time.median_ms,
+                    contender.time.median_ms,
+                    ratio};
+}
+
+} // namespace harness_detail
+
+/// Solver comparisons: pairs every contender with the baseline (the first solver that ran) of the
+/// same workload, mesh and phase.
 inline std::vector<Comparison> compare_contenders(const std::vector<Phase_result>& results)
 {
   std::vector<Comparison> comparisons;
@@ -328,15 +450,35 @@ inline std::vector<Comparison> compare_contenders(const std::vector<Phase_result
       const Phase_result& b = results[j];
       if(b.workload == contender.workload && b.mesh == contender.mesh &&
          b.solver == baseline_row->solver && b.phase == contender.phase)
-      {
-        const double ratio = contender.time.median_ms > 0.
-                               ? b.time.median_ms / contender.time.median_ms
-                               : std::nan("");
-        comparisons.push_back(Comparison{contender.workload, contender.mesh, contender.phase,
-                                         b.solver, contender.solver, b.time.median_ms,
-                                         contender.time.median_ms, ratio});
-      }
+        comparisons.push_back(
+          harness_detail::make_comparison(Comparison::Kind::solver, b, contender));
     }
+  }
+  return comparisons;
+}
+
+/// Reference comparisons: pairs every result of a workload that names a reference in `table`
+/// with the result of the reference workload of the same mesh, solver and phase, if it ran.
+/// Ordered like the workload's results (by mesh, solver, phase).
+inline std::vector<Comparison> compare_with_references(const std::vector<Phase_result>& results,
+                                                       const std::vector<Workload>& table)
+{
+  std::vector<Comparison> comparisons;
+  for(const Phase_result& contender : results)
+  {
+    const auto w = std::find_if(table.begin(), table.end(), [&contender](const Workload& x) {
+      return contender.workload == x.name;
+    });
+    if(w == table.end() || !w->reference)
+      continue;
+    const std::string reference = w->reference;
+    const auto b = std::find_if(results.begin(), results.end(), [&](const Phase_result& r) {
+      return r.workload == reference && r.mesh == contender.mesh &&
+             r.solver == contender.solver && r.phase == contender.phase;
+    });
+    if(b != results.end())
+      comparisons.push_back(
+        harness_detail::make_comparison(Comparison::Kind::reference, *b, contender));
   }
   return comparisons;
 }

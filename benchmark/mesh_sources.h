@@ -3,7 +3,8 @@
 //
 // Where the benchmark meshes come from: files bundled with the project (`bundled:NAME`), the larger
 // shared set (`shared:NAME`, optional, `.off.gz` read through `gzip -dc`), and generated spheres
-// and tori of a requested size (`sphere:F`, `torus:F`); plus named lists of sources (presets).
+// and tori of a requested size (`sphere:F`, `torus:F`, `storus:F`); plus named lists of sources
+// (presets).
 
 #ifndef CGAL_SURFACE_DESIGN_BENCHMARK_MESH_SOURCES_H
 #define CGAL_SURFACE_DESIGN_BENCHMARK_MESH_SOURCES_H
@@ -41,7 +42,7 @@
 
 namespace benchmark {
 
-enum class Mesh_origin { bundled, shared, sphere, torus };
+enum class Mesh_origin { bundled, shared, sphere, torus, staggered_torus };
 
 /// A parsed `--mesh` argument. Its text (`spec`) names the mesh in every report.
 struct Mesh_source
@@ -49,15 +50,16 @@ struct Mesh_source
   std::string spec;
   Mesh_origin origin = Mesh_origin::bundled;
   std::string file;      ///< bundled, shared: file name relative to the folder
-  std::size_t faces = 0; ///< sphere, torus: requested number of faces
+  std::size_t faces = 0; ///< sphere, torus, storus: requested number of faces
 };
 
-/// A named list of mesh sources (`--preset NAME`).
+/// A named list of mesh sources (`--preset NAME`), and the workloads it is meant for.
 struct Preset
 {
   const char* name;
   const char* description;
   std::vector<const char*> sources;
+  std::vector<const char*> workloads = {}; ///< run when no --workload is given; empty: all
 };
 
 inline const std::vector<Preset>& presets()
@@ -72,6 +74,18 @@ inline const std::vector<Preset>& presets()
       "shared:bunny_loop1_239k.off", "shared:bunny_loop2_955k.off.gz"}},
     {"tori", "scaling on genus-1 tori, ~8k to ~250k faces",
      {"torus:8000", "torus:63000", "torus:250000"}},
+    // the bunnies of the paper's timing table; they all have a few obtuse corners (non-positive
+    // cotangent weights), where the face-space reference does not apply: the staggered tori
+    // (every weight positive) give the side-by-side comparison at ~1k, 8k and 63k faces
+    {"paper", "the paper's stripe timings: bunnies 1k to 955k faces, and all-acute tori for the "
+              "face-space comparison",
+     {"bundled:bunny_1k.off", "bundled:bunny_8k.off", "shared:bunny_60k.off",
+      "shared:bunny_loop1_239k.off", "shared:bunny_loop2_955k.off.gz", "storus:1000",
+      "storus:8000", "storus:63000"},
+     {"stripes", "stripes_face_space"}},
+    {"storus", "scaling on all-acute staggered tori (every cotangent weight positive), ~1k to "
+               "~250k faces",
+     {"storus:1000", "storus:8000", "storus:63000", "storus:250000"}},
   };
   return table;
 }
@@ -98,8 +112,8 @@ inline bool parse_face_count(const std::string& text, std::size_t& count)
   return count > 0;
 }
 
-/// Parses `bundled:NAME`, `shared:NAME`, `sphere:F` or `torus:F`; on failure returns false and
-/// explains why in `error`.
+/// Parses `bundled:NAME`, `shared:NAME`, `sphere:F`, `torus:F` or `storus:F`; on failure returns
+/// false and explains why in `error`.
 inline bool parse_mesh_source(const std::string& spec, Mesh_source& source, std::string& error)
 {
   const std::size_t colon = spec.find(':');
@@ -118,9 +132,11 @@ inline bool parse_mesh_source(const std::string& spec, Mesh_source& source, std:
     }
     return true;
   }
-  if(kind == "sphere" || kind == "torus")
+  if(kind == "sphere" || kind == "torus" || kind == "storus")
   {
-    source.origin = kind == "sphere" ? Mesh_origin::sphere : Mesh_origin::torus;
+    source.origin = kind == "sphere"  ? Mesh_origin::sphere
+                    : kind == "torus" ? Mesh_origin::torus
+                                      : Mesh_origin::staggered_torus;
     if(!parse_face_count(argument, source.faces))
     {
       error = "mesh source \"" + spec + "\": the face count must be a positive integer "
@@ -129,7 +145,8 @@ inline bool parse_mesh_source(const std::string& spec, Mesh_source& source, std:
     }
     return true;
   }
-  error = "mesh source \"" + spec + "\" is not bundled:NAME, shared:NAME, sphere:F or torus:F";
+  error = "mesh source \"" + spec +
+          "\" is not bundled:NAME, shared:NAME, sphere:F, torus:F or storus:F";
   return false;
 }
 
@@ -216,6 +233,16 @@ inline Load_status load_mesh(const Mesh_source& source, Mesh& mesh, std::string&
       3, std::size_t(std::round(std::sqrt(double(source.faces) / 5.))));
     const std::size_t major_segments = std::size_t(std::round(2.5 * double(minor_segments)));
     CGAL::Surface_design::make_torus(mesh, major_segments, minor_segments);
+  }
+  else if(source.origin == Mesh_origin::staggered_torus)
+  {
+    // 2 * major * minor faces; staggered rings with R = 1, r = 0.3, an even minor count and
+    // major = 3.3 minor make nearly isosceles triangles whose angles are all acute: every
+    // cotangent weight is positive (about 0.35), at every size
+    const std::size_t minor_segments = std::max<std::size_t>(
+      4, 2 * std::size_t(std::round(std::sqrt(double(source.faces) / 6.6) / 2.)));
+    const std::size_t major_segments = std::size_t(std::round(3.3 * double(minor_segments)));
+    CGAL::Surface_design::make_torus(mesh, major_segments, minor_segments, 1., 0.3, true);
   }
   else
   {

@@ -103,18 +103,65 @@ inline void print_results(std::ostream& out, const std::vector<Phase_result>& re
   table.print(out);
 }
 
-inline void print_comparisons(std::ostream& out, const std::vector<Comparison>& comparisons)
+/// The comparisons of kind `solver`: each solver against the baseline solver, per workload.
+inline void print_solver_comparisons(std::ostream& out, const std::vector<Comparison>& comparisons)
 {
   Text_table table({"workload", "mesh", "phase", "baseline", "contender", "baseline ms",
                     "contender ms", "ratio"},
                    {false, false, false, false, false, true, true, true});
-  for(std::size_t i = 0; i < comparisons.size(); ++i)
+  const Comparison* previous = nullptr;
+  for(const Comparison& c : comparisons)
   {
-    const Comparison& c = comparisons[i];
-    if(i > 0 && (comparisons[i - 1].workload != c.workload || comparisons[i - 1].mesh != c.mesh))
+    if(c.kind != Comparison::Kind::solver)
+      continue;
+    if(previous && (previous->contender_workload != c.contender_workload || previous->mesh != c.mesh))
       table.add_separator();
-    table.add_row({c.workload, c.mesh, c.phase, c.baseline, c.contender, format_ms(c.baseline_ms),
-                   format_ms(c.contender_ms), format_number("%.2fx", c.ratio)});
+    table.add_row({c.contender_workload, c.mesh, c.phase, c.baseline_solver, c.contender_solver,
+                   format_ms(c.baseline_ms), format_ms(c.contender_ms),
+                   format_number("%.2fx", c.ratio)});
+    previous = &c;
+  }
+  table.print(out);
+}
+
+/// The comparisons of kind `reference`: each workload against its reference workload, per mesh
+/// and solver.
+inline void print_reference_comparisons(std::ostream& out,
+                                        const std::vector<Comparison>& comparisons)
+{
+  Text_table table({"workload", "reference", "mesh", "solver", "phase", "reference ms",
+                    "workload ms", "ratio"},
+                   {false, false, false, false, false, true, true, true});
+  const Comparison* previous = nullptr;
+  for(const Comparison& c : comparisons)
+  {
+    if(c.kind != Comparison::Kind::reference)
+      continue;
+    if(previous && (previous->contender_workload != c.contender_workload ||
+                    previous->mesh != c.mesh || previous->contender_solver != c.contender_solver))
+      table.add_separator();
+    table.add_row({c.contender_workload, c.baseline_workload, c.mesh, c.contender_solver, c.phase,
+                   format_ms(c.baseline_ms), format_ms(c.contender_ms),
+                   format_number("%.2fx", c.ratio)});
+    previous = &c;
+  }
+  table.print(out);
+}
+
+/// One line per (workload, mesh) that did not apply, with the solvers it was tried with.
+inline void print_not_applicable(std::ostream& out, const std::vector<Not_applicable_result>& rows)
+{
+  Text_table table({"workload", "mesh", "solvers", "reason"}, {false, false, false, false});
+  for(std::size_t i = 0; i < rows.size();)
+  {
+    std::string solvers = rows[i].solver;
+    std::size_t j = i + 1;
+    for(; j < rows.size() && rows[j].workload == rows[i].workload && rows[j].mesh == rows[i].mesh &&
+          rows[j].reason == rows[i].reason;
+        ++j)
+      solvers += "," + rows[j].solver;
+    table.add_row({rows[i].workload, rows[i].mesh, solvers, rows[i].reason});
+    i = j;
   }
   table.print(out);
 }
@@ -170,7 +217,8 @@ inline bool write_json(const std::string& path, const Machine_info& machine,
                        const Timing_settings& settings, const std::string& command_line,
                        const std::vector<Phase_result>& results,
                        const std::vector<Comparison>& comparisons,
-                       const std::vector<Check_result>& checks)
+                       const std::vector<Check_result>& checks,
+                       const std::vector<Not_applicable_result>& not_applicable)
 {
   std::ofstream out(path);
   if(!out)
@@ -209,9 +257,12 @@ inline bool write_json(const std::string& path, const Machine_info& machine,
   for(std::size_t i = 0; i < comparisons.size(); ++i)
   {
     const Comparison& c = comparisons[i];
-    out << (i ? "," : "") << "\n    {\"workload\": " << str(c.workload)
+    out << (i ? "," : "") << "\n    {\"kind\": " << str(c.kind_name())
         << ", \"mesh\": " << str(c.mesh) << ", \"phase\": " << str(c.phase)
-        << ", \"baseline\": " << str(c.baseline) << ", \"contender\": " << str(c.contender)
+        << ", \"baseline_workload\": " << str(c.baseline_workload)
+        << ", \"baseline_solver\": " << str(c.baseline_solver)
+        << ", \"contender_workload\": " << str(c.contender_workload)
+        << ", \"contender_solver\": " << str(c.contender_solver)
         << ", \"baseline_median_ms\": " << json_number(c.baseline_ms)
         << ", \"contender_median_ms\": " << json_number(c.contender_ms)
         << ", \"ratio\": " << json_number(c.ratio) << "}";
@@ -228,7 +279,17 @@ inline bool write_json(const std::string& path, const Machine_info& machine,
         << ", \"bound\": " << json_number(k.bound)
         << ", \"passed\": " << (k.passed() ? "true" : "false") << "}";
   }
-  out << (checks.empty() ? "]\n" : "\n  ]\n") << "}\n";
+  out << (checks.empty() ? "],\n" : "\n  ],\n");
+
+  out << "  \"not_applicable\": [";
+  for(std::size_t i = 0; i < not_applicable.size(); ++i)
+  {
+    const Not_applicable_result& n = not_applicable[i];
+    out << (i ? "," : "") << "\n    {\"workload\": " << str(n.workload)
+        << ", \"mesh\": " << str(n.mesh) << ", \"solver\": " << str(n.solver)
+        << ", \"reason\": " << str(n.reason) << "}";
+  }
+  out << (not_applicable.empty() ? "]\n" : "\n  ]\n") << "}\n";
   out.close();
   return bool(out);
 }

@@ -9,6 +9,7 @@
 #include "mesh_sources.h"
 #include "report.h"
 #include "workload_laplacian.h"
+#include "workload_stripes.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -21,12 +22,20 @@ namespace benchmark {
 
 /// The workload table. A new algorithm plugs in with one function
 /// `void f(const Mesh& mesh, const std::string& solver, Run& run)` (see workload_laplacian.h)
-/// and one line here.
+/// and one line here; a fifth field names a reference workload it is compared with.
 const std::vector<Workload>& workloads()
 {
   static const std::vector<Workload> table{
     {"laplacian", "cotangent Laplacian L + eps M; phases assemble, factor, solve",
      &laplacian_workload},
+    {"stripes",
+     "field-aligned stripes, vertex space (Field_aligned_parameterizer); phases factor, field, "
+     "solve, resolve, full = factor + field + solve",
+     &stripes_workload, Solver_use::compared, "stripes_face_space"},
+    {"stripes_face_space",
+     "the same stripes by the paper's face-space solver (positive cotangent weights only); "
+     "phases factor, field, solve, resolve, full",
+     &stripes_face_space_workload},
   };
   return table;
 }
@@ -59,10 +68,12 @@ const char* const usage =
   "                                 absent; env CGAL_SURFACE_DESIGN_SHARED_MESH_DIR overrides it)\n"
   "                   sphere:F      generated sphere of about F faces (F may end in k or M)\n"
   "                   torus:F       generated torus of about F faces\n"
+  "                   storus:F      generated all-acute (staggered) torus of about F faces\n"
   "                   (repeatable; default: preset quick)\n"
-  "  --preset NAME    a named list of meshes (repeatable; see --list)\n"
-  "  --solver S       ldlt, cholmod, a comma-separated list, or all (default: all); the first\n"
-  "                   is the baseline of the comparisons\n"
+  "  --preset NAME    a named list of meshes (repeatable; see --list); without --workload,\n"
+  "                   runs the workloads the preset is meant for\n"
+  "  --solver S       ldlt, ldlt-metis, cholmod, a comma-separated list, or all (default: all);\n"
+  "                   the first is the baseline of the comparisons\n"
   "  --warmup W       unmeasured runs first (default 1)\n"
   "  --runs R         measured runs (default 5)\n"
   "  --json FILE      where to write the results (default benchmark_results.json)\n"
@@ -72,22 +83,30 @@ void print_list(std::ostream& out)
 {
   out << "workloads:\n";
   for(const Workload& w : workloads())
-    out << "  " << w.name << "  " << w.description << '\n';
+  {
+    out << "  " << w.name << "  " << w.description;
+    if(w.reference)
+      out << "; compared with " << w.reference;
+    out << '\n';
+  }
   out << "presets:\n";
   for(const Preset& p : presets())
   {
     out << "  " << p.name << "  " << p.description << "\n     ";
     for(const char* s : p.sources)
       out << ' ' << s;
+    if(!p.workloads.empty())
+    {
+      out << "\n      workloads:";
+      for(const char* w : p.workloads)
+        out << ' ' << w;
+    }
     out << '\n';
   }
-  out << "solvers in this build:";
-  for(const std::string& s : compiled_solvers())
-    out << ' ' << s;
-#if !defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
-  out << "  (cholmod unavailable: built without CHOLMOD)";
-#endif
-  out << '\n';
+  out << "solvers:\n";
+  for(const Solver_info& s : known_solvers())
+    out << "  " << s.name << "  " << s.description
+        << (s.available ? "" : std::string("  (unavailable: ") + s.missing + ")") << '\n';
 }
 
 bool parse_count(const std::string& text, int lowest, int& value)
@@ -98,13 +117,15 @@ bool parse_count(const std::string& text, int lowest, int& value)
   return value >= lowest;
 }
 
-/// Fills `solvers` from the value of --solver; cholmod without CHOLMOD is reported and dropped.
+/// Fills `solvers` from the value of --solver; a known solver missing from this build is
+/// reported and dropped.
 bool parse_solvers(const std::string& text, std::vector<std::string>& solvers, std::string& error)
 {
   solvers.clear();
   std::vector<std::string> requested;
   if(text == "all")
-    requested = {"ldlt", "cholmod"};
+    for(const Solver_info& s : known_solvers())
+      requested.push_back(s.name);
   else
     for(std::size_t start = 0; start <= text.size();)
     {
@@ -112,17 +133,21 @@ bool parse_solvers(const std::string& text, std::vector<std::string>& solvers, s
       requested.push_back(text.substr(start, comma - start));
       start = comma + 1;
     }
+  const std::vector<Solver_info>& known = known_solvers();
   for(const std::string& s : requested)
   {
-    if(s != "ldlt" && s != "cholmod")
+    const auto info = std::find_if(known.begin(), known.end(),
+                                   [&s](const Solver_info& k) { return s == k.name; });
+    if(info == known.end())
     {
-      error = "unknown solver \"" + s + "\" (expected ldlt, cholmod or all)";
+      error = "unknown solver \"" + s + "\" (expected";
+      for(const Solver_info& k : known)
+        error += std::string(" ") + k.name + ",";
+      error += " a comma-separated list of them, or all)";
       return false;
     }
-    const auto& compiled = compiled_solvers();
-    if(std::find(compiled.begin(), compiled.end(), s) == compiled.end())
-      std::cout << "solver " << s << ": unavailable (this build has no CHOLMOD: "
-                << "CGAL_SURFACE_DESIGN_HAS_CHOLMOD is not defined)\n";
+    if(!info->available)
+      std::cout << "solver " << s << ": unavailable (" << info->missing << ")\n";
     else if(std::find(solvers.begin(), solvers.end(), s) == solvers.end())
       solvers.push_back(s);
   }
@@ -142,6 +167,8 @@ int parse_options(int argc, char** argv, Options& options)
     return 2;
   };
   bool solver_given = false;
+  bool preset_given = false, preset_wants_all = false; // workloads implied by the presets
+  std::vector<const Workload*> preset_workloads;
   for(int i = 1; i < argc; ++i)
   {
     static const std::vector<std::string> value_options{
@@ -203,6 +230,15 @@ int parse_options(int argc, char** argv, Options& options)
         parse_mesh_source(spec, source, error);
         options.meshes.push_back(source);
       }
+      preset_given = true;
+      preset_wants_all = preset_wants_all || p->workloads.empty();
+      for(const char* name : p->workloads)
+      {
+        const Workload* w = find_workload(name);
+        if(w && std::find(preset_workloads.begin(), preset_workloads.end(), w) ==
+                  preset_workloads.end())
+          preset_workloads.push_back(w);
+      }
     }
     else if(option == "--solver")
     {
@@ -228,6 +264,8 @@ int parse_options(int argc, char** argv, Options& options)
     }
   }
 
+  if(options.workloads.empty() && preset_given && !preset_wants_all)
+    options.workloads = preset_workloads;
   if(options.workloads.empty())
     for(const Workload& w : workloads())
       options.workloads.push_back(&w);
@@ -265,6 +303,7 @@ int run_benchmark(int argc, char** argv)
   int exit_code = 0;
   std::vector<Phase_result> results;
   std::vector<Check_result> checks;
+  std::vector<Not_applicable_result> not_applicable;
   for(const Mesh_source& source : options.meshes)
   {
     Mesh mesh;
@@ -291,22 +330,37 @@ int run_benchmark(int argc, char** argv)
       Measurement m = measure(*w, mesh, source.spec, options.solvers, options.timing, std::cout);
       results.insert(results.end(), m.results.begin(), m.results.end());
       checks.insert(checks.end(), m.checks.begin(), m.checks.end());
+      not_applicable.insert(not_applicable.end(), m.not_applicable.begin(), m.not_applicable.end());
       if(m.failures > 0)
         exit_code = 1;
     }
   }
 
   const Machine_info machine = machine_info();
-  const std::vector<Comparison> comparisons = compare_contenders(results);
+  std::vector<Comparison> comparisons = compare_contenders(results);
+  const std::vector<Comparison> with_references = compare_with_references(results, workloads());
+  comparisons.insert(comparisons.end(), with_references.begin(), with_references.end());
+  const bool solver_comparisons = with_references.size() < comparisons.size();
   std::cout << '\n';
   print_machine(std::cout, machine);
   std::cout << '\n';
   print_results(std::cout, results);
-  if(!comparisons.empty())
+  if(!not_applicable.empty())
   {
-    std::cout << "\nratio = baseline median / contender median"
+    std::cout << "\nnot applicable:\n";
+    print_not_applicable(std::cout, not_applicable);
+  }
+  if(solver_comparisons)
+  {
+    std::cout << "\nsolvers: ratio = baseline median / contender median"
               << " (above 1: the contender is faster)\n";
-    print_comparisons(std::cout, comparisons);
+    print_solver_comparisons(std::cout, comparisons);
+  }
+  if(!with_references.empty())
+  {
+    std::cout << "\nreference workloads: ratio = reference median / workload median"
+              << " (above 1: the workload is faster)\n";
+    print_reference_comparisons(std::cout, comparisons);
   }
   const std::size_t failed_checks = std::size_t(
     std::count_if(checks.begin(), checks.end(), [](const Check_result& k) { return !k.passed(); }));
@@ -314,7 +368,8 @@ int run_benchmark(int argc, char** argv)
     std::cout << "\nWARNING: " << failed_checks << " of " << checks.size()
               << " sanity checks failed (see above)\n";
 
-  if(write_json(options.json, machine, options.timing, command_line, results, comparisons, checks))
+  if(write_json(options.json, machine, options.timing, command_line, results, comparisons, checks,
+                not_applicable))
     std::cout << "\nresults written to " << options.json << std::endl;
   else
   {
