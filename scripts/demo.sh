@@ -11,7 +11,7 @@ configure_and_build "$BUILD" -DCMAKE_BUILD_TYPE=Release -- stripes
 
 mkdir -p "$ROOT/out"
 "$BUILD/examples/stripes" "$ROOT/data/bunny_8k.off" \
-  --field axis:0,1,0 --scale 6 \
+  --field axis:0,1,0 --scale 2 \
   --singularity 1598:1 --singularity 308:-1 --singularity 934:1 --singularity 1184:-1 \
   --output "$ROOT/out/bunny_stripes.ply" --picture "$ROOT/out/bunny_stripes.png"
 echo "== Demo outputs: $ROOT/out/bunny_stripes.ply, $ROOT/out/bunny_stripes.png"
