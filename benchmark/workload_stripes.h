@@ -154,7 +154,7 @@ void check_solution(const Fap& fap, const std::string& when, Run& run)
   const auto& idx = fap.indices();
   const std::vector<double>& y = fap.one_form();
   const std::vector<double>& omega = fap.target_one_form();
-  const std::vector<double>& w = fap.cotangent_weights();
+  const std::vector<double>& w = fap.edge_weights();
   const Eigen::Index ne = Eigen::Index(y.size());
   Eigen::VectorXd weighted(ne), y_vector(ne);
   double scale = 0.;
@@ -239,7 +239,7 @@ void run_stripes_face_space(const Mesh& mesh, Run& run)
 
   std::optional<SDI::Face_space_stripe_solver<SolverTraits>> face_space;
   run.phase("factor", [&] {
-    face_space.emplace(fap.indices(), fap.topology(), fap.cotangent_weights(), loops);
+    face_space.emplace(fap.indices(), fap.topology(), fap.edge_weights(), loops);
   });
   // the same computation of omega as in `stripes`, so that `full` sums the same steps
   const Field_map field = direction_field();

@@ -91,7 +91,7 @@ double smallest_weight(const F& fap, std::size_t f)
   const auto& idx = fap.indices();
   double w = std::numeric_limits<double>::max();
   for(auto h : halfedges_around_face(halfedge(idx.face(f), fap.mesh()), fap.mesh()))
-    w = (std::min)(w, fap.cotangent_weights()[idx.edge_index(h)]);
+    w = (std::min)(w, fap.edge_weights()[idx.edge_index(h)]);
   return w;
 }
 
@@ -147,7 +147,7 @@ void check_optimality(const F& fap)
   const auto& tm = fap.mesh();
   const std::vector<double>& y = fap.one_form();
   const std::vector<double>& omega = fap.target_one_form();
-  const std::vector<double>& w = fap.cotangent_weights();
+  const std::vector<double>& w = fap.edge_weights();
 
   // KKT: d0^T W (y - omega) = 0 at every vertex (free directions of the feasible set)
   const SDI::Sparse_matrix d0 = SDI::d0(idx);
@@ -327,7 +327,7 @@ TEMPLATE_TEST_CASE("Vertex-space and face-space solvers agree when all weights a
     INFO(name);
     const TestType mesh = make_case<TestType>(name);
     Fap<TestType, SD::Default_solver_traits> fap(mesh);
-    const auto& w = fap.cotangent_weights();
+    const auto& w = fap.edge_weights();
     REQUIRE(*std::min_element(w.begin(), w.end()) > 0.); // the premise of the face-space method
     fap.set_field(axis_field(mesh), resolved_frequency(mesh));
     fap.set_index(std::size_t(37), 1);
@@ -353,7 +353,7 @@ TEMPLATE_TEST_CASE("Negative cotangent weights: the face-space method fails, our
     INFO(name);
     const TestType mesh = make_case<TestType>(name);
     Fap<TestType, SD::Default_solver_traits> fap(mesh);
-    const auto& w = fap.cotangent_weights();
+    const auto& w = fap.edge_weights();
     REQUIRE(*std::min_element(w.begin(), w.end()) < 0.);
     CHECK_THROWS_AS((SDI::Face_space_stripe_solver<SD::Default_solver_traits>(
                       fap.indices(), fap.topology(), w, fap.loops_as_indices())),

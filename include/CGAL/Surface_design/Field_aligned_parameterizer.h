@@ -35,17 +35,13 @@
 namespace CGAL {
 namespace Surface_design {
 
-namespace internal {
-
-/// x wrapped into [-pi, pi).
-inline double wrap_angle(double x)
+/// \ingroup PkgFieldAlignedParameterizationRef
+/// The edge weights w_e of the least-squares energy.
+enum class Edge_weighting
 {
-  constexpr double pi = 3.14159265358979323846, two_pi = 2. * pi;
-  const double w = x - two_pi * std::floor((x + pi) / two_pi);
-  return w >= pi ? w - two_pi : w; // guard against rounding at the upper end
-}
-
-} // namespace internal
+  cotangent, ///< w_e = (cot a + cot b) / 2, the paper's (and the Dirichlet energy's) weights
+  uniform    ///< w_e = 1: the plain l2 norm of the 1-form (used by trivial connections)
+};
 
 /// \ingroup PkgFieldAlignedParameterizationRef
 ///
@@ -56,7 +52,7 @@ inline double wrap_angle(double x)
 /// non-contractible loops of the surface (Noma & Kawahara).
 ///
 /// **The problem** (paper, eq. 15-16). Unknown: a 1-form y = dalpha on the edges.
-/// Minimize sum_e w_e (y_e - omega_e)^2, w_e the cotangent weights, subject to
+/// Minimize sum_e w_e (y_e - omega_e)^2, w_e the cotangent weights (or 1: Edge_weighting), subject to
 /// - (d1 y)_f = 2 pi k_f on every face (k_f = prescribed index, 0 almost everywhere),
 /// - the integral of y along each homology generator loop = 2 pi h (its winding), and along each
 ///   boundary loop (oriented with the surface on its left) = 2 pi W (its winding).
@@ -102,17 +98,19 @@ public:
   using edge_descriptor = typename GT::edge_descriptor;
   using face_descriptor = typename GT::face_descriptor;
 
-  /// Validates the mesh, computes the cotangent weights and the topology, and factors the
-  /// Laplacian. The mesh must not change while this object is used.
+  /// Validates the mesh, computes the edge weights (cotangent by default) and the topology, and
+  /// factors the Laplacian. The mesh must not change while this object is used.
   /// \throws Invalid_mesh (empty, non-triangle, non-manifold, degenerate face, non-finite point)
   /// \throws Linear_solver_failure if the factorization fails
   Field_aligned_parameterizer(const TriangleMesh& tm, VertexPointMap vpm,
-                              SolverTraits solver = SolverTraits())
+                              SolverTraits solver = SolverTraits(),
+                              Edge_weighting weighting = Edge_weighting::cotangent)
     : m_tm(tm), m_vpm(vpm), m_idx(tm), m_system(std::move(solver), "pinned cotangent Laplacian")
   {
     internal::validate_mesh(m_idx, m_vpm);
     m_topology = internal::compute_topology(m_idx);
-    m_weight = internal::cotangent_weights(m_idx, m_vpm);
+    m_weight = weighting == Edge_weighting::cotangent ? internal::cotangent_weights(m_idx, m_vpm)
+                                                      : std::vector<double>(m_idx.number_of_edges(), 1.);
     m_d0 = internal::d0(m_idx);
     m_d0t_w = Sparse_matrix(m_d0.transpose()) * internal::diagonal_matrix(m_weight);
 
@@ -390,13 +388,21 @@ public:
 
   /// \name Access for tests, examples and benchmarks
   /// @{
-  const std::vector<double>& cotangent_weights() const { return m_weight; } ///< per edge index
+  const std::vector<double>& edge_weights() const { return m_weight; } ///< per edge index
   const internal::Mesh_indices<TriangleMesh>& indices() const { return m_idx; }
   const internal::Topology& topology() const { return m_topology; }
   /// dalpha per edge index, oriented from the smaller to the larger vertex index
   const std::vector<double>& one_form() const { require_solved(); return m_y; }
   /// omega per edge index, same orientation
   const std::vector<double>& target_one_form() const { return m_omega; }
+  /// Sets omega per edge index, same orientation. \throws Invalid_constraints on a size mismatch
+  void set_target_one_form_by_edge_index(std::vector<double> omega)
+  {
+    if(omega.size() != m_idx.number_of_edges())
+      throw Invalid_constraints("the target 1-form has " + std::to_string(omega.size()) +
+                                " values but the mesh has " + std::to_string(m_idx.number_of_edges()) + " edges");
+    m_omega = std::move(omega);
+  }
   const std::vector<int>& indices_per_face() const { return m_index; }
   /// every loop as halfedge indices, oriented as its winding is measured
   std::vector<std::vector<std::size_t>> loops_as_indices() const

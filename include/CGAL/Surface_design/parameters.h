@@ -19,6 +19,11 @@ enum one_form_convention_t { one_form_convention };
 enum edge_dalpha_map_t { edge_dalpha_map };
 enum edge_omega_map_t { edge_omega_map };
 enum corner_coordinate_map_t { corner_coordinate_map };
+enum symmetry_order_t { symmetry_order };
+enum curvature_alignment_weight_t { curvature_alignment_weight };
+enum field_boundary_condition_t { field_boundary_condition };
+enum normalize_field_t { normalize_field };
+enum eigen_tolerance_t { eigen_tolerance };
 } // namespace internal_np
 
 /// \ingroup PkgSurfaceDesignRef
@@ -51,6 +56,11 @@ CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(one_form_convention)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(edge_dalpha_map)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(edge_omega_map)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(corner_coordinate_map)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(symmetry_order)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(curvature_alignment_weight)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(field_boundary_condition)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(normalize_field)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(eigen_tolerance)
 
 #undef CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER
 

@@ -94,6 +94,14 @@ std::vector<double> edge_lengths(const Indices& idx, const VertexPointMap& vpm)
   return length;
 }
 
+/// x wrapped into [-pi, pi).
+inline double wrap_angle(double x)
+{
+  constexpr double pi = 3.14159265358979323846, two_pi = 2. * pi;
+  const double w = x - two_pi * std::floor((x + pi) / two_pi);
+  return w >= pi ? w - two_pi : w; // guard against rounding at the upper end
+}
+
 /// Interior angle of every corner (per halfedge: the angle of face(h) at target(h); 0 on border
 /// halfedges), computed as atan2(|u x v|, u . v), accurate for all angles in [0, pi].
 template <class Indices, class VertexPointMap>

@@ -8,6 +8,7 @@
 
 #include <CGAL/Surface_design/internal/geometry.h>
 #include <CGAL/Surface_design/internal/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/vertex_frames.h>
 
 #include <Eigen/Core>
 
@@ -87,91 +88,17 @@ std::vector<double> angle_rescaled_one_form(const Indices& idx, const VertexPoin
                                             const std::vector<Eigen::Vector3d>& x)
 {
   const auto& tm = idx.mesh();
-  const double two_pi = 2. * std::acos(-1.);
-  const std::vector<double> corner = corner_angles(idx, vpm);
-  const std::vector<Eigen::Vector3d> normal = vertex_normals(idx, vpm);
+  const Vertex_frames frames = vertex_frames(idx, vpm, corner_angles(idx, vpm));
   // projection of X_i on edge ij in the rescaled star of i: |X_i| cos(theta_i - phi_ij), stored
   // per outgoing halfedge
+  std::vector<double> theta(x.size());
+  for(std::size_t v = 0; v < x.size(); ++v)
+    theta[v] = frames.to_angle(v, x[v]);
   std::vector<double> along(idx.number_of_halfedges(), 0.);
-
-  for(std::size_t v = 0; v < idx.number_of_vertices(); ++v)
+  for(std::size_t h = 0; h < along.size(); ++h)
   {
-    const auto vd = idx.vertex(v);
-    // outgoing halfedges in counter-clockwise order, starting after the boundary gap if any
-    auto start = opposite(halfedge(vd, tm), tm); // an outgoing halfedge
-    for(auto h : halfedges_around_source(vd, tm))
-      if(idx.is_border(opposite(h, tm)))
-        start = h;
-    std::vector<std::size_t> out;
-    std::vector<double> wedge; // corner angle between out[k] and out[k+1]; -1 for the gap
-    auto h = start;
-    do
-    {
-      out.push_back(idx.index(h));
-      wedge.push_back(idx.is_border(h) ? -1. : corner[idx.index(prev(h, tm))]);
-      h = opposite(prev(h, tm), tm);
-    } while(h != start);
-
-    const bool border = wedge.back() < 0.;
-    double angle_sum = 0.;
-    for(double w : wedge)
-      angle_sum += (std::max)(w, 0.);
-    const double s = border ? 1. : two_pi / angle_sum;
-
-    // rescaled angle of every outgoing edge, from the first one
-    std::vector<double> phi(out.size(), 0.);
-    for(std::size_t k = 1; k < out.size(); ++k)
-      phi[k] = phi[k - 1] + s * wedge[k - 1];
-    const double gap = border ? two_pi - s * angle_sum : 0.; // the boundary gap takes the rest
-
-    const double magnitude = x[v].norm();
-    if(magnitude == 0.)
-      continue;
-    // tangent-plane polar angles of the edges and of X, measured from the first edge
-    const Eigen::Vector3d n = normal[v];
-    auto planar = [&](const Eigen::Vector3d& d) { return Eigen::Vector3d(d - d.dot(n) * n); };
-    const Eigen::Vector3d p = position(vpm, vd);
-    const Eigen::Vector3d e0 = planar(position(vpm, target(idx.halfedge(out[0]), tm)) - p).normalized();
-    const Eigen::Vector3d e1 = n.cross(e0);
-    auto polar = [&](const Eigen::Vector3d& d) {
-      double a = std::atan2(d.dot(e1), d.dot(e0));
-      return a < 0. ? a + two_pi : a;
-    };
-    std::vector<double> psi(out.size() + 1);
-    for(std::size_t k = 0; k < out.size(); ++k)
-      psi[k] = k == 0 ? 0. : polar(planar(position(vpm, target(idx.halfedge(out[k]), tm)) - p));
-    psi[out.size()] = two_pi;
-    const double psi_x = polar(x[v]);
-    // locate X in a wedge [psi_k, psi_k+1] and interpolate the rescaled angle there; if the
-    // projected star is not monotone (strongly folded vertex), fall back to the nearest edge
-    double theta = 0.;
-    bool located = false;
-    for(std::size_t k = 0; k < out.size() && !located; ++k)
-    {
-      const double a = psi[k], b = psi[k + 1];
-      if(b > a && psi_x >= a && psi_x <= b)
-      {
-        const double span = (k + 1 < out.size() || !border) ? s * (std::max)(wedge[k], 0.) : gap;
-        theta = phi[k] + (psi_x - a) / (b - a) * span;
-        located = true;
-      }
-    }
-    if(!located)
-    {
-      double best = two_pi;
-      for(std::size_t k = 0; k < out.size(); ++k)
-      {
-        double d = std::abs(psi_x - psi[k]);
-        d = (std::min)(d, two_pi - d);
-        if(d < best)
-        {
-          best = d;
-          theta = phi[k];
-        }
-      }
-    }
-    for(std::size_t k = 0; k < out.size(); ++k)
-      along[out[k]] = magnitude * std::cos(theta - phi[k]);
+    const std::size_t v = idx.source_index(idx.halfedge(h));
+    along[h] = x[v].norm() * std::cos(theta[v] - frames.angle[h]);
   }
 
   const std::vector<double> length = edge_lengths(idx, vpm);

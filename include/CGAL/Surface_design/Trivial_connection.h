@@ -1,0 +1,277 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Vertex-based direction fields with prescribed singularities from a trivial connection
+// (Crane, Desbrun & Schröder 2010), adapted to fields that live on vertices with singularities in
+// faces, and solved with the machinery of the stripe parameterization.
+
+#ifndef CGAL_SURFACE_DESIGN_TRIVIAL_CONNECTION_H
+#define CGAL_SURFACE_DESIGN_TRIVIAL_CONNECTION_H
+
+#include <CGAL/Surface_design/direction_fields.h>
+#include <CGAL/Surface_design/Field_aligned_parameterizer.h>
+
+#include <cmath>
+#include <cstddef>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_design {
+
+/// \ingroup PkgDirectionFieldsRef
+///
+/// A vertex-based n-direction field whose singularities are exactly at prescribed faces, with
+/// prescribed indices (multiples of 1/n), and that is parallel everywhere else for a connection
+/// as close as possible to the Levi-Civita connection (Crane et al. 2010, "Trivial connections on
+/// discrete surfaces").
+///
+/// **The problem.** The Levi-Civita transport rotates an n-direction by n rho_e along edge e
+/// (angles in the rescaled vertex frames, see `smoothest_direction_field()`). Find per-edge
+/// adjustments x_e of least l2 norm such that the adjusted transport n rho_e + x_e has holonomy
+/// 2 pi k_f around every face f (k_f / n its prescribed index), a multiple of 2 pi around every
+/// homology generator and every boundary loop; then transporting one direction from a root
+/// vertex along a spanning tree gives a field that is parallel for the adjusted connection,
+/// whose index in every face is exactly k_f / n (as long as every |x_e| < pi: see
+/// `largest_adjustment()`).
+///
+/// **How it is solved.** With omega_e = n rho_e (wrapped into [-pi, pi)) and y = omega + x, the
+/// constraints read (d1 y)_f = 2 pi (k_f + m_f) with the integers m_f = ((d1 omega)_f - n K_f) / 2 pi,
+/// and integer windings of y along the loops: exactly the stripe problem of
+/// `Field_aligned_parameterizer` with target omega, face indices k + m and uniform edge weights.
+/// The pinned graph Laplacian is factored once; changing the singularities and solving again
+/// costs O(|E|) plus one back-substitution. The loop holonomies are chosen like the stripe
+/// windings: the integers of least adjustment norm (relaxed optimum, then best rounding).
+///
+/// **Consistency.** On a closed component the indices must sum to its Euler characteristic
+/// (Poincaré-Hopf); on a component with boundary any sum is allowed (the boundary holonomies
+/// absorb it). A face holds an index of at most 1/n in magnitude: along each of its three edges
+/// a vertex-based field turns by less than pi relative to the transport.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+/// \tparam VertexPointMap a readable property map from vertices to `Point_3`
+/// \tparam SolverTraits a model of `SparseLinearAlgebraWithFactorTraits_d` (own object per instance)
+template <class TriangleMesh,
+          class VertexPointMap = typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type,
+          class SolverTraits = Default_solver_traits>
+class Trivial_connection
+{
+  using Parameterizer = Field_aligned_parameterizer<TriangleMesh, VertexPointMap, SolverTraits>;
+  using GT = boost::graph_traits<TriangleMesh>;
+
+public:
+  using vertex_descriptor = typename GT::vertex_descriptor;
+  using face_descriptor = typename GT::face_descriptor;
+
+  /// Validates the mesh, computes the connection and factors the graph Laplacian.
+  /// \throws Invalid_mesh on bad input, Invalid_constraints if n < 1, Linear_solver_failure
+  Trivial_connection(const TriangleMesh& tm, VertexPointMap vpm, int symmetry_order = 1,
+                     SolverTraits solver = SolverTraits())
+    : m_n((internal::check_symmetry_order(symmetry_order), symmetry_order)),
+      m_solver(tm, vpm, std::move(solver), Edge_weighting::uniform),
+      m_connection(internal::levi_civita_connection(m_solver.indices(), vpm))
+  {
+    const auto& idx = m_solver.indices();
+    const double two_pi = 2. * std::acos(-1.);
+    std::vector<double> omega(idx.number_of_edges());
+    for(std::size_t e = 0; e < omega.size(); ++e)
+      omega[e] = internal::wrap_angle(m_n * m_connection.rho[e]);
+    // m_f = ((d1 omega)_f - n K_f) / 2 pi: an integer, since the transport angles sum to K_f mod 2 pi
+    m_offset.resize(idx.number_of_faces());
+    for(std::size_t f = 0; f < m_offset.size(); ++f)
+    {
+      double curl = -m_n * m_connection.curvature[f];
+      for(auto h : halfedges_around_face(halfedge(idx.face(f), tm), tm))
+        curl += idx.orientation_sign(h) * omega[idx.edge_index(h)];
+      m_offset[f] = int(std::lround(curl / two_pi));
+    }
+    m_solver.set_target_one_form_by_edge_index(std::move(omega));
+    m_index.assign(idx.number_of_faces(), 0);
+  }
+
+  /// Same, with the mesh's internal vertex point map.
+  explicit Trivial_connection(const TriangleMesh& tm, int symmetry_order = 1)
+    : Trivial_connection(tm, get(CGAL::vertex_point, tm), symmetry_order)
+  {}
+
+  int symmetry_order() const { return m_n; }
+
+  /// \name Singularities (indices in units of 1/n)
+  /// @{
+  /// Index numerator k of face `f`: its index is k / n.
+  int index(face_descriptor f) const { return m_index[checked_face(f)]; }
+  /// Prescribes the index k / n in face `f`.
+  void set_index(face_descriptor f, int k) { m_index[checked_face(f)] = k; }
+  /// Same, with the face given by its index (input order for meshes read from a file).
+  void set_index(std::size_t face_index, int k)
+  {
+    if(face_index >= m_index.size())
+      throw Invalid_constraints("face " + std::to_string(face_index) + " does not exist (the mesh has " +
+                                std::to_string(m_index.size()) + " faces)");
+    m_index[face_index] = k;
+  }
+  void clear_indices() { std::fill(m_index.begin(), m_index.end(), 0); }
+  /// Moves the singularity of face `from` to face `to` (adding its index to that of `to`).
+  void move_singularity(face_descriptor from, face_descriptor to)
+  {
+    const std::size_t a = checked_face(from), b = checked_face(to);
+    const int k = m_index[a];
+    m_index[a] = 0;
+    m_index[b] += k;
+  }
+  /// @}
+
+  /// Rotates the whole field by `angle` (radians, in the rescaled angles of the frames); the
+  /// field is otherwise determined up to this rotation per connected component.
+  void set_rotation(double angle) { m_rotation = angle; }
+
+  /// Computes the connection and the field. O(|E|) plus one back-substitution.
+  /// \throws Invalid_constraints if the indices of a closed component do not sum to its Euler
+  /// characteristic
+  void solve()
+  {
+    for(std::size_t f = 0; f < m_index.size(); ++f)
+      if(std::abs(m_index[f]) > 1)
+        throw Invalid_constraints(
+          "face " + std::to_string(f) + " has index " + index_text(m_index[f]) + ", but a triangle can hold at most " +
+          index_text(1) + " in magnitude: the field turns by less than pi along each of its three edges; "
+          "spread a larger index over several faces");
+    const auto& topo = m_solver.topology();
+    std::vector<long> sum(topo.components.size(), 0);
+    for(std::size_t f = 0; f < m_index.size(); ++f)
+      sum[topo.components.face_component[f]] += m_index[f];
+    for(std::size_t c = 0; c < sum.size(); ++c)
+    {
+      const auto& info = topo.components.info[c];
+      const long chi = info.euler_characteristic();
+      if(info.is_closed() && sum[c] != m_n * chi)
+      {
+        std::ostringstream s;
+        s << "on connected component " << c << " (" << info.faces << " faces, closed, Euler characteristic "
+          << chi << ") the singularity indices sum to " << index_text(sum[c])
+          << " but must sum to " << chi << " (Poincaré-Hopf)";
+        throw Invalid_constraints(s.str());
+      }
+    }
+    for(std::size_t f = 0; f < m_index.size(); ++f)
+      m_solver.set_index(f, m_index[f] + m_offset[f]);
+    m_solver.solve();
+    m_solved = true;
+  }
+
+  bool is_solved() const { return m_solved; }
+
+  /// Angle of the field at vertex `v` (one of its n directions) in the rescaled vertex frame.
+  double angle(vertex_descriptor v) const
+  {
+    require_solved();
+    return (m_solver.alpha(v) + m_rotation) / m_n;
+  }
+
+  /// Writes one of the field's n directions per vertex, as a unit tangent vector.
+  template <class VertexVectorMap>
+  void field(VertexVectorMap out) const
+  {
+    require_solved();
+    const auto& idx = m_solver.indices();
+    std::vector<double> a(idx.number_of_vertices());
+    for(std::size_t v = 0; v < a.size(); ++v)
+      a[v] = angle(idx.vertex(v));
+    internal::write_field(idx, m_connection.frames, a, {}, out);
+  }
+
+  /// The adjustment x_e of the n-fold transport per edge index (edge orientation: smaller to larger
+  /// vertex index); the rotation of a single direction is adjusted by x_e / n.
+  std::vector<double> adjustment() const
+  {
+    require_solved();
+    std::vector<double> x = m_solver.one_form();
+    const std::vector<double>& omega = m_solver.target_one_form();
+    for(std::size_t e = 0; e < x.size(); ++e)
+      x[e] -= omega[e];
+    return x;
+  }
+  /// max_e |x_e|. Below pi, every face has exactly its prescribed index; above, the field's
+  /// detected singularities may differ (singularities too close together for the mesh).
+  double largest_adjustment() const
+  {
+    double m = 0.;
+    for(double x : adjustment())
+      m = (std::max)(m, std::abs(x));
+    return m;
+  }
+  /// The least-squares norm sum_e x_e^2 that the solve minimized.
+  double adjustment_norm2() const
+  {
+    require_solved();
+    return m_solver.energy();
+  }
+
+  /// \name Access for tests and examples
+  /// @{
+  const internal::Mesh_indices<TriangleMesh>& indices() const { return m_solver.indices(); }
+  const internal::Discrete_connection& connection() const { return m_connection; }
+  const Parameterizer& parameterizer() const { return m_solver; }
+  /// @}
+
+private:
+  std::size_t checked_face(face_descriptor f) const
+  {
+    const auto& idx = m_solver.indices();
+    const std::size_t i = idx.index(f);
+    if(i >= idx.number_of_faces() || idx.face(i) != f)
+      throw Invalid_constraints("the face is not a face of this mesh");
+    return i;
+  }
+  void require_solved() const
+  {
+    if(!m_solved)
+      throw Invalid_constraints("solve() has not been called");
+  }
+  std::string index_text(long k) const
+  {
+    return m_n == 1 ? std::to_string(k) : std::to_string(k) + "/" + std::to_string(m_n);
+  }
+
+  int m_n;
+  Parameterizer m_solver;
+  internal::Discrete_connection m_connection;
+  std::vector<int> m_offset, m_index;
+  double m_rotation = 0.;
+  bool m_solved = false;
+};
+
+/// \ingroup PkgDirectionFieldsRef
+///
+/// One-call trivial connection: writes to `field` a unit vertex-based n-direction field (one of
+/// its n directions per vertex) whose singularities are exactly the faces f with
+/// `get(face_indices, f) != 0`, of index `get(face_indices, f) / n`. See `Trivial_connection`.
+/// \param np `vertex_point_map`, `sparse_linear_solver`, `symmetry_order` (n, default 1)
+/// \returns the largest adjustment (see `Trivial_connection::largest_adjustment()`)
+template <class TriangleMesh, class FaceIndexMap, class VertexVectorMap,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+double trivial_connection_field(const TriangleMesh& tm, const FaceIndexMap& face_indices, VertexVectorMap field,
+                                const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using Vpm = typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type;
+  using Solver = typename CGAL::internal_np::Lookup_named_param_def<
+    CGAL::internal_np::sparse_linear_solver_t, NamedParameters, Default_solver_traits>::type;
+  const Vpm vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                   get_const_property_map(CGAL::vertex_point, tm));
+  Trivial_connection<TriangleMesh, Vpm, Solver> tc(
+    tm, vpm, choose_parameter(get_parameter(np, internal_np::symmetry_order), 1),
+    choose_parameter<Solver>(get_parameter(np, CGAL::internal_np::sparse_linear_solver)));
+  for(auto f : faces(tm))
+    tc.set_index(f, int(get(face_indices, f)));
+  tc.solve();
+  tc.field(field);
+  return tc.largest_adjustment();
+}
+
+} // namespace Surface_design
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_DESIGN_TRIVIAL_CONNECTION_H

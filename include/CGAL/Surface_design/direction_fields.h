@@ -1,0 +1,449 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Smoothest vertex-based n-direction fields (Knöppel, Crane, Pinkall & Schröder 2013) and the
+// singularity index of a direction field in every face.
+
+#ifndef CGAL_SURFACE_DESIGN_DIRECTION_FIELDS_H
+#define CGAL_SURFACE_DESIGN_DIRECTION_FIELDS_H
+
+#include <CGAL/Surface_design/exceptions.h>
+#include <CGAL/Surface_design/internal/dec.h>
+#include <CGAL/Surface_design/internal/discrete_connection.h>
+#include <CGAL/Surface_design/internal/Factored_system.h>
+#include <CGAL/Surface_design/internal/geometry.h>
+#include <CGAL/Surface_design/internal/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/shift_invert_lanczos.h>
+#include <CGAL/Surface_design/internal/topology.h>
+#include <CGAL/Surface_design/internal/validation.h>
+#include <CGAL/Surface_design/parameters.h>
+#include <CGAL/Surface_design/solver_traits.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_design {
+
+/// \ingroup PkgDirectionFieldsRef
+/// What a smoothest direction field does at the boundary.
+enum class Direction_field_boundary
+{
+  free,    ///< no condition (natural boundary): the eigenproblem on the whole component
+  tangent, ///< one direction along the boundary (boundary oriented with the surface on its left)
+  normal   ///< one direction along the inward boundary normal
+};
+
+/// \ingroup PkgDirectionFieldsRef
+/// What `smoothest_direction_field()` computed.
+struct Smoothest_direction_field_info
+{
+  /// Per connected component: the smallest eigenvalue lambda of A u = lambda M u (the normalized
+  /// connection energy E(u) / <u, M u> of the returned field) for components solved as an
+  /// eigenproblem; NaN for components with a boundary condition or with curvature alignment,
+  /// which are solved as one linear system.
+  std::vector<double> eigenvalues;
+  /// Lanczos steps (back-substitutions), 0 when no eigenproblem was solved.
+  std::size_t iterations = 0;
+  /// False if the eigensolver stopped at the iteration limit before reaching the tolerance.
+  bool converged = true;
+};
+
+namespace internal {
+
+/// The connection Laplacian of n-direction fields as a real symmetric matrix of size 2|V|
+/// (unknowns Re u_v, Im u_v interleaved): the Hermitian form
+///   E(u) = sum_edges w_ij |u_j - r_ij^n u_i|^2,  r_ij = exp(i rho_ij),
+/// with w the given edge weights (cotangent weights: the Dirichlet energy of the field).
+template <class Indices>
+Sparse_matrix connection_laplacian(const Indices& idx, const Discrete_connection& c,
+                                   const std::vector<double>& weight, int n)
+{
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(8 * idx.number_of_edges() + 2 * idx.number_of_vertices());
+  std::vector<double> diagonal(idx.number_of_vertices(), 0.);
+  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+  {
+    const auto ij = idx.edge_vertices(e);
+    const Eigen::Index i = Eigen::Index(ij.first), j = Eigen::Index(ij.second);
+    const double w = weight[e];
+    diagonal[ij.first] += w;
+    diagonal[ij.second] += w;
+    // A_ji = -w r (complex), A_ij = conj(A_ji); complex p + iq is the real block [p -q; q p]
+    const double p = -w * std::cos(n * c.rho[e]), q = -w * std::sin(n * c.rho[e]);
+    t.emplace_back(2 * j, 2 * i, p);
+    t.emplace_back(2 * j, 2 * i + 1, -q);
+    t.emplace_back(2 * j + 1, 2 * i, q);
+    t.emplace_back(2 * j + 1, 2 * i + 1, p);
+    t.emplace_back(2 * i, 2 * j, p);
+    t.emplace_back(2 * i, 2 * j + 1, q);
+    t.emplace_back(2 * i + 1, 2 * j, -q);
+    t.emplace_back(2 * i + 1, 2 * j + 1, p);
+  }
+  for(std::size_t v = 0; v < diagonal.size(); ++v)
+  {
+    t.emplace_back(Eigen::Index(2 * v), Eigen::Index(2 * v), diagonal[v]);
+    t.emplace_back(Eigen::Index(2 * v + 1), Eigen::Index(2 * v + 1), diagonal[v]);
+  }
+  const Eigen::Index size = Eigen::Index(2 * idx.number_of_vertices());
+  Sparse_matrix a(size, size);
+  a.setFromTriplets(t.begin(), t.end());
+  return a;
+}
+
+/// The traceless part of the shape operator at every vertex as a complex number in the vertex
+/// frame, of doubled angle: -sum over the edges ij at i of (beta_ij l_ij / 2) exp(2 i phi_ij), with
+/// beta the signed dihedral angle (positive where the surface is convex for the face orientation).
+/// Its argument / 2 is the direction of the larger principal curvature (Cohen-Steiner & Morvan's
+/// edge-based curvature tensor: an edge bends the surface across itself).
+template <class Indices, class VertexPointMap>
+std::vector<std::complex<double>> principal_curvature_directions(const Indices& idx, const VertexPointMap& vpm,
+                                                                 const Discrete_connection& c)
+{
+  const auto& tm = idx.mesh();
+  const std::vector<Eigen::Vector3d> fn = face_normals(idx, vpm);
+  std::vector<std::complex<double>> q(idx.number_of_vertices(), 0.);
+  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+  {
+    const auto h = idx.oriented_halfedge(e), o = opposite(h, tm);
+    if(idx.is_border(h) || idx.is_border(o))
+      continue;
+    const Eigen::Vector3d d = position(vpm, target(h, tm)) - position(vpm, source(h, tm));
+    const Eigen::Vector3d& n1 = fn[idx.index(face(h, tm))];
+    const Eigen::Vector3d& n2 = fn[idx.index(face(o, tm))];
+    const double beta = std::atan2(n1.cross(n2).dot(d.normalized()), n1.dot(n2));
+    const double weight = -0.5 * beta * d.norm();
+    q[idx.source_index(h)] += weight * std::polar(1., 2. * c.frames.angle[idx.index(h)]);
+    q[idx.source_index(o)] += weight * std::polar(1., 2. * c.frames.angle[idx.index(o)]);
+  }
+  return q;
+}
+
+template <class Indices, class VertexVectorMap>
+std::vector<double> field_angles(const Indices& idx, const Vertex_frames& frames, const VertexVectorMap& field)
+{
+  std::vector<double> angle(idx.number_of_vertices());
+  for(std::size_t v = 0; v < angle.size(); ++v)
+  {
+    const auto& x = get(field, idx.vertex(v));
+    const Eigen::Vector3d xv(CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z()));
+    const Eigen::Vector3d t = xv - xv.dot(frames.normal[v]) * frames.normal[v];
+    if(!(t.norm() > 1e-12 * xv.norm()) || !t.allFinite())
+      throw Invalid_constraints("the field vector at vertex " + std::to_string(v) +
+                                (t.allFinite() ? " has no tangential component" : " is not finite") +
+                                ": the direction, and the index of the faces around it, are undefined");
+    angle[v] = frames.to_angle(v, t);
+  }
+  return angle;
+}
+
+/// Writes, per vertex, the direction of angle `angle[v]` (rescaled, in the vertex frame) scaled
+/// by `magnitude[v]` (unit when `magnitude` is empty).
+template <class Indices, class VertexVectorMap>
+void write_field(const Indices& idx, const Vertex_frames& frames, const std::vector<double>& angle,
+                 const std::vector<double>& magnitude, VertexVectorMap out)
+{
+  using Vector = typename boost::property_traits<VertexVectorMap>::value_type;
+  for(std::size_t v = 0; v < angle.size(); ++v)
+  {
+    const Eigen::Vector3d x = (magnitude.empty() ? 1. : magnitude[v]) * frames.to_vector(v, angle[v]);
+    put(out, idx.vertex(v), Vector(x.x(), x.y(), x.z()));
+  }
+}
+
+inline void check_symmetry_order(int n)
+{
+  if(n < 1)
+    throw Invalid_constraints("the symmetry order n of a direction field must be at least 1 (1: vector "
+                              "field, 2: line field, 4: cross field), got " + std::to_string(n));
+}
+
+} // namespace internal
+
+/// \ingroup PkgDirectionFieldsRef
+///
+/// Computes the smoothest vertex-based n-direction field of a triangle mesh (Knöppel et al.
+/// 2013) and writes one of its n directions per vertex to `field` (the others are its rotations
+/// by multiples of 2 pi / n in the vertex tangent plane, in the rescaled angles of the frames).
+///
+/// **Representation.** At vertex v the field is the complex number u_v = |u_v| exp(i n theta_v)
+/// in the angle-rescaled vertex frame (corner angles scaled to sum to 2 pi at interior vertices,
+/// kept at boundary vertices); theta_v is the angle of the direction. The Levi-Civita transport rotates by rho_ij
+/// along each edge (see the manual).
+///
+/// **Energy.** E(u) = sum_edges w_ij |u_j - exp(i n rho_ij) u_i|^2 with cotangent weights, the
+/// Hermitian connection Laplacian A; M the lumped (barycentric) mass matrix.
+///  - No boundary condition, no alignment: u is the eigenvector of the smallest eigenvalue of
+///    A u = lambda M u, computed per connected component by shift-invert Lanczos (M inner
+///    product, full reorthogonalization) on one factorization of A + eps M (eps = 1e-8 trace(A) /
+///    trace(M), which keeps the matrix positive definite when lambda = 0 and does not change the
+///    eigenvectors), from a fixed pseudo-random start, until the Lanczos residual is below
+///    `eigen_tolerance` relative to the eigenvalue (the eigenvalue is then accurate to about its
+///    square). Typically 10 to 20 back-substitutions, where plain inverse iteration needs 40 to
+///    several hundred (near-degenerate eigenvalues, e.g. on a round sphere).
+///  - `field_boundary_condition(Direction_field_boundary::tangent or normal)`: on components with
+///    boundary, u is fixed at the boundary vertices to the boundary tangent (or inward normal) and
+///    the interior minimizes E: one linear solve (Knöppel et al., sec. 6.1).
+///  - `curvature_alignment_weight(t) > 0` (n even): minimizes E(u) + t sum_v m~_v |u_v - q_v|^2
+///    where q is the principal curvature direction field (n = 2: the larger principal curvature
+///    direction; n = 4: both), with magnitude |kappa_1 - kappa_2| scaled to area-weighted RMS 1,
+///    and m~ the vertex areas scaled to average 1: one linear solve of (A + t M~) u = t M~ q.
+///    This is Knöppel et al.'s alignment family (their (A - lambda_t M) u = M q with
+///    lambda_t = -t); t is dimensionless, about the strength of one edge's coupling per vertex.
+///
+/// \param tm a triangle mesh (validated: no degenerate, non-manifold or non-triangle face)
+/// \param field a writable vertex -> `Vector_3` property map; receives unit tangent vectors
+///        (tangent to the angle-weighted vertex normal), or vectors of length |u_v| with
+///        `normalize_field(false)` (u scaled to sum_v m_v |u_v|^2 = total area; |u| falls to 0
+///        near singularities); written only if the computation succeeds.
+/// \param np optional named parameters: `vertex_point_map`, `sparse_linear_solver` (a model of
+///        `SparseLinearAlgebraWithFactorTraits_d`, default `Default_solver_traits`),
+///        `symmetry_order` (n, default 1), `field_boundary_condition` (default free),
+///        `curvature_alignment_weight` (default 0), `normalize_field` (default true),
+///        `eigen_tolerance` (default 1e-6), `number_of_iterations` (limit on the Lanczos
+///        back-substitutions, default 200).
+/// \throws Invalid_mesh on bad input (the mesh is never modified)
+/// \throws Invalid_constraints if n < 1, or curvature alignment is asked for with an odd n or on
+///         a surface whose curvature tensor vanishes everywhere (a plane has no principal directions)
+/// \throws Linear_solver_failure if the connection Laplacian is not positive definite (possible
+///         with many negative cotangent weights) or the solver fails
+template <class TriangleMesh, class VertexVectorMap,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Smoothest_direction_field_info smoothest_direction_field(const TriangleMesh& tm, VertexVectorMap field,
+                                                         const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using Vpm = typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type;
+  using Solver = typename CGAL::internal_np::Lookup_named_param_def<
+    CGAL::internal_np::sparse_linear_solver_t, NamedParameters, Default_solver_traits>::type;
+
+  const Vpm vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                   get_const_property_map(CGAL::vertex_point, tm));
+  const int n = choose_parameter(get_parameter(np, internal_np::symmetry_order), 1);
+  const Direction_field_boundary boundary =
+    choose_parameter(get_parameter(np, internal_np::field_boundary_condition), Direction_field_boundary::free);
+  const double alignment = choose_parameter(get_parameter(np, internal_np::curvature_alignment_weight), 0.);
+  const bool normalize = choose_parameter(get_parameter(np, internal_np::normalize_field), true);
+  const double tolerance = choose_parameter(get_parameter(np, internal_np::eigen_tolerance), 1e-6);
+  const std::size_t max_iterations =
+    choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(200));
+
+  internal::check_symmetry_order(n);
+  if(!(alignment >= 0.) || !std::isfinite(alignment))
+    throw Invalid_constraints("the curvature alignment weight must be finite and >= 0");
+  if(alignment > 0. && n % 2 != 0)
+    throw Invalid_constraints("curvature alignment needs an even symmetry order (n = 2: line field, "
+                              "n = 4: cross field): principal directions have no orientation");
+
+  const internal::Mesh_indices<TriangleMesh> idx(tm);
+  internal::validate_mesh(idx, vpm);
+  const std::size_t nv = idx.number_of_vertices();
+  const internal::Discrete_connection conn = internal::levi_civita_connection(idx, vpm);
+  const std::vector<double> weight = internal::cotangent_weights(idx, vpm);
+  const std::vector<double> mass = internal::vertex_areas(idx, internal::face_areas(idx, vpm));
+  const internal::Boundary_loops loops = internal::boundary_loops(idx);
+  const internal::Components comps = internal::connected_components(idx, loops);
+  const std::size_t nc = comps.info.size();
+
+  // Which components are an eigenproblem, and which vertices carry a Dirichlet value.
+  std::vector<bool> eigen_component(nc, alignment == 0.);
+  std::vector<bool> fixed(nv, false);
+  Eigen::VectorXd fixed_value = Eigen::VectorXd::Zero(Eigen::Index(2 * nv));
+  if(boundary != Direction_field_boundary::free)
+  {
+    const double pi = std::acos(-1.);
+    const double direction = boundary == Direction_field_boundary::tangent ? 0. : pi / 2.;
+    for(const auto& loop : loops.loops)
+      for(std::size_t h : loop)
+      {
+        // the border halfedge h runs against the boundary orientation; its target's outgoing
+        // boundary halfedge has rescaled angle 0, so the tangent is angle 0, the inward normal pi/2
+        const std::size_t v = idx.target_index(idx.halfedge(h));
+        fixed[v] = true;
+        eigen_component[comps.vertex_component[v]] = false;
+        fixed_value[Eigen::Index(2 * v)] = std::cos(n * direction);
+        fixed_value[Eigen::Index(2 * v + 1)] = std::sin(n * direction);
+      }
+  }
+  const bool any_eigen = std::find(eigen_component.begin(), eigen_component.end(), true) != eigen_component.end();
+
+  // The system matrix: A + s M with s = eps (eigenproblem) or t * V / area (alignment);
+  // Dirichlet rows and columns replaced by the identity.
+  internal::Sparse_matrix a = internal::connection_laplacian(idx, conn, weight, n);
+  double total_mass = 0.;
+  for(double m : mass)
+    total_mass += m;
+  const double eps_shift = 1e-8 * a.diagonal().sum() / (2. * total_mass);
+  const double mass_scale = double(nv) / total_mass; // m~ = mass_scale * m
+  std::vector<double> shift(nv);
+  for(std::size_t v = 0; v < nv; ++v)
+    shift[v] = (eigen_component[comps.vertex_component[v]] ? eps_shift : alignment * mass_scale) * mass[v];
+
+  Eigen::VectorXd rhs_fixed = Eigen::VectorXd::Zero(Eigen::Index(2 * nv)); // constant part of the rhs
+  if(alignment > 0.)
+  {
+    std::vector<std::complex<double>> q = internal::principal_curvature_directions(idx, vpm, conn);
+    for(auto& z : q)
+      z = n == 2 ? z : (std::abs(z) > 0. ? std::pow(z, n / 2) / std::pow(std::abs(z), n / 2 - 1) : 0.);
+    double rms = 0.;
+    for(std::size_t v = 0; v < nv; ++v)
+      rms += mass[v] * std::norm(q[v]);
+    rms = std::sqrt(rms / total_mass);
+    if(!(rms > 0.))
+      throw Invalid_constraints("curvature alignment is undefined on this mesh: its curvature tensor "
+                                "vanishes everywhere (a planar surface has no principal directions)");
+    for(std::size_t v = 0; v < nv; ++v)
+    {
+      rhs_fixed[Eigen::Index(2 * v)] = shift[v] * q[v].real() / rms;
+      rhs_fixed[Eigen::Index(2 * v + 1)] = shift[v] * q[v].imag() / rms;
+    }
+  }
+  if(boundary != Direction_field_boundary::free)
+  {
+    const Eigen::VectorXd coupling = a * fixed_value;
+    for(std::size_t v = 0; v < nv; ++v)
+      for(int k = 0; k < 2; ++k)
+      {
+        const Eigen::Index r = Eigen::Index(2 * v + std::size_t(k));
+        rhs_fixed[r] = fixed[v] ? fixed_value[r] : rhs_fixed[r] - coupling[r];
+      }
+    a.prune([&fixed](Eigen::Index i, Eigen::Index j, double) {
+      return !fixed[std::size_t(i / 2)] && !fixed[std::size_t(j / 2)];
+    });
+  }
+  for(std::size_t v = 0; v < nv; ++v)
+    for(Eigen::Index k = 0; k < 2; ++k)
+      a.coeffRef(Eigen::Index(2 * v) + k, Eigen::Index(2 * v) + k) += fixed[v] ? 1. : shift[v];
+  a.makeCompressed();
+
+  const internal::Sparse_matrix a_energy = internal::connection_laplacian(idx, conn, weight, n);
+  internal::Factored_system<Solver> system(
+    choose_parameter<Solver>(get_parameter(np, CGAL::internal_np::sparse_linear_solver)),
+    "connection Laplacian");
+  system.factor(std::move(a));
+
+  Smoothest_direction_field_info info;
+  info.eigenvalues.assign(nc, std::numeric_limits<double>::quiet_NaN());
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(Eigen::Index(2 * nv));
+  if(!std::all_of(eigen_component.begin(), eigen_component.end(), [](bool b) { return b; }))
+    system.solve(rhs_fixed, x); // boundary conditions and alignment: one linear solve
+  if(any_eigen)
+  {
+    // the smallest eigenvector of every remaining component: shift-invert Lanczos on A + eps M,
+    // from a fixed pseudo-random start (reproducible results)
+    std::vector<std::size_t> group(std::size_t(2 * nv));
+    Eigen::VectorXd mass2(Eigen::Index(2 * nv)), start(Eigen::Index(2 * nv));
+    std::mt19937 random(20130721u);
+    for(std::size_t r = 0; r < group.size(); ++r)
+    {
+      group[r] = comps.vertex_component[r / 2];
+      mass2[Eigen::Index(r)] = mass[r / 2];
+      start[Eigen::Index(r)] = eigen_component[group[r]] ? 2. * (double(random()) / 4294967296.) - 1. : 0.;
+    }
+    const internal::Lanczos_result eig = internal::largest_eigenvectors_by_group(
+      [&system](const Eigen::VectorXd& b, Eigen::VectorXd& y) { system.solve(b, y); }, mass2, group,
+      eigen_component, start, tolerance, max_iterations);
+    info.iterations = eig.solves;
+    info.converged = eig.converged;
+    for(Eigen::Index r = 0; r < x.size(); ++r)
+      if(eigen_component[group[std::size_t(r)]])
+        x[r] = eig.x[r];
+    // the normalized energy of the result, from A itself
+    const Eigen::VectorXd ax = a_energy * x;
+    std::vector<double> num(nc, 0.), den(nc, 0.);
+    for(std::size_t r = 0; r < group.size(); ++r)
+    {
+      num[group[r]] += x[Eigen::Index(r)] * ax[Eigen::Index(r)];
+      den[group[r]] += mass2[Eigen::Index(r)] * x[Eigen::Index(r)] * x[Eigen::Index(r)];
+    }
+    for(std::size_t c = 0; c < nc; ++c)
+      if(eigen_component[c])
+        info.eigenvalues[c] = num[c] / den[c];
+  }
+
+  // Output: direction arg(u) / n; magnitude |u| scaled to sum m |u|^2 = area per component.
+  std::vector<double> comp_area(nc, 0.), comp_norm2(nc, 0.);
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    const std::size_t c = comps.vertex_component[v];
+    comp_area[c] += mass[v];
+    comp_norm2[c] += mass[v] * (x[Eigen::Index(2 * v)] * x[Eigen::Index(2 * v)] +
+                                x[Eigen::Index(2 * v + 1)] * x[Eigen::Index(2 * v + 1)]);
+  }
+  std::vector<double> angle(nv), magnitude;
+  if(!normalize)
+    magnitude.resize(nv);
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    const std::complex<double> u(x[Eigen::Index(2 * v)], x[Eigen::Index(2 * v + 1)]);
+    angle[v] = std::arg(u) / n;
+    if(!normalize)
+    {
+      const std::size_t c = comps.vertex_component[v];
+      magnitude[v] = comp_norm2[c] > 0. ? std::abs(u) * std::sqrt(comp_area[c] / comp_norm2[c]) : 0.;
+    }
+  }
+  internal::write_field(idx, conn.frames, angle, magnitude, field);
+  return info;
+}
+
+/// \ingroup PkgDirectionFieldsRef
+///
+/// Computes the singularity index of a vertex-based n-direction field in every face and writes
+/// it (a multiple of 1/n) to `face_index`. Returns the number of singular faces.
+///
+/// The field is given by one of its n directions per vertex (vectors are projected to the vertex
+/// tangent planes; their length is ignored). Around a face, each edge contributes the smallest
+/// turn of the n-fold direction relative to the Levi-Civita transport along the edge, and the
+/// transport contributes the face curvature; the total, divided by 2 pi, is the index. Boundary
+/// faces get indices like any other face (their boundary edges included), so that on every
+/// closed surface the indices sum to the Euler characteristic (Poincaré-Hopf), and on a surface
+/// with boundary to chi plus the turning of the field along the boundary relative to it.
+///
+/// \param np `vertex_point_map`, `symmetry_order` (n, default 1)
+/// \throws Invalid_mesh on bad input; Invalid_constraints if a field vector is zero, normal to
+///         the surface or not finite
+template <class TriangleMesh, class VertexVectorMap, class FaceIndexMap,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+std::size_t direction_field_singularities(const TriangleMesh& tm, const VertexVectorMap& field,
+                                          FaceIndexMap face_index,
+                                          const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const int n = choose_parameter(get_parameter(np, internal_np::symmetry_order), 1);
+  internal::check_symmetry_order(n);
+  const internal::Mesh_indices<TriangleMesh> idx(tm);
+  internal::validate_mesh(idx, vpm);
+  const internal::Discrete_connection conn = internal::levi_civita_connection(idx, vpm);
+  const std::vector<double> angle = internal::field_angles(idx, conn.frames, field);
+  const std::vector<int> k = internal::field_index_numerators(idx, conn, angle, n);
+  std::size_t count = 0;
+  for(std::size_t f = 0; f < k.size(); ++f)
+  {
+    put(face_index, idx.face(f), double(k[f]) / n);
+    count += (k[f] != 0);
+  }
+  return count;
+}
+
+} // namespace Surface_design
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_DESIGN_DIRECTION_FIELDS_H

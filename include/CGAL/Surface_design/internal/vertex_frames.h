@@ -1,0 +1,179 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Angle-rescaled vertex tangent frames (Knöppel et al. 2013, sec. 5; Noma & Kawahara, sec. 4.1):
+// around every vertex the corner angles are scaled so that the star becomes flat, and a tangent
+// direction is an angle measured counter-clockwise from a reference outgoing edge.
+
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_VERTEX_FRAMES_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_VERTEX_FRAMES_H
+
+#include <CGAL/Surface_design/internal/geometry.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_design {
+namespace internal {
+
+/// The frames of all vertices. Interior vertex v: s_v = 2 pi / (angle sum at v); boundary vertex:
+/// s_v = 1 (a boundary star keeps its angles, so that a planar mesh keeps its flat geometry and
+/// the turning of the boundary stays where it is). Outgoing
+/// halfedges of v are visited counter-clockwise from a reference one (for a boundary vertex: the
+/// outgoing halfedge along the boundary, whose opposite is a border halfedge); the rescaled angle
+/// of each is s_v times the sum of the corner angles swept from the reference. At a boundary vertex
+/// the exterior gap takes what remains of 2 pi.
+///
+/// A 3D vector is converted to an angle by projecting it onto the tangent plane (angle-weighted
+/// vertex normal), measuring its polar angle psi from the projected reference edge and
+/// interpolating linearly between the polar angles of the two projected edges around it; the
+/// conversion back is the inverse of that piecewise-linear map, so both are exact inverses on
+/// stars whose projection is not folded.
+struct Vertex_frames
+{
+  std::vector<double> scale;           ///< s_v
+  std::vector<double> angle;           ///< per halfedge h: rescaled angle of h at source(h), in [0, 2 pi)
+  std::vector<Eigen::Vector3d> normal; ///< angle-weighted unit vertex normals
+  std::vector<Eigen::Vector3d> e0, e1; ///< tangent basis: e0 = projected reference edge, e1 = n x e0
+  std::vector<bool> border;            ///< boundary vertex
+  // the stars in compressed rows: polar angles psi and rescaled angles phi of the outgoing
+  // halfedges, counter-clockwise, followed by the sentinel (2 pi, 2 pi)
+  std::vector<std::size_t> star_begin;
+  std::vector<double> star_psi, star_phi;
+
+  /// Rescaled angle in [0, 2 pi) of the tangent direction of `x` at vertex `v` (x != 0 after
+  /// projection; returns 0 otherwise).
+  double to_angle(std::size_t v, const Eigen::Vector3d& x) const
+  {
+    const double two_pi = 2. * std::acos(-1.);
+    const double px = x.dot(e0[v]), py = x.dot(e1[v]);
+    if(px == 0. && py == 0.)
+      return 0.;
+    double psi = std::atan2(py, px);
+    if(psi < 0.)
+      psi += two_pi;
+    const std::size_t b = star_begin[v], e = star_begin[v + 1] - 1; // e: the sentinel
+    for(std::size_t k = b; k < e; ++k)
+      if(star_psi[k + 1] > star_psi[k] && psi >= star_psi[k] && psi <= star_psi[k + 1])
+        return wrap(star_phi[k] + (psi - star_psi[k]) / (star_psi[k + 1] - star_psi[k]) *
+                                    (star_phi[k + 1] - star_phi[k]));
+    // folded projected star: the nearest edge
+    double best = two_pi, theta = 0.;
+    for(std::size_t k = b; k < e; ++k)
+    {
+      double d = std::abs(psi - star_psi[k]);
+      d = (std::min)(d, two_pi - d);
+      if(d < best)
+      {
+        best = d;
+        theta = star_phi[k];
+      }
+    }
+    return theta;
+  }
+
+  /// Unit tangent vector at vertex `v` of rescaled angle `a` (any real; taken modulo 2 pi).
+  Eigen::Vector3d to_vector(std::size_t v, double a) const
+  {
+    a = wrap(a);
+    const std::size_t b = star_begin[v], e = star_begin[v + 1] - 1;
+    std::size_t k = b;
+    while(k + 1 < e && star_phi[k + 1] <= a)
+      ++k;
+    const double span = star_phi[k + 1] - star_phi[k];
+    const double t = span > 0. ? (a - star_phi[k]) / span : 0.;
+    const double psi = star_psi[k] + t * (star_psi[k + 1] - star_psi[k]);
+    return std::cos(psi) * e0[v] + std::sin(psi) * e1[v];
+  }
+
+  static double wrap(double a)
+  {
+    const double two_pi = 2. * std::acos(-1.);
+    a -= two_pi * std::floor(a / two_pi);
+    return a >= two_pi ? 0. : a;
+  }
+};
+
+/// Computes the frames (see Vertex_frames). `corner` are the corner angles (corner_angles()).
+template <class Indices, class VertexPointMap>
+Vertex_frames vertex_frames(const Indices& idx, const VertexPointMap& vpm,
+                            const std::vector<double>& corner)
+{
+  const auto& tm = idx.mesh();
+  const double two_pi = 2. * std::acos(-1.);
+  const std::size_t nv = idx.number_of_vertices();
+  Vertex_frames fr;
+  fr.scale.assign(nv, 1.);
+  fr.angle.assign(idx.number_of_halfedges(), 0.);
+  fr.normal = vertex_normals(idx, vpm);
+  fr.e0.assign(nv, Eigen::Vector3d::Zero());
+  fr.e1.assign(nv, Eigen::Vector3d::Zero());
+  fr.border.assign(nv, false);
+  fr.star_begin.assign(nv + 1, 0);
+  fr.star_psi.reserve(idx.number_of_halfedges() + nv);
+  fr.star_phi.reserve(idx.number_of_halfedges() + nv);
+
+  std::vector<std::size_t> out;
+  std::vector<double> wedge; // corner angle between out[k] and out[k+1]; -1 for the boundary gap
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    fr.star_begin[v] = fr.star_psi.size();
+    const auto vd = idx.vertex(v);
+    auto start = opposite(halfedge(vd, tm), tm); // an outgoing halfedge
+    for(auto h : halfedges_around_source(vd, tm))
+      if(idx.is_border(opposite(h, tm)))
+        start = h;
+    out.clear();
+    wedge.clear();
+    auto h = start;
+    do
+    {
+      out.push_back(idx.index(h));
+      wedge.push_back(idx.is_border(h) ? -1. : corner[idx.index(prev(h, tm))]);
+      h = opposite(prev(h, tm), tm);
+    } while(h != start);
+
+    const bool border = wedge.back() < 0.;
+    double angle_sum = 0.;
+    for(double w : wedge)
+      angle_sum += (std::max)(w, 0.);
+    const double s = border ? 1. : two_pi / angle_sum;
+    fr.scale[v] = s;
+    fr.border[v] = border;
+
+    const Eigen::Vector3d n = fr.normal[v];
+    const Eigen::Vector3d p = position(vpm, vd);
+    auto planar = [&](const Eigen::Vector3d& d) { return Eigen::Vector3d(d - d.dot(n) * n); };
+    const Eigen::Vector3d e0 = planar(position(vpm, target(idx.halfedge(out[0]), tm)) - p).normalized();
+    const Eigen::Vector3d e1 = n.cross(e0);
+    fr.e0[v] = e0;
+    fr.e1[v] = e1;
+    double phi = 0.;
+    for(std::size_t k = 0; k < out.size(); ++k)
+    {
+      const Eigen::Vector3d d = planar(position(vpm, target(idx.halfedge(out[k]), tm)) - p);
+      double psi = k == 0 ? 0. : std::atan2(d.dot(e1), d.dot(e0));
+      if(psi < 0.)
+        psi += two_pi;
+      fr.angle[out[k]] = phi;
+      fr.star_psi.push_back(psi);
+      fr.star_phi.push_back(phi);
+      phi += s * (std::max)(wedge[k], 0.);
+    }
+    fr.star_psi.push_back(two_pi);
+    fr.star_phi.push_back(two_pi);
+  }
+  fr.star_begin[nv] = fr.star_psi.size();
+  return fr;
+}
+
+} // namespace internal
+} // namespace Surface_design
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_VERTEX_FRAMES_H

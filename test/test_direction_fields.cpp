@@ -1,0 +1,560 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Direction fields: smoothest fields (tangency, Poincaré-Hopf, the eigenvalue against a dense
+// eigensolver and Rayleigh quotients, planar disks, boundary and curvature alignment), the
+// singularity index on analytic fields, trivial connections (exactly the prescribed
+// singularities, zero holonomy elsewhere, least-norm optimality, re-solves), bad input.
+
+#include <test_support.h>
+
+#include <CGAL/Surface_design/direction_fields.h>
+#include <CGAL/Surface_design/mesh_generators.h>
+#include <CGAL/Surface_design/Trivial_connection.h>
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <map>
+#include <random>
+
+namespace SD = CGAL::Surface_design;
+namespace SDI = CGAL::Surface_design::internal;
+
+namespace {
+
+const double pi = std::acos(-1.);
+
+#if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
+#define SD_FOR_EACH_SOLVER(F) F(SD::Default_solver_traits, "ldlt") F(SD::Cholmod_solver_traits, "cholmod")
+#else
+#define SD_FOR_EACH_SOLVER(F) F(SD::Default_solver_traits, "ldlt")
+#endif
+
+using Vector = test::Kernel::Vector_3;
+
+template <class Mesh>
+using Vertex = typename boost::graph_traits<Mesh>::vertex_descriptor;
+template <class Mesh>
+using Face = typename boost::graph_traits<Mesh>::face_descriptor;
+template <class Mesh>
+using Vector_map = std::map<Vertex<Mesh>, Vector>;
+template <class Mesh>
+using Vpm = typename boost::property_map<Mesh, CGAL::vertex_point_t>::const_type;
+
+template <class Mesh>
+Mesh make_case(const std::string& name)
+{
+  Mesh mesh;
+  if(name == "sphere")
+    SD::make_sphere(mesh, 6);
+  else if(name == "small sphere")
+    SD::make_sphere(mesh, 4);
+  else if(name == "torus")
+    SD::make_torus(mesh, 40, 12, 1., 0.3, true);
+  else if(name == "disk")
+    SD::make_grid(mesh, 12, 12, 0.15);
+  else if(name == "grid with holes")
+    SD::make_grid(mesh, 16, 16, 0.1, [](std::size_t i, std::size_t j) {
+      return (i >= 3 && i < 6 && j >= 3 && j < 6) || (i >= 10 && i < 12 && j >= 9 && j < 13);
+    });
+  else
+    mesh = test::load_mesh<Mesh>(name);
+  return mesh;
+}
+
+template <class Mesh>
+long euler_characteristic(const Mesh& mesh)
+{
+  return long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh));
+}
+
+Eigen::Vector3d to_eigen(const Vector& v) { return Eigen::Vector3d(v.x(), v.y(), v.z()); }
+
+template <class Mesh>
+std::map<Face<Mesh>, double> indices_of(const Mesh& mesh, const Vector_map<Mesh>& field, int n)
+{
+  std::map<Face<Mesh>, double> index;
+  SD::direction_field_singularities(mesh, boost::make_assoc_property_map(field),
+                                    boost::make_assoc_property_map(index),
+                                    SD::parameters::symmetry_order(n));
+  return index;
+}
+
+// Every vector is tangent to the angle-weighted vertex normal and has unit length.
+template <class Mesh>
+void check_unit_tangent(const Mesh& mesh, const Vector_map<Mesh>& field)
+{
+  const SDI::Mesh_indices<Mesh> idx(mesh);
+  const auto normal = SDI::vertex_normals(idx, get(CGAL::vertex_point, mesh));
+  for(auto v : vertices(mesh))
+  {
+    const Eigen::Vector3d x = to_eigen(field.at(v));
+    REQUIRE(std::abs(x.norm() - 1.) < 1e-12);
+    REQUIRE(std::abs(x.dot(normal[idx.index(v)])) <= 1e-9 * x.norm());
+  }
+}
+
+// The complex value u_v of a field (n-th power representation) in the vertex frames.
+template <class Mesh>
+Eigen::VectorXd complex_values(const Mesh& mesh, const SDI::Discrete_connection& c,
+                               const Vector_map<Mesh>& field, int n)
+{
+  const SDI::Mesh_indices<Mesh> idx(mesh);
+  Eigen::VectorXd u(2 * num_vertices(mesh));
+  for(std::size_t v = 0; v < idx.number_of_vertices(); ++v)
+  {
+    const Eigen::Vector3d x = to_eigen(field.at(idx.vertex(v)));
+    const double a = n * c.frames.to_angle(v, x);
+    u[Eigen::Index(2 * v)] = x.norm() * std::cos(a);
+    u[Eigen::Index(2 * v + 1)] = x.norm() * std::sin(a);
+  }
+  return u;
+}
+
+} // namespace
+
+TEMPLATE_TEST_CASE("Singularity index of analytic fields on a planar disk", "[direction_fields]", SD_MESH_TYPES)
+{
+  const TestType mesh = make_case<TestType>("disk");
+  // the face containing the centre (0.5, 0.5) + a small offset that avoids vertices and edges
+  const Eigen::Vector3d c(0.5 + 0.013, 0.5 + 0.021, 0.);
+  Face<TestType> centre{};
+  for(auto f : faces(mesh))
+  {
+    std::vector<Eigen::Vector3d> p;
+    for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+    {
+      const auto& q = get(CGAL::vertex_point, mesh, v);
+      p.emplace_back(q.x(), q.y(), 0.);
+    }
+    auto side = [&](int i) { return (p[(i + 1) % 3] - p[i]).cross(c - p[i]).z(); };
+    if(side(0) > 0 && side(1) > 0 && side(2) > 0)
+      centre = f;
+  }
+  REQUIRE(centre != Face<TestType>());
+
+  struct Case
+  {
+    int n;
+    double turns; // the field's angle is turns * (polar angle around c)
+    double index;
+  };
+  for(const Case& k : {Case{1, 1., 1.}, Case{1, -1., -1.}, Case{1, 2., 2.}, Case{2, 0.5, 0.5},
+                       Case{4, -0.25, -0.25}, Case{4, 0.75, 0.75}, Case{1, 0., 0.}})
+  {
+    Vector_map<TestType> field;
+    for(auto v : vertices(mesh))
+    {
+      const auto& q = get(CGAL::vertex_point, mesh, v);
+      const double phi = std::atan2(q.y() - c.y(), q.x() - c.x());
+      field[v] = Vector(std::cos(k.turns * phi + 0.3), std::sin(k.turns * phi + 0.3), 0.);
+    }
+    const auto index = indices_of(mesh, field, k.n);
+    INFO("n = " << k.n << ", turns = " << k.turns);
+    if(std::abs(k.index) * k.n <= 1.)
+    {
+      for(auto f : faces(mesh))
+        REQUIRE(index.at(f) == (f == centre ? k.index : 0.));
+    }
+    else
+    {
+      // more than 1/n cannot sit in one triangle (the field turns by less than pi per edge):
+      // the index is shared by faces around the centre, and adds up
+      double sum = 0.;
+      for(auto f : faces(mesh))
+        if(index.at(f) != 0.)
+        {
+          sum += index.at(f);
+          for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+          {
+            const auto& q = get(CGAL::vertex_point, mesh, v);
+            REQUIRE(std::hypot(q.x() - c.x(), q.y() - c.y()) < 0.2);
+          }
+        }
+      REQUIRE(sum == k.index);
+    }
+  }
+}
+
+TEMPLATE_TEST_CASE("Smoothest fields: tangent, unit, and Poincaré-Hopf", "[direction_fields]", SD_MESH_TYPES)
+{
+  for(const std::string name : {"sphere", "torus", "eight.off", "bunny_1k.off"})
+    for(int n : {1, 2, 4})
+    {
+      const TestType mesh = make_case<TestType>(name);
+      Vector_map<TestType> field;
+      const SD::Smoothest_direction_field_info info = SD::smoothest_direction_field(
+        mesh, boost::make_assoc_property_map(field), SD::parameters::symmetry_order(n));
+      INFO(name << ", n = " << n);
+      REQUIRE(info.converged);
+      REQUIRE(info.eigenvalues.size() == 1);
+      REQUIRE(info.eigenvalues[0] > 0.); // curved closed surfaces have no parallel field
+      check_unit_tangent(mesh, field);
+      double sum = 0.;
+      for(const auto& fi : indices_of(mesh, field, n))
+      {
+        REQUIRE(std::abs(fi.second * n - std::round(fi.second * n)) < 1e-12); // multiples of 1/n
+        sum += fi.second;
+      }
+      REQUIRE(std::abs(sum - double(euler_characteristic(mesh))) < 1e-9);
+      if(name == "sphere" && n == 1)
+        REQUIRE(sum == 2.);
+    }
+}
+
+TEMPLATE_TEST_CASE("Smoothest field on a sphere: the smallest eigenvalue, never undercut", "[direction_fields]",
+                   SD_MESH_TYPES)
+{
+  const TestType mesh = make_case<TestType>("small sphere");
+  const SDI::Mesh_indices<TestType> idx(mesh);
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  const SDI::Discrete_connection c = SDI::levi_civita_connection(idx, vpm);
+  for(int n : {1, 2, 4})
+  {
+    // the generalized eigenproblem A u = lambda M u, dense and independent of inverse iteration
+    const Eigen::MatrixXd a = Eigen::MatrixXd(SDI::connection_laplacian(idx, c, SDI::cotangent_weights(idx, vpm), n));
+    const std::vector<double> mass = SDI::vertex_areas(idx, SDI::face_areas(idx, vpm));
+    Eigen::MatrixXd m = Eigen::MatrixXd::Zero(a.rows(), a.cols());
+    for(std::size_t v = 0; v < mass.size(); ++v)
+      m(2 * v, 2 * v) = m(2 * v + 1, 2 * v + 1) = mass[v];
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(a, m);
+    const double lambda_min = dense.eigenvalues()[0];
+
+    auto rayleigh = [&](const Eigen::VectorXd& u) { return u.dot(a * u) / u.dot(m * u); };
+#define SD_RUN(Solver, label)                                                                      \
+    {                                                                                              \
+      INFO("n = " << n << ", solver " << label);                                                   \
+      Vector_map<TestType> field;                                                                  \
+      const auto info = SD::smoothest_direction_field(                                             \
+        mesh, boost::make_assoc_property_map(field),                                               \
+        SD::parameters::symmetry_order(n, SD::parameters::normalize_field(false,                     \
+          SD::parameters::sparse_linear_solver(Solver()))));                                       \
+      REQUIRE(info.converged);                                                                     \
+      REQUIRE(std::abs(info.eigenvalues[0] - lambda_min) <= 1e-8 * lambda_min);                    \
+      const Eigen::VectorXd u = complex_values(mesh, c, field, n);                                 \
+      REQUIRE(std::abs(rayleigh(u) - lambda_min) <= 1e-8 * lambda_min);                            \
+      /* the field's magnitude is scaled to sum m |u|^2 = area */                                  \
+      double area = 0.;                                                                            \
+      for(double mv : mass)                                                                        \
+        area += mv;                                                                                \
+      REQUIRE(std::abs(u.dot(m * u) - area) <= 1e-9 * area);                                       \
+      std::mt19937 random(7);                                                                      \
+      std::normal_distribution<double> normal;                                                     \
+      for(int trial = 0; trial < 20; ++trial)                                                      \
+      {                                                                                            \
+        Eigen::VectorXd r(u.size());                                                               \
+        for(Eigen::Index i = 0; i < r.size(); ++i)                                                 \
+          r[i] = normal(random);                                                                   \
+        REQUIRE(rayleigh(r) >= lambda_min * (1. - 1e-12));                                         \
+        const double size = std::pow(10., -1 - trial % 6);                                         \
+        REQUIRE(rayleigh(u + size * r.norm() / u.norm() * r) >= lambda_min * (1. - 1e-12));        \
+      }                                                                                            \
+    }
+    SD_FOR_EACH_SOLVER(SD_RUN)
+#undef SD_RUN
+  }
+}
+
+TEMPLATE_TEST_CASE("A planar disk gives a constant smoothest field", "[direction_fields]", SD_MESH_TYPES)
+{
+  const TestType mesh = make_case<TestType>("disk");
+  for(int n : {1, 2, 4})
+  {
+    Vector_map<TestType> field;
+    const auto info = SD::smoothest_direction_field(
+      mesh, boost::make_assoc_property_map(field),
+      SD::parameters::symmetry_order(n, SD::parameters::eigen_tolerance(1e-10)));
+    REQUIRE(info.converged);
+    REQUIRE(std::abs(info.eigenvalues[0]) < 1e-9);
+    check_unit_tangent(mesh, field);
+    // the same n-direction everywhere: n * angle agrees modulo 2 pi
+    const Vector x0 = field.begin()->second;
+    const double a0 = std::atan2(x0.y(), x0.x());
+    for(const auto& vx : field)
+      REQUIRE(std::abs(SDI::wrap_angle(n * (std::atan2(vx.second.y(), vx.second.x()) - a0))) < 1e-7);
+    for(const auto& fi : indices_of(mesh, field, n))
+      REQUIRE(fi.second == 0.);
+  }
+}
+
+TEMPLATE_TEST_CASE("Boundary-aligned smoothest fields", "[direction_fields]", SD_MESH_TYPES)
+{
+  for(const std::string name : {"disk", "grid with holes", "hemisphere.off"})
+    for(SD::Direction_field_boundary bc : {SD::Direction_field_boundary::tangent, SD::Direction_field_boundary::normal})
+    {
+      const TestType mesh = make_case<TestType>(name);
+      Vector_map<TestType> field;
+      const auto info = SD::smoothest_direction_field(mesh, boost::make_assoc_property_map(field),
+                                                      SD::parameters::field_boundary_condition(bc));
+      INFO(name);
+      REQUIRE(info.iterations == 0); // a linear solve, no eigenproblem
+      check_unit_tangent(mesh, field);
+      // boundary vertices: along the outgoing boundary edge (tangent) or at a right angle to it,
+      // pointing into the surface (normal)
+      const SDI::Mesh_indices<TestType> idx(mesh);
+      const auto normal = SDI::vertex_normals(idx, get(CGAL::vertex_point, mesh));
+      for(auto h : halfedges(mesh))
+        if(is_border(opposite(h, mesh), mesh))
+        {
+          const auto v = source(h, mesh);
+          const auto& p = get(CGAL::vertex_point, mesh, v);
+          const auto& q = get(CGAL::vertex_point, mesh, target(h, mesh));
+          Eigen::Vector3d t(q.x() - p.x(), q.y() - p.y(), q.z() - p.z());
+          const Eigen::Vector3d nv = normal[idx.index(v)];
+          t = (t - t.dot(nv) * nv).normalized();
+          const Eigen::Vector3d x = to_eigen(field.at(v));
+          const Eigen::Vector3d expected = bc == SD::Direction_field_boundary::tangent ? t : nv.cross(t);
+          // exact on planar meshes; on a curved boundary star the inward normal is measured in the
+          // star's own angles, which its projection to the tangent plane distorts a little
+          REQUIRE((x - expected).norm() < (bc == SD::Direction_field_boundary::tangent || name != "hemisphere.off" ? 1e-9 : 1e-2));
+        }
+      // the field is parallel along the straightened boundary: Poincaré-Hopf with chi alone
+      double sum = 0.;
+      for(const auto& fi : indices_of(mesh, field, 1))
+        sum += fi.second;
+      REQUIRE(sum == double(euler_characteristic(mesh)));
+    }
+}
+
+TEMPLATE_TEST_CASE("Curvature-aligned cross fields follow the principal directions of a torus",
+                   "[direction_fields]", SD_MESH_TYPES)
+{
+  const TestType mesh = make_case<TestType>("torus");
+  for(int n : {2, 4})
+  {
+    Vector_map<TestType> field;
+    SD::smoothest_direction_field(mesh, boost::make_assoc_property_map(field),
+                                  SD::parameters::symmetry_order(n, SD::parameters::curvature_alignment_weight(1.)));
+    check_unit_tangent(mesh, field);
+    // on a torus of revolution about z the principal directions are the parallels (larger
+    // curvature on the outer half for n = 2 is not asserted: only the n-fold alignment)
+    std::vector<double> error;
+    for(auto v : vertices(mesh))
+    {
+      const auto& p = get(CGAL::vertex_point, mesh, v);
+      const Eigen::Vector3d parallel = Eigen::Vector3d(-p.y(), p.x(), 0.).normalized();
+      const Eigen::Vector3d x = to_eigen(field.at(v));
+      const double c = std::clamp(x.dot(parallel), -1., 1.);
+      const double angle = std::acos(c);
+      // distance of the angle to the nearest multiple of pi / 2 (n = 4) or pi (n = 2)... in degrees
+      const double period = n == 4 ? pi / 2. : pi;
+      const double r = std::fmod(angle, period);
+      error.push_back((std::min)(r, period - r) * 180. / pi);
+    }
+    std::sort(error.begin(), error.end());
+    INFO("n = " << n << ", median misalignment " << error[error.size() / 2] << " degrees, 95% "
+                << error[error.size() * 95 / 100]);
+    if(n == 4)
+      REQUIRE(error[error.size() * 95 / 100] < 3.);
+    else
+    {
+      // n = 2 picks one of the two principal directions: parallels or meridians, i.e. aligned
+      // modulo pi / 2 as well
+      std::vector<double> e4;
+      for(double e : error)
+        e4.push_back((std::min)(e, std::abs(90. - e)));
+      std::sort(e4.begin(), e4.end());
+      REQUIRE(e4[e4.size() * 95 / 100] < 3.);
+    }
+  }
+  // odd n and planar meshes have nothing to align to
+  Vector_map<TestType> field;
+  REQUIRE_THROWS_AS(SD::smoothest_direction_field(mesh, boost::make_assoc_property_map(field),
+                                                  SD::parameters::curvature_alignment_weight(1.)),
+                    SD::Invalid_constraints);
+  const TestType disk = make_case<TestType>("disk");
+  REQUIRE_THROWS_AS(SD::smoothest_direction_field(disk, boost::make_assoc_property_map(field),
+                                                  SD::parameters::symmetry_order(4, SD::parameters::curvature_alignment_weight(1.))),
+                    SD::Invalid_constraints);
+  REQUIRE(field.empty());
+}
+
+namespace {
+
+// Checks a solved trivial connection: exactly the prescribed indices, zero holonomy elsewhere,
+// least-norm optimality (the adjustment is co-closed: d0^T x = 0).
+template <class Mesh, class Tc>
+void check_trivial_connection(const Mesh& mesh, const Tc& tc, const std::map<Face<Mesh>, int>& prescribed)
+{
+  const int n = tc.symmetry_order();
+  const auto& idx = tc.indices();
+  REQUIRE(tc.largest_adjustment() < pi);
+  Vector_map<Mesh> field;
+  tc.field(boost::make_assoc_property_map(field));
+  check_unit_tangent(mesh, field);
+  const auto index = indices_of(mesh, field, n);
+  const std::vector<double> x = tc.adjustment();
+  const auto& c = tc.connection();
+  for(auto f : faces(mesh))
+  {
+    const auto it = prescribed.find(f);
+    const int k = it == prescribed.end() ? 0 : it->second;
+    REQUIRE(index.at(f) == double(k) / n);
+    double holonomy = n * c.curvature[idx.index(f)];
+    for(auto h : halfedges_around_face(halfedge(f, mesh), mesh))
+      holonomy += idx.orientation_sign(h) * x[idx.edge_index(h)];
+    REQUIRE(std::abs(holonomy - 2. * pi * k) < 1e-9);
+  }
+  const Eigen::VectorXd xe = Eigen::Map<const Eigen::VectorXd>(x.data(), Eigen::Index(x.size()));
+  const Eigen::VectorXd div = SDI::Sparse_matrix(SDI::d0(idx).transpose()) * xe;
+  REQUIRE(div.cwiseAbs().maxCoeff() < 1e-9);
+}
+
+} // namespace
+
+TEMPLATE_TEST_CASE("Trivial connections have exactly the prescribed singularities", "[direction_fields]",
+                   SD_MESH_TYPES)
+{
+  struct Case
+  {
+    std::string mesh;
+    int n;
+    std::vector<std::pair<std::size_t, int>> singularities; // face index, numerator
+  };
+  const std::vector<Case> cases = {
+    {"sphere", 1, {{10, 1}, {300, 1}}},
+    {"sphere", 4, {{3, 1}, {50, 1}, {100, 1}, {150, 1}, {200, 1}, {250, 1}, {300, 1}, {350, 1}}},
+    {"sphere", 2, {{5, 1}, {220, 1}, {100, 1}, {400, 1}}},
+    {"torus", 1, {}},
+    {"torus", 1, {{100, 1}, {700, -1}}},
+    {"eight.off", 1, {{10, -1}, {900, -1}}},
+    {"disk", 1, {{140, 1}}},
+    {"grid with holes", 4, {{40, 1}, {300, -1}}},
+  };
+  for(const Case& k : cases)
+  {
+    const TestType mesh = make_case<TestType>(k.mesh);
+#define SD_RUN(Solver, label)                                                                      \
+    {                                                                                              \
+      INFO(k.mesh << ", n = " << k.n << ", solver " << label);                                     \
+      SD::Trivial_connection<TestType, Vpm<TestType>, Solver> tc(mesh, get(CGAL::vertex_point, mesh), k.n); \
+      const SDI::Mesh_indices<TestType>& idx = tc.indices();                                       \
+      std::map<Face<TestType>, int> prescribed;                                                    \
+      for(const auto& [f, i] : k.singularities)                                                    \
+      {                                                                                            \
+        tc.set_index(f, i);                                                                        \
+        prescribed[idx.face(f)] = i;                                                               \
+      }                                                                                            \
+      tc.solve();                                                                                  \
+      check_trivial_connection(mesh, tc, prescribed);                                              \
+    }
+    SD_FOR_EACH_SOLVER(SD_RUN)
+#undef SD_RUN
+  }
+}
+
+TEMPLATE_TEST_CASE("Trivial connections: re-solves, the one-call function, bad sums", "[direction_fields]",
+                   SD_MESH_TYPES)
+{
+  const TestType mesh = make_case<TestType>("sphere");
+  SD::Trivial_connection<TestType> tc(mesh);
+  const auto& idx = tc.indices();
+  const auto f1 = idx.face(10), f2 = idx.face(300), f3 = idx.face(420);
+  tc.set_index(f1, 1);
+  tc.set_index(f2, 1);
+  tc.solve();
+  tc.move_singularity(f2, f3);
+  tc.solve();
+  check_trivial_connection(mesh, tc, {{f1, 1}, {f3, 1}});
+
+  SD::Trivial_connection<TestType> fresh(mesh);
+  fresh.set_index(f1, 1);
+  fresh.set_index(f3, 1);
+  fresh.solve();
+  for(auto v : vertices(mesh))
+    REQUIRE(std::abs(SDI::wrap_angle(tc.angle(v) - fresh.angle(v))) < 1e-10);
+  REQUIRE(std::abs(tc.adjustment_norm2() - fresh.adjustment_norm2()) < 1e-10 * fresh.adjustment_norm2());
+
+  // the one-call function gives the same field
+  std::map<Face<TestType>, int> k{{f1, 1}, {f3, 1}};
+  Vector_map<TestType> field, expected;
+  SD::trivial_connection_field(mesh, boost::make_assoc_property_map(k), boost::make_assoc_property_map(field));
+  fresh.field(boost::make_assoc_property_map(expected));
+  for(auto v : vertices(mesh))
+    REQUIRE((to_eigen(field.at(v)) - to_eigen(expected.at(v))).norm() < 1e-10);
+
+  // Poincaré-Hopf violated: a clear message, nothing written
+  k[f3] = 0;
+  Vector_map<TestType> untouched;
+  try
+  {
+    SD::trivial_connection_field(mesh, boost::make_assoc_property_map(k), boost::make_assoc_property_map(untouched));
+    FAIL("no exception");
+  }
+  catch(const SD::Invalid_constraints& e)
+  {
+    const std::string what = e.what();
+    INFO(what);
+    REQUIRE(what.find("sum to 1 but must sum to 2") != std::string::npos);
+  }
+  REQUIRE(untouched.empty());
+  SD::Trivial_connection<TestType> cross(mesh, 4);
+  cross.set_index(f1, 1);
+  REQUIRE_THROWS_WITH(cross.solve(), Catch::Contains("sum to 1/4 but must sum to 2"));
+  REQUIRE_THROWS_AS(cross.set_index(std::size_t(100000), 1), SD::Invalid_constraints);
+  // a triangle cannot hold more than 1/n
+  SD::Trivial_connection<TestType> two(mesh);
+  two.set_index(f1, 2);
+  REQUIRE_THROWS_WITH(two.solve(), Catch::Contains("at most 1 in magnitude"));
+}
+
+TEMPLATE_TEST_CASE("Direction fields reject bad input and leave the mesh untouched", "[direction_fields]",
+                   SD_MESH_TYPES)
+{
+  Vector_map<TestType> field;
+  std::map<Face<TestType>, double> index;
+  {
+    const TestType empty;
+    REQUIRE_THROWS_AS(SD::smoothest_direction_field(empty, boost::make_assoc_property_map(field)), SD::Invalid_mesh);
+    REQUIRE_THROWS_AS(SD::Trivial_connection<TestType>(empty), SD::Invalid_mesh);
+  }
+  {
+    TestType quads;
+    CGAL::make_hexahedron(CGAL::Point_3<test::Kernel>(0, 0, 0), CGAL::Point_3<test::Kernel>(1, 0, 0),
+                          CGAL::Point_3<test::Kernel>(1, 1, 0), CGAL::Point_3<test::Kernel>(0, 1, 0),
+                          CGAL::Point_3<test::Kernel>(0, 1, 1), CGAL::Point_3<test::Kernel>(0, 0, 1),
+                          CGAL::Point_3<test::Kernel>(1, 0, 1), CGAL::Point_3<test::Kernel>(1, 1, 1), quads);
+    const test::Mesh_snapshot before(quads);
+    try
+    {
+      SD::smoothest_direction_field(quads, boost::make_assoc_property_map(field));
+      FAIL("no exception");
+    }
+    catch(const SD::Invalid_mesh& e)
+    {
+      REQUIRE(e.defect() == SD::Mesh_defect::not_triangle);
+    }
+    REQUIRE(test::Mesh_snapshot(quads) == before);
+  }
+  {
+    TestType degenerate = test::load_mesh<TestType>("degtri_four.off");
+    const test::Mesh_snapshot before(degenerate);
+    REQUIRE_THROWS_AS(SD::Trivial_connection<TestType>(degenerate), SD::Invalid_mesh);
+    REQUIRE(test::Mesh_snapshot(degenerate) == before);
+  }
+  REQUIRE(field.empty());
+
+  const TestType mesh = make_case<TestType>("sphere");
+  const test::Mesh_snapshot before(mesh);
+  REQUIRE_THROWS_AS(SD::smoothest_direction_field(mesh, boost::make_assoc_property_map(field),
+                                                  SD::parameters::symmetry_order(0)),
+                    SD::Invalid_constraints);
+  REQUIRE_THROWS_AS(SD::Trivial_connection<TestType>(mesh, -1), SD::Invalid_constraints);
+  // a zero or normal field vector makes the index undefined
+  for(auto v : vertices(mesh))
+    field[v] = Vector(1, 0, 0);
+  const auto v0 = *vertices(mesh).begin();
+  const SDI::Mesh_indices<TestType> idx(mesh);
+  const Eigen::Vector3d n0 = SDI::vertex_normals(idx, get(CGAL::vertex_point, mesh))[idx.index(v0)];
+  field[v0] = Vector(n0.x(), n0.y(), n0.z());
+  REQUIRE_THROWS_WITH(SD::direction_field_singularities(mesh, boost::make_assoc_property_map(field),
+                                                         boost::make_assoc_property_map(index)),
+                      Catch::Contains("no tangential component"));
+  field[v0] = Vector(std::nan(""), 0, 0);
+  REQUIRE_THROWS_WITH(SD::direction_field_singularities(mesh, boost::make_assoc_property_map(field),
+                                                         boost::make_assoc_property_map(index)),
+                      Catch::Contains("not finite"));
+  REQUIRE(index.empty());
+  REQUIRE(test::Mesh_snapshot(mesh) == before);
+}
