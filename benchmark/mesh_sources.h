@@ -86,6 +86,10 @@ inline const std::vector<Preset>& presets()
     {"storus", "scaling on all-acute staggered tori (every cotangent weight positive), ~1k to "
                "~250k faces",
      {"storus:1000", "storus:8000", "storus:63000", "storus:250000"}},
+    {"fields", "direction fields on the bunnies, 1k to 955k faces (the larger ones from ../shared)",
+     {"bundled:bunny_1k.off", "bundled:bunny_8k.off", "shared:bunny_60k.off",
+      "shared:bunny_loop1_239k.off", "shared:bunny_loop2_955k.off.gz"},
+     {"smoothest_field", "trivial_connection"}},
   };
   return table;
 }

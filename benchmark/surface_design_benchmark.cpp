@@ -10,6 +10,7 @@
 #include "report.h"
 #include "workload_laplacian.h"
 #include "workload_stripes.h"
+#include "workload_direction_fields.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -36,6 +37,12 @@ const std::vector<Workload>& workloads()
      "the same stripes by the paper's face-space solver (positive cotangent weights only); "
      "phases factor, field, solve, resolve, full",
      &stripes_face_space_workload},
+    {"smoothest_field", "smoothest vector field (smoothest_direction_field, n = 1); phase full",
+     &smoothest_field_workload},
+    {"trivial_connection",
+     "vector field with |chi| prescribed singularities per closed component (Trivial_connection); "
+     "phases factor, solve, resolve (one singularity moved), full = factor + solve",
+     &trivial_connection_workload},
   };
   return table;
 }

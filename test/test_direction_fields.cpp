@@ -256,6 +256,55 @@ TEMPLATE_TEST_CASE("Smoothest field on a sphere: the smallest eigenvalue, never 
   }
 }
 
+TEMPLATE_TEST_CASE("Complex and real forms of the Hermitian system give the same field", "[direction_fields]",
+                   SD_MESH_TYPES)
+{
+  // a solver traits type the library has no complex counterpart for: the real 2|V| form
+  using Real_form = CGAL::Eigen_solver_traits<Eigen::SimplicialLLT<CGAL::Eigen_sparse_matrix<double>::EigenType>>;
+  static_assert(!SDI::Hermitian_system<Real_form>::uses_complex_arithmetic());
+  static_assert(SDI::Hermitian_system<SD::Default_solver_traits>::uses_complex_arithmetic());
+  for(const std::string name : {"bunny_1k.off", "hemisphere.off"})
+    for(int n : {1, 4})
+    {
+      const TestType mesh = make_case<TestType>(name);
+      const SDI::Mesh_indices<TestType> idx(mesh);
+      const auto vpm = get(CGAL::vertex_point, mesh);
+      const SDI::Discrete_connection c = SDI::levi_civita_connection(idx, vpm);
+      const std::vector<double> mass = SDI::vertex_areas(idx, SDI::face_areas(idx, vpm));
+      Vector_map<TestType> complex_field, real_field;
+      const auto bc = name == "hemisphere.off" ? SD::Direction_field_boundary::tangent : SD::Direction_field_boundary::free;
+      const auto a = SD::smoothest_direction_field(
+        mesh, boost::make_assoc_property_map(complex_field),
+        SD::parameters::symmetry_order(n, SD::parameters::normalize_field(false, SD::parameters::field_boundary_condition(bc))));
+      const auto b = SD::smoothest_direction_field(
+        mesh, boost::make_assoc_property_map(real_field),
+        SD::parameters::symmetry_order(n, SD::parameters::normalize_field(false, SD::parameters::field_boundary_condition(
+                                              bc, SD::parameters::sparse_linear_solver(Real_form())))));
+      INFO(name << ", n = " << n);
+      REQUIRE(a.iterations == b.iterations);
+      if(bc == SD::Direction_field_boundary::free)
+        REQUIRE(std::abs(a.eigenvalues[0] - b.eigenvalues[0]) <= 1e-10 * a.eigenvalues[0]);
+      // the same complex field up to a global phase
+      const Eigen::VectorXd ua = complex_values(mesh, c, complex_field, n), ub = complex_values(mesh, c, real_field, n);
+      std::complex<double> inner = 0.;
+      double norm2 = 0.;
+      for(std::size_t v = 0; v < mass.size(); ++v)
+      {
+        const std::complex<double> za(ua[2 * v], ua[2 * v + 1]), zb(ub[2 * v], ub[2 * v + 1]);
+        inner += mass[v] * std::conj(zb) * za;
+        norm2 += mass[v] * std::norm(za);
+      }
+      const std::complex<double> phase = inner / std::abs(inner);
+      double difference = 0.;
+      for(std::size_t v = 0; v < mass.size(); ++v)
+      {
+        const std::complex<double> za(ua[2 * v], ua[2 * v + 1]), zb(ub[2 * v], ub[2 * v + 1]);
+        difference += mass[v] * std::norm(za - phase * zb);
+      }
+      REQUIRE(std::sqrt(difference / norm2) < 1e-8);
+    }
+}
+
 TEMPLATE_TEST_CASE("A planar disk gives a constant smoothest field", "[direction_fields]", SD_MESH_TYPES)
 {
   const TestType mesh = make_case<TestType>("disk");

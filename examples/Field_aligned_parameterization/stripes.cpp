@@ -6,9 +6,11 @@
 
 #include "../common/example_support.h"
 
+#include <CGAL/Surface_design/direction_fields.h>
 #include <CGAL/Surface_design/field_aligned_parameterization.h>
 #include <CGAL/Surface_design/Field_aligned_parameterizer.h>
 #include <CGAL/Surface_design/internal/geometry.h>
+#include <CGAL/Surface_design/Trivial_connection.h>
 
 #include <CGAL/Heat_method_3/Surface_mesh_geodesic_distances_3.h>
 
@@ -16,6 +18,7 @@
 #include <iostream>
 #include <map>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -36,7 +39,10 @@ const char* usage =
   "                            rotated by DEGREES in the tangent plane: 0 rings, 90 spokes, else\n"
   "                            spirals (spokes and spirals need --singularity at a face next to V;\n"
   "                            the faces around V are printed)\n"
-  "  --field smoothest         smoothest direction field (comes with the direction-field package)\n"
+  "  --field smoothest         smoothest vector field (Knöppel et al. 2013)\n"
+  "  --field trivial:FACE:INDEX,...   vector field with exactly these singularities (trivial\n"
+  "                            connection, Crane et al. 2010; indices sum to the Euler characteristic\n"
+  "                            on a closed surface)\n"
   "  --scale S                 stripes per unit length (default: 10 stripes across the bounding box)\n"
   "  --singularity FACE:INDEX  prescribe a singularity (repeatable); on a closed surface the\n"
   "                            indices must sum to 0 (boundary windings absorb the sum otherwise)\n"
@@ -56,20 +62,7 @@ struct Options
   SD::One_form_convention convention = SD::One_form_convention::projected;
 };
 
-std::pair<long, long> parse_pair(const std::string& s, const char* what)
-{
-  const auto colon = s.find(':');
-  try
-  {
-    if(colon == std::string::npos)
-      throw std::invalid_argument(s);
-    return {std::stol(s.substr(0, colon)), std::stol(s.substr(colon + 1))};
-  }
-  catch(const std::exception&)
-  {
-    throw std::invalid_argument(std::string("expected ") + what + ", got '" + s + "'");
-  }
-}
+using example::parse_pair;
 
 Options parse(int argc, char** argv)
 {
@@ -196,9 +189,34 @@ std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec)
     }
     return field;
   }
+  std::vector<Vector> field(num_vertices(mesh));
   if(spec == "smoothest")
-    throw std::invalid_argument("--field smoothest needs the direction-field package, which is not "
-                                "available yet; use --field axis:X,Y,Z or --field heat:V[:DEGREES]");
+  {
+    const auto info = SD::smoothest_direction_field(mesh, CGAL::make_property_map(field));
+    std::cout << "smoothest vector field: eigenvalue " << info.eigenvalues.front() << ", " << info.iterations
+              << " Lanczos steps\n";
+    return field;
+  }
+  if(spec.rfind("trivial:", 0) == 0)
+  {
+    // trivial:FACE:INDEX,FACE:INDEX,...
+    SD::Trivial_connection<Mesh> tc(mesh);
+    std::map<std::size_t, int> indices; // repeated faces add up
+    std::stringstream list(spec.substr(8));
+    for(std::string item; std::getline(list, item, ',');)
+    {
+      const auto [f, k] = parse_pair(item, "--field trivial:FACE:INDEX,FACE:INDEX,...");
+      if(f < 0)
+        throw std::invalid_argument("face numbers start at 0");
+      indices[std::size_t(f)] += int(k);
+    }
+    for(const auto& [f, k] : indices)
+      tc.set_index(f, k);
+    tc.solve();
+    tc.field(CGAL::make_property_map(field));
+    std::cout << "trivial-connection vector field: largest adjustment " << tc.largest_adjustment() << " rad\n";
+    return field;
+  }
   throw std::invalid_argument("unknown field " + spec);
 }
 

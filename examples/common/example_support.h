@@ -22,6 +22,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace example {
@@ -67,6 +68,22 @@ public:
 private:
   std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
 };
+
+/// Parses "A:B" into two integers; throws std::invalid_argument naming `what` otherwise.
+inline std::pair<long, long> parse_pair(const std::string& s, const char* what)
+{
+  const auto colon = s.find(':');
+  try
+  {
+    if(colon == std::string::npos)
+      throw std::invalid_argument(s);
+    return {std::stol(s.substr(0, colon)), std::stol(s.substr(colon + 1))};
+  }
+  catch(const std::exception&)
+  {
+    throw std::invalid_argument(std::string("expected ") + what + ", got '" + s + "'");
+  }
+}
 
 /// A named per-element column of a PLY element.
 struct Ply_property
@@ -175,7 +192,9 @@ struct Vtk_surface
 /// ignores any user configuration of f3d. f3d's exit code does not tell whether it rendered, so
 /// success is judged by the PNG file. Returns false, with a message, if f3d is unavailable or fails.
 inline bool render_png(const std::string& vtk, const std::string& png, const std::string& scalar = "",
-                       double lo = -1., double hi = 1., const std::string& up = "+Y")
+                       double lo = -1., double hi = 1., const std::string& up = "+Y",
+                       const std::string& colormap =
+                         "0,0.1,0.18,0.42,0.4,0.1,0.18,0.42,0.6,0.96,0.9,0.78,1,0.96,0.9,0.78")
 {
   const bool has_display = std::getenv("DISPLAY") != nullptr;
   if(std::system("command -v f3d >/dev/null 2>&1") != 0 ||
@@ -191,7 +210,7 @@ inline bool render_png(const std::string& vtk, const std::string& png, const std
       << " --roughness=0.8 --up=" << up << " -a";
   if(!scalar.empty())
     cmd << " --scalars=" << scalar << " --range=" << lo << ',' << hi
-        << " --colormap=0,0.1,0.18,0.42,0.4,0.1,0.18,0.42,0.6,0.96,0.9,0.78,1,0.96,0.9,0.78";
+        << " --colormap=" << colormap;
   cmd << " >/dev/null 2>&1";
   std::remove(png.c_str());
   // xvfb-run can lose a race for a display number: try once more before giving up

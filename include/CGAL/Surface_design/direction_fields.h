@@ -12,6 +12,7 @@
 #include <CGAL/Surface_design/internal/discrete_connection.h>
 #include <CGAL/Surface_design/internal/Factored_system.h>
 #include <CGAL/Surface_design/internal/geometry.h>
+#include <CGAL/Surface_design/internal/Hermitian_system.h>
 #include <CGAL/Surface_design/internal/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/shift_invert_lanczos.h>
 #include <CGAL/Surface_design/internal/topology.h>
@@ -64,16 +65,16 @@ struct Smoothest_direction_field_info
 
 namespace internal {
 
-/// The connection Laplacian of n-direction fields as a real symmetric matrix of size 2|V|
-/// (unknowns Re u_v, Im u_v interleaved): the Hermitian form
-///   E(u) = sum_edges w_ij |u_j - r_ij^n u_i|^2,  r_ij = exp(i rho_ij),
-/// with w the given edge weights (cotangent weights: the Dirichlet energy of the field).
+/// The connection Laplacian of n-direction fields, the Hermitian |V| x |V| matrix A of
+///   E(u) = u^H A u = sum_edges w_ij |u_j - r_ij^n u_i|^2,  r_ij = exp(i rho_ij),
+/// with w the given edge weights (cotangent weights: the Dirichlet energy of the field):
+/// A_ii = sum_j w_ij, A_ji = -w_ij r_ij^n, A_ij = conj(A_ji).
 template <class Indices>
-Sparse_matrix connection_laplacian(const Indices& idx, const Discrete_connection& c,
-                                   const std::vector<double>& weight, int n)
+Complex_sparse_matrix complex_connection_laplacian(const Indices& idx, const Discrete_connection& c,
+                                                   const std::vector<double>& weight, int n)
 {
-  std::vector<Eigen::Triplet<double>> t;
-  t.reserve(8 * idx.number_of_edges() + 2 * idx.number_of_vertices());
+  std::vector<Eigen::Triplet<std::complex<double>>> t;
+  t.reserve(2 * idx.number_of_edges() + idx.number_of_vertices());
   std::vector<double> diagonal(idx.number_of_vertices(), 0.);
   for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
   {
@@ -82,26 +83,24 @@ Sparse_matrix connection_laplacian(const Indices& idx, const Discrete_connection
     const double w = weight[e];
     diagonal[ij.first] += w;
     diagonal[ij.second] += w;
-    // A_ji = -w r (complex), A_ij = conj(A_ji); complex p + iq is the real block [p -q; q p]
-    const double p = -w * std::cos(n * c.rho[e]), q = -w * std::sin(n * c.rho[e]);
-    t.emplace_back(2 * j, 2 * i, p);
-    t.emplace_back(2 * j, 2 * i + 1, -q);
-    t.emplace_back(2 * j + 1, 2 * i, q);
-    t.emplace_back(2 * j + 1, 2 * i + 1, p);
-    t.emplace_back(2 * i, 2 * j, p);
-    t.emplace_back(2 * i, 2 * j + 1, q);
-    t.emplace_back(2 * i + 1, 2 * j, -q);
-    t.emplace_back(2 * i + 1, 2 * j + 1, p);
+    const std::complex<double> a_ji = -w * std::polar(1., n * c.rho[e]);
+    t.emplace_back(j, i, a_ji);
+    t.emplace_back(i, j, std::conj(a_ji));
   }
   for(std::size_t v = 0; v < diagonal.size(); ++v)
-  {
-    t.emplace_back(Eigen::Index(2 * v), Eigen::Index(2 * v), diagonal[v]);
-    t.emplace_back(Eigen::Index(2 * v + 1), Eigen::Index(2 * v + 1), diagonal[v]);
-  }
-  const Eigen::Index size = Eigen::Index(2 * idx.number_of_vertices());
-  Sparse_matrix a(size, size);
+    t.emplace_back(Eigen::Index(v), Eigen::Index(v), diagonal[v]);
+  const Eigen::Index size = Eigen::Index(idx.number_of_vertices());
+  Complex_sparse_matrix a(size, size);
   a.setFromTriplets(t.begin(), t.end());
   return a;
+}
+
+/// The same as a real symmetric matrix of size 2|V| (unknowns Re u_v, Im u_v interleaved).
+template <class Indices>
+Sparse_matrix connection_laplacian(const Indices& idx, const Discrete_connection& c,
+                                   const std::vector<double>& weight, int n)
+{
+  return realify(complex_connection_laplacian(idx, c, weight, n));
 }
 
 /// The traceless part of the shape operator at every vertex as a complex number in the vertex
@@ -282,16 +281,21 @@ Smoothest_direction_field_info smoothest_direction_field(const TriangleMesh& tm,
   const bool any_eigen = std::find(eigen_component.begin(), eigen_component.end(), true) != eigen_component.end();
 
   // The system matrix: A + s M with s = eps (eigenproblem) or t * V / area (alignment);
-  // Dirichlet rows and columns replaced by the identity.
-  internal::Sparse_matrix a = internal::connection_laplacian(idx, conn, weight, n);
+  // Dirichlet rows and columns replaced by the identity. Vectors are complex, stored with
+  // (Re, Im) interleaved in real vectors.
+  internal::Complex_sparse_matrix a = internal::complex_connection_laplacian(idx, conn, weight, n);
+  const internal::Complex_sparse_matrix a_energy = a;
   double total_mass = 0.;
   for(double m : mass)
     total_mass += m;
-  const double eps_shift = 1e-8 * a.diagonal().sum() / (2. * total_mass);
+  const double eps_shift = 1e-8 * a.diagonal().real().sum() / total_mass;
   const double mass_scale = double(nv) / total_mass; // m~ = mass_scale * m
   std::vector<double> shift(nv);
   for(std::size_t v = 0; v < nv; ++v)
     shift[v] = (eigen_component[comps.vertex_component[v]] ? eps_shift : alignment * mass_scale) * mass[v];
+  auto as_complex = [nv](Eigen::VectorXd& u) {
+    return Eigen::Map<Eigen::VectorXcd>(reinterpret_cast<std::complex<double>*>(u.data()), Eigen::Index(nv));
+  };
 
   Eigen::VectorXd rhs_fixed = Eigen::VectorXd::Zero(Eigen::Index(2 * nv)); // constant part of the rhs
   if(alignment > 0.)
@@ -307,31 +311,25 @@ Smoothest_direction_field_info smoothest_direction_field(const TriangleMesh& tm,
       throw Invalid_constraints("curvature alignment is undefined on this mesh: its curvature tensor "
                                 "vanishes everywhere (a planar surface has no principal directions)");
     for(std::size_t v = 0; v < nv; ++v)
-    {
-      rhs_fixed[Eigen::Index(2 * v)] = shift[v] * q[v].real() / rms;
-      rhs_fixed[Eigen::Index(2 * v + 1)] = shift[v] * q[v].imag() / rms;
-    }
+      as_complex(rhs_fixed)[Eigen::Index(v)] = shift[v] * q[v] / rms;
   }
   if(boundary != Direction_field_boundary::free)
   {
-    const Eigen::VectorXd coupling = a * fixed_value;
+    const Eigen::VectorXcd coupling = a * as_complex(fixed_value);
     for(std::size_t v = 0; v < nv; ++v)
-      for(int k = 0; k < 2; ++k)
-      {
-        const Eigen::Index r = Eigen::Index(2 * v + std::size_t(k));
-        rhs_fixed[r] = fixed[v] ? fixed_value[r] : rhs_fixed[r] - coupling[r];
-      }
-    a.prune([&fixed](Eigen::Index i, Eigen::Index j, double) {
-      return !fixed[std::size_t(i / 2)] && !fixed[std::size_t(j / 2)];
+    {
+      const Eigen::Index r = Eigen::Index(v);
+      as_complex(rhs_fixed)[r] = fixed[v] ? as_complex(fixed_value)[r] : as_complex(rhs_fixed)[r] - coupling[r];
+    }
+    a.prune([&fixed](Eigen::Index i, Eigen::Index j, const std::complex<double>&) {
+      return !fixed[std::size_t(i)] && !fixed[std::size_t(j)];
     });
   }
   for(std::size_t v = 0; v < nv; ++v)
-    for(Eigen::Index k = 0; k < 2; ++k)
-      a.coeffRef(Eigen::Index(2 * v) + k, Eigen::Index(2 * v) + k) += fixed[v] ? 1. : shift[v];
+    a.coeffRef(Eigen::Index(v), Eigen::Index(v)) += fixed[v] ? 1. : shift[v];
   a.makeCompressed();
 
-  const internal::Sparse_matrix a_energy = internal::connection_laplacian(idx, conn, weight, n);
-  internal::Factored_system<Solver> system(
+  internal::Hermitian_system<Solver> system(
     choose_parameter<Solver>(get_parameter(np, CGAL::internal_np::sparse_linear_solver)),
     "connection Laplacian");
   system.factor(std::move(a));
@@ -363,12 +361,13 @@ Smoothest_direction_field_info smoothest_direction_field(const TriangleMesh& tm,
       if(eigen_component[group[std::size_t(r)]])
         x[r] = eig.x[r];
     // the normalized energy of the result, from A itself
-    const Eigen::VectorXd ax = a_energy * x;
+    const Eigen::VectorXcd ax = a_energy * as_complex(x);
     std::vector<double> num(nc, 0.), den(nc, 0.);
-    for(std::size_t r = 0; r < group.size(); ++r)
+    for(std::size_t v = 0; v < nv; ++v)
     {
-      num[group[r]] += x[Eigen::Index(r)] * ax[Eigen::Index(r)];
-      den[group[r]] += mass2[Eigen::Index(r)] * x[Eigen::Index(r)] * x[Eigen::Index(r)];
+      const std::complex<double> u = as_complex(x)[Eigen::Index(v)];
+      num[comps.vertex_component[v]] += (std::conj(u) * ax[Eigen::Index(v)]).real();
+      den[comps.vertex_component[v]] += mass[v] * std::norm(u);
     }
     for(std::size_t c = 0; c < nc; ++c)
       if(eigen_component[c])

@@ -44,15 +44,30 @@ Lanczos_result largest_eigenvectors_by_group(Solve&& solve, const Eigen::VectorX
 {
   const std::size_t G = active.size();
   const Eigen::Index N = mass.size();
+  // one group (a connected mesh): plain vectorized products
+  const bool single = G == 1;
   auto dots = [&](const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
     std::vector<double> d(G, 0.);
-    for(Eigen::Index r = 0; r < N; ++r)
-      d[group_of_row[std::size_t(r)]] += mass[r] * a[r] * b[r];
+    if(single)
+      d[0] = mass.cwiseProduct(a).dot(b);
+    else
+      for(Eigen::Index r = 0; r < N; ++r)
+        d[group_of_row[std::size_t(r)]] += mass[r] * a[r] * b[r];
     return d;
   };
   auto scale_by_group = [&](Eigen::VectorXd& a, const std::vector<double>& s) {
-    for(Eigen::Index r = 0; r < N; ++r)
-      a[r] *= s[group_of_row[std::size_t(r)]];
+    if(single)
+      a *= s[0];
+    else
+      for(Eigen::Index r = 0; r < N; ++r)
+        a[r] *= s[group_of_row[std::size_t(r)]];
+  };
+  auto subtract_by_group = [&](Eigen::VectorXd& w, const std::vector<double>& c, const Eigen::VectorXd& q) {
+    if(single)
+      w -= c[0] * q;
+    else
+      for(Eigen::Index r = 0; r < N; ++r)
+        w[r] -= c[group_of_row[std::size_t(r)]] * q[r];
   };
   auto inverse_norms = [&](const std::vector<double>& n2) {
     std::vector<double> s(G, 0.);
@@ -87,8 +102,7 @@ Lanczos_result largest_eigenvectors_by_group(Solve&& solve, const Eigen::VectorX
           const std::vector<double> c = dots(q[i], w);
           for(std::size_t g = 0; g < G; ++g)
             h[g](Eigen::Index(i), Eigen::Index(j)) += c[g];
-          for(Eigen::Index r = 0; r < N; ++r)
-            w[r] -= c[group_of_row[std::size_t(r)]] * q[i][r];
+          subtract_by_group(w, c, q[i]);
         }
       const std::vector<double> beta2 = dots(w, w);
 
@@ -116,12 +130,12 @@ Lanczos_result largest_eigenvectors_by_group(Solve&& solve, const Eigen::VectorX
         // Ritz vectors, group by group
         Eigen::VectorXd x = Eigen::VectorXd::Zero(N);
         for(std::size_t i = 0; i <= j; ++i)
-          for(Eigen::Index r = 0; r < N; ++r)
-          {
-            const std::size_t g = group_of_row[std::size_t(r)];
-            if(active[g])
-              x[r] += ritz[g][Eigen::Index(i)] * q[i][r];
-          }
+        {
+          std::vector<double> c(G, 0.);
+          for(std::size_t g = 0; g < G; ++g)
+            c[g] = active[g] ? -ritz[g][Eigen::Index(i)] : 0.;
+          subtract_by_group(x, c, q[i]);
+        }
         scale_by_group(x, inverse_norms(dots(x, x)));
         out.x = x;
         break;
