@@ -42,7 +42,7 @@
 
 namespace benchmark {
 
-enum class Mesh_origin { bundled, shared, sphere, torus, staggered_torus };
+enum class Mesh_origin { bundled, shared, sphere, torus, staggered_torus, octahedron };
 
 /// A parsed `--mesh` argument. Its text (`spec`) names the mesh in every report.
 struct Mesh_source
@@ -90,6 +90,17 @@ inline const std::vector<Preset>& presets()
      {"bundled:bunny_1k.off", "bundled:bunny_8k.off", "shared:bunny_60k.off",
       "shared:bunny_loop1_239k.off", "shared:bunny_loop2_955k.off.gz"},
      {"smoothest_field", "trivial_connection"}},
+    // barycentric embedding (Imafuji & Ochiai): the octahedron of the paper's Table 1 and 2
+    {"table1", "the paper's Table 1: octahedron m = 4, 8, 12, direct vs iterative",
+     {"octahedron:4", "octahedron:8", "octahedron:12"},
+     {"embedding", "embedding_iterative"}},
+    {"table2", "the paper's Table 2: 10 deformation steps on the octahedron m = 4, 8, 12, against "
+               "the iteration and PMP::fair",
+     {"octahedron:4", "octahedron:8", "octahedron:12"},
+     {"deformation", "deformation_iterative", "deformation_vs_fair", "deformation_fair"}},
+    {"embedding_sizes", "barycentric embedding scaling: octahedra of ~62k, 241k and 1M vertices",
+     {"octahedron:50", "octahedron:100", "octahedron:204"},
+     {"embedding", "deformation"}},
   };
   return table;
 }
@@ -145,6 +156,16 @@ inline bool parse_mesh_source(const std::string& spec, Mesh_source& source, std:
     {
       error = "mesh source \"" + spec + "\": the face count must be a positive integer "
               "(optionally with suffix k or M)";
+      return false;
+    }
+    return true;
+  }
+  if(kind == "octahedron")
+  {
+    source.origin = Mesh_origin::octahedron;
+    if(!parse_face_count(argument, source.faces)) // here: segments per hexagon side
+    {
+      error = "mesh source \"" + spec + "\": the number of segments must be a positive integer";
       return false;
     }
     return true;
@@ -238,6 +259,8 @@ inline Load_status load_mesh(const Mesh_source& source, Mesh& mesh, std::string&
     const std::size_t major_segments = std::size_t(std::round(2.5 * double(minor_segments)));
     CGAL::Surface_design::make_torus(mesh, major_segments, minor_segments);
   }
+  else if(source.origin == Mesh_origin::octahedron)
+    CGAL::Surface_design::make_octahedron_membrane(mesh, source.faces); // radius 1, loops at 3
   else if(source.origin == Mesh_origin::staggered_torus)
   {
     // 2 * major * minor faces; staggered rings with R = 1, r = 0.3, an even minor count and

@@ -11,6 +11,7 @@
 #include "workload_laplacian.h"
 #include "workload_stripes.h"
 #include "workload_direction_fields.h"
+#include "workload_embedding.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -43,6 +44,24 @@ const std::vector<Workload>& workloads()
      "vector field with |chi| prescribed singularities per closed component (Trivial_connection); "
      "phases factor, solve, resolve (one singularity moved), full = factor + solve",
      &trivial_connection_workload},
+    {"embedding",
+     "barycentric embedding, uniform weights, boundary fixed (Barycentric_embedder); phases factor, "
+     "update, full = factor + update",
+     &embedding_workload, Solver_use::compared, "embedding_iterative"},
+    {"embedding_iterative", "the paper's iterative method 2 (area change < 1e-6); phase full",
+     &embedding_iterative_workload},
+    {"deformation",
+     "Table 2: factor once, then 10 steps moving the top and bottom fixed vertices + update(); "
+     "phases factor, updates, full",
+     &deformation_workload, Solver_use::compared, "deformation_iterative"},
+    {"deformation_iterative", "the 10 deformation steps by the iterative method 2; phase full",
+     &deformation_iterative_workload},
+    {"deformation_vs_fair", "the same as deformation, compared with PMP::fair",
+     &deformation_workload, Solver_use::compared, "deformation_fair"},
+    {"deformation_fair",
+     "the 10 deformation steps by PMP::fair (continuity 0, uniform weights, refactors each call); "
+     "phase full",
+     &deformation_fair_workload},
   };
   return table;
 }
@@ -76,6 +95,7 @@ const char* const usage =
   "                   sphere:F      generated sphere of about F faces (F may end in k or M)\n"
   "                   torus:F       generated torus of about F faces\n"
   "                   storus:F      generated all-acute (staggered) torus of about F faces\n"
+  "                   octahedron:M  Imafuji & Ochiai's octahedron, M segments per hexagon side\n"
   "                   (repeatable; default: preset quick)\n"
   "  --preset NAME    a named list of meshes (repeatable; see --list); without --workload,\n"
   "                   runs the workloads the preset is meant for\n"

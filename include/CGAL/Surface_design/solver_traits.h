@@ -11,6 +11,7 @@
 #include <CGAL/Eigen_matrix.h>
 
 #include <Eigen/SparseCholesky>
+#include <Eigen/SparseLU>
 
 #if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
 #include <Eigen/CholmodSupport>
@@ -54,6 +55,14 @@ using Metis_ldlt_solver_traits =
   CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::EigenType,
                                                   Eigen::Lower, Eigen::MetisOrdering<int>>>;
 #endif
+
+/// \ingroup PkgSurfaceDesignRef
+/// Eigen's sparse LU factorization (`SparseLU`, COLAMD ordering) behind `CGAL::Eigen_solver_traits`:
+/// for the systems of the library that are not symmetric (e.g. barycentric embeddings with
+/// mean-value weights). Header-only, like the default.
+using Sparse_lu_solver_traits =
+  CGAL::Eigen_solver_traits<Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType,
+                                            Eigen::COLAMDOrdering<int>>>;
 
 } // namespace Surface_design
 } // namespace CGAL

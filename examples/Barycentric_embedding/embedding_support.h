@@ -1,0 +1,101 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Helpers of the barycentric-embedding examples: a picture of a polygon mesh coloured by a vertex
+// scalar (faces fanned into triangles for VTK), surface area, strict number parsing.
+
+#ifndef CGAL_SURFACE_DESIGN_EXAMPLES_EMBEDDING_SUPPORT_H
+#define CGAL_SURFACE_DESIGN_EXAMPLES_EMBEDDING_SUPPORT_H
+
+#include "../common/example_support.h"
+
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace example {
+
+/// Writes `vtk` (faces fanned into triangles, vertex normals, the scalar `values`) and renders it
+/// to `png` with f3d, coloured over [lo, hi]. Returns false (with a message) without f3d.
+inline bool picture(const Mesh& mesh, const std::vector<double>& values, const std::string& name,
+                    double lo, double hi, const std::string& vtk, const std::string& png,
+                    const std::string& up = "+Z")
+{
+  Vtk_surface s;
+  s.scalar_name = name;
+  s.scalars = values;
+  for(auto v : vertices(mesh))
+  {
+    const Point& p = mesh.point(v);
+    s.points.push_back({p.x(), p.y(), p.z()});
+    const Vector n = CGAL::Polygon_mesh_processing::compute_vertex_normal(v, mesh);
+    s.normals.push_back({n.x(), n.y(), n.z()});
+  }
+  for(auto f : faces(mesh))
+  {
+    std::vector<std::size_t> cycle;
+    for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+      cycle.push_back(std::size_t(v));
+    for(std::size_t k = 1; k + 1 < cycle.size(); ++k)
+      s.triangles.push_back({cycle[0], cycle[k], cycle[k + 1]});
+  }
+  s.write(vtk);
+  return render_png(vtk, png, name, lo, hi, up);
+}
+
+/// Sum of the face areas (faces fanned into triangles).
+inline double surface_area(const Mesh& mesh)
+{
+  double area = 0.;
+  for(auto f : faces(mesh))
+  {
+    std::vector<Point> p;
+    for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+      p.push_back(mesh.point(v));
+    for(std::size_t k = 1; k + 1 < p.size(); ++k)
+      area += std::sqrt(CGAL::squared_area(p[0], p[k], p[k + 1]));
+  }
+  return area;
+}
+
+/// Parses a whole string as a number, or throws naming the option.
+inline double parse_double(const std::string& text, const std::string& option)
+{
+  std::size_t used = 0;
+  double value = 0.;
+  try
+  {
+    value = std::stod(text, &used);
+  }
+  catch(const std::exception&)
+  {
+    used = 0;
+  }
+  if(used == 0 || used != text.size())
+    throw std::invalid_argument(option + " expects a number, not \"" + text + "\"");
+  return value;
+}
+
+/// The value of option argv[i] (argv[i + 1]), advancing i; throws if it is missing.
+inline std::string option_value(int argc, char** argv, int& i)
+{
+  if(i + 1 >= argc)
+    throw std::invalid_argument(std::string(argv[i]) + " needs a value");
+  return argv[++i];
+}
+
+inline std::size_t parse_count(const std::string& text, const std::string& option)
+{
+  const double value = parse_double(text, option);
+  if(!(value >= 1.) || value != double(std::size_t(value)))
+    throw std::invalid_argument(option + " expects a positive integer, not \"" + text + "\"");
+  return std::size_t(value);
+}
+
+} // namespace example
+
+#endif // CGAL_SURFACE_DESIGN_EXAMPLES_EMBEDDING_SUPPORT_H

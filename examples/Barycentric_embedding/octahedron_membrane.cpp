@@ -1,0 +1,126 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// octahedron_membrane: the example surface of Imafuji & Ochiai (Fig. 2, Table 1). An octahedron
+// whose six vertices are circular holes (loops L1..L6 in the planes z, x, y = +-3) and whose faces
+// are hexagons triangulated with m segments per side; the loops are fixed, every other vertex goes
+// to the barycentre of its neighbours in one sparse solve.
+
+#include "embedding_support.h"
+
+#include <CGAL/Surface_design/barycentric_embedding.h>
+#include <CGAL/Surface_design/mesh_generators.h>
+
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace SD = CGAL::Surface_design;
+using example::Mesh;
+
+namespace {
+
+const char* usage =
+  "usage: octahedron_membrane --m M --radius R [options]\n"
+  "  The octahedron surface of Imafuji & Ochiai: 6 circular loops of radius R in the planes\n"
+  "  z = 3, z = -3, x = 3, y = 3, x = -3, y = -3 (centred on the axes), 8 hexagons with M\n"
+  "  segments per side; the loops are fixed, the other vertices at the barycentre of their\n"
+  "  neighbours. Prints: vertices V triangles T area A\n"
+  "options:\n"
+  "  --placement equal|radial  loop vertices at equal angles (default) or the truncated\n"
+  "                            octahedron's lattice points projected radially on the circle\n"
+  "  --iterative               also run the paper's iterative method 2 (until the area changes\n"
+  "                            by < 1e-6) from the flat starting positions; prints its steps\n"
+  "  --output OUT.off          write the surface (any format CGAL writes: .off, .ply, .obj...)\n"
+  "  --picture OUT.png         picture of the surface, rendered with f3d\n";
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  try
+  {
+    std::size_t m = 0;
+    double radius = 0.;
+    bool iterative = false;
+    std::string output, png;
+    SD::Octahedron_loop_placement placement = SD::Octahedron_loop_placement::equal_angles;
+    for(int i = 1; i < argc; ++i)
+    {
+      const std::string a = argv[i];
+      auto value = [&] { return example::option_value(argc, argv, i); };
+      if(a == "--m")
+        m = example::parse_count(value(), a);
+      else if(a == "--radius")
+        radius = example::parse_double(value(), a);
+      else if(a == "--output")
+        output = value();
+      else if(a == "--picture")
+        png = value();
+      else if(a == "--iterative")
+        iterative = true;
+      else if(a == "--placement")
+      {
+        const std::string p = value();
+        if(p != "equal" && p != "radial")
+          throw std::invalid_argument("--placement is equal or radial, not " + p);
+        placement = p == "equal" ? SD::Octahedron_loop_placement::equal_angles
+                                 : SD::Octahedron_loop_placement::radial_projection;
+      }
+      else
+        throw std::invalid_argument("unknown option " + a);
+    }
+    if(m == 0 || !(radius > 0.))
+    {
+      std::cerr << usage;
+      return 2;
+    }
+
+    Mesh mesh;
+    const auto loops = SD::make_octahedron_membrane(mesh, m, radius, 3., placement);
+    std::vector<Mesh::Vertex_index> fixed;
+    for(const auto& loop : loops)
+      fixed.insert(fixed.end(), loop.begin(), loop.end());
+    Mesh flat = mesh; // the starting positions of the iterative method
+
+    example::Stopwatch clock;
+    SD::barycentric_embedding(mesh, fixed);
+    const double direct_ms = clock.lap();
+    std::printf("vertices %zu triangles %zu area %.6f\n", std::size_t(num_vertices(mesh)),
+                std::size_t(num_faces(mesh)), example::surface_area(mesh));
+    std::fprintf(stderr, "direct solve: %.3f ms\n", direct_ms);
+
+    if(iterative)
+    {
+      clock.lap();
+      const SD::Iterative_embedding_result r = SD::barycentric_embedding_iterative(flat, fixed);
+      const double ms = clock.lap();
+      double gap = 0.;
+      for(auto v : vertices(mesh))
+        gap = (std::max)(gap, std::sqrt(CGAL::squared_distance(mesh.point(v), flat.point(v))));
+      std::printf("iterative iterations %zu area %.6f max-distance-to-direct %.3g%s\n", r.iterations,
+                  r.area, gap, r.converged ? "" : " (not converged)");
+      std::fprintf(stderr, "iterative: %.3f ms (%.1f x the direct solve)\n", ms, ms / direct_ms);
+    }
+    if(!output.empty() && !CGAL::IO::write_polygon_mesh(output, mesh, CGAL::parameters::stream_precision(17)))
+      throw std::runtime_error("cannot write " + output);
+    if(!png.empty())
+    {
+      std::vector<double> height;
+      for(auto v : vertices(mesh))
+        height.push_back(mesh.point(v).z());
+      const std::string vtk = png.substr(0, png.rfind('.')) + ".vtk";
+      if(example::picture(mesh, height, "z", -3., 3., vtk, png))
+        std::cerr << "wrote " << png << "\n";
+    }
+    return 0;
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "octahedron_membrane: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,291 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Non-iterative "nice" (barycentric) embedding with fixed vertices (Imafuji & Ochiai): every free
+// vertex at the (weighted) barycentre of its neighbours, by one sparse factorization reused for
+// every later position of the fixed vertices.
+
+#ifndef CGAL_SURFACE_DESIGN_BARYCENTRIC_EMBEDDER_H
+#define CGAL_SURFACE_DESIGN_BARYCENTRIC_EMBEDDER_H
+
+#include <CGAL/Surface_design/exceptions.h>
+#include <CGAL/Surface_design/internal/barycentric_stencil.h>
+#include <CGAL/Surface_design/internal/dec.h>
+#include <CGAL/Surface_design/internal/Factored_system.h>
+#include <CGAL/Surface_design/internal/geometry.h>
+#include <CGAL/Surface_design/internal/Mesh_indices.h>
+#include <CGAL/Surface_design/parameters.h>
+#include <CGAL/Surface_design/solver_traits.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+
+#include <Eigen/Core>
+#include <Eigen/Sparse>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <cstddef>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_design {
+
+/// \ingroup PkgBarycentricEmbeddingRef
+///
+/// Places every free vertex of a polygon mesh at the weighted barycentre of its neighbours, the
+/// fixed vertices staying where they are (Imafuji & Ochiai, "nice embedding"): factors the system
+/// once for a connectivity, a fixed set and weights, then `update()` re-solves by
+/// back-substitution whenever the fixed vertices move.
+///
+/// **The problem** (paper, sec. 2). With x_i the position of vertex i and w_ij the weight of
+/// neighbour j at i, every free vertex i satisfies
+///   sum_j w_ij (x_i - x_j) = 0,   i.e.   x_i = sum_j w_ij x_j / sum_j w_ij.
+/// Splitting the unknowns into free (f) and fixed (c) vertices gives, per coordinate,
+///   L_ff x_f = -L_fc x_c = C x_c,
+/// with L the weighted graph Laplacian (L_ii = sum_j w_ij, L_ij = -w_ij). This is the paper's
+/// eq. (2), (E - A) C_I = B C_O, multiplied row by row by the degree: the limit of its
+/// iteration C <- F C (method 2) obtained in one solve (method 1). The fixed positions only
+/// enter the right-hand side, so moving them costs three back-substitutions.
+///
+/// **Which solver.** Uniform weights (the paper's, the default) and cotangent weights give a
+/// symmetric L_ff, factored by `SolverTraits` (an LDLT or Cholesky factorization). It is positive
+/// definite as soon as every connected component with a free vertex has a fixed vertex (which
+/// the constructor checks): L_ff is a principal submatrix of a positive semi-definite matrix
+/// whose kernel is the constants per component. For cotangent weights this holds even with
+/// negative weights, because the cotangent Laplacian is the P1 stiffness matrix, but then a free
+/// vertex may leave the convex hull of its neighbours (no Tutte guarantee). Should a
+/// factorization still find a non-positive pivot (a numerically singular system), the
+/// constructor throws `Linear_solver_failure` naming the pivot. Mean-value weights are positive
+/// but not symmetric (w_ij != w_ji): that system is factored by a sparse LU
+/// (`Sparse_lu_solver_traits`) whatever `SolverTraits` is, and solved exactly as posed: no
+/// symmetrization, so every free vertex is exactly the mean-value barycentre of its neighbours.
+///
+/// Weights of a reference geometry (cotangent, mean value) are computed once, in the constructor,
+/// from `reference_point_map` (default: the vertex point map at that moment): moving the fixed
+/// vertices later does not change them.
+///
+/// \tparam PolygonMesh a model of `FaceListGraph` and `HalfedgeListGraph` (any polygon faces;
+///         triangles for cotangent weights)
+/// \tparam VertexPointMap a readable and writable property map from vertices to `Point_3`
+/// \tparam SolverTraits a model of `SparseLinearAlgebraWithFactorTraits_d` for symmetric positive
+///         definite systems. Copies of a `CGAL::Eigen_solver_traits` share one factorization:
+///         give every object its own solver (the default does).
+template <class PolygonMesh,
+          class VertexPointMap = typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type,
+          class SolverTraits = Default_solver_traits>
+class Barycentric_embedder
+{
+  using GT = boost::graph_traits<PolygonMesh>;
+  using Indices = internal::Mesh_indices<PolygonMesh>;
+  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+
+public:
+  using vertex_descriptor = typename GT::vertex_descriptor;
+
+  /// Validates the input, computes the weights and factors the system of the free vertices.
+  /// The connectivity, the fixed set and the weights are final; the fixed positions are read by
+  /// `update()`. The mesh's connectivity must not change while this object is used.
+  ///
+  /// \param pm the mesh
+  /// \param fixed_vertices either a readable vertex -> bool property map (true: fixed) or a
+  ///        range of the fixed vertex descriptors
+  /// \param np optional named parameters among:
+  /// - `vertex_point_map`: where positions are read and written; default
+  ///   `get(CGAL::vertex_point, pm)`
+  /// - `weighting` (`Barycentric_weighting`): default `uniform` (the paper's)
+  /// - `reference_point_map`: readable vertex -> `Point_3` map of the geometry the cotangent or
+  ///   mean-value weights are computed from; default: `vertex_point_map`
+  /// - `sparse_linear_solver`: a `SolverTraits` object; default `SolverTraits()`
+  ///
+  /// \throws Invalid_mesh the mesh is empty, not manifold, has non-finite coordinates, or (for
+  ///         weights of a reference geometry) degenerate faces or edges there; cotangent weights
+  ///         also need triangles
+  /// \throws Invalid_constraints a connected component with free vertices has no fixed vertex
+  ///         (the system would be singular), or a vertex of the range is not in the mesh
+  /// \throws Linear_solver_failure the factorization fails
+  /// Nothing is written on failure (nor on success: positions are written by `update()`).
+  /// Complexity: O(|V| + |E|) plus one sparse factorization of size #free vertices.
+  template <class FixedVertices, class NamedParameters = CGAL::parameters::Default_named_parameters>
+  Barycentric_embedder(PolygonMesh& pm, const FixedVertices& fixed_vertices,
+                       const NamedParameters& np = CGAL::parameters::default_values())
+    : m_pm(pm),
+      m_vpm(CGAL::parameters::choose_parameter<VertexPointMap>(
+        CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+        get_property_map(CGAL::vertex_point, pm))),
+      m_idx(pm),
+      m_weighting(CGAL::parameters::choose_parameter(
+        CGAL::parameters::get_parameter(np, internal_np::weighting), Barycentric_weighting::uniform)),
+      m_symmetric(CGAL::parameters::choose_parameter<SolverTraits>(
+                    CGAL::parameters::get_parameter(np, CGAL::internal_np::sparse_linear_solver)),
+                  std::string("barycentric system of the free vertices (") + to_string(m_weighting) +
+                    " weights)"),
+      m_lu(Sparse_lu_solver_traits(), "barycentric system of the free vertices (mean-value weights)")
+  {
+    const auto reference = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, internal_np::reference_point_map), m_vpm);
+    std::vector<bool> is_fixed = internal::fixed_flags(m_idx, fixed_vertices);
+    internal::validate_barycentric_input(m_idx, m_vpm, reference, m_weighting, is_fixed);
+    m_stencil = internal::barycentric_stencil(m_idx, reference, m_weighting, std::move(is_fixed));
+    factor();
+  }
+
+  /// Re-solves for the current positions of the fixed vertices (read from the vertex point map)
+  /// and writes the positions of the free vertices: three back-substitutions, no factorization.
+  /// \throws Invalid_mesh (`non_finite_coordinates`) if a fixed vertex has a non-finite
+  ///         coordinate; nothing is written then
+  void update()
+  {
+    solve_and_write(fixed_positions(m_vpm, true), false);
+  }
+
+  /// Moves the fixed vertices to `new_fixed_positions` (a readable vertex -> `Point_3` map, read
+  /// at the fixed vertices only), re-solves and writes the positions of all vertices.
+  /// \throws Invalid_constraints if a new fixed position is not finite; nothing is written then
+  template <class FixedPointMap>
+  void update(const FixedPointMap& new_fixed_positions)
+  {
+    solve_and_write(fixed_positions(new_fixed_positions, false), true);
+  }
+
+  /// \name Information
+  /// @{
+  const PolygonMesh& mesh() const { return m_pm; }
+  std::size_t number_of_free_vertices() const { return m_stencil.number_of_free_vertices(); }
+  std::size_t number_of_fixed_vertices() const { return m_stencil.number_of_fixed_vertices(); }
+  bool is_fixed(vertex_descriptor v) const { return m_stencil.is_fixed[m_idx.index(v)]; }
+  Barycentric_weighting weighting() const { return m_weighting; }
+  /// The fixed vertices, in the order of their columns in the system.
+  std::vector<vertex_descriptor> fixed_vertices() const
+  {
+    std::vector<vertex_descriptor> v;
+    v.reserve(number_of_fixed_vertices());
+    for(std::size_t i : m_stencil.fixed_vertices)
+      v.push_back(m_idx.vertex(i));
+    return v;
+  }
+  /// Largest distance between a free vertex and the weighted barycentre of its neighbours, at the
+  /// current positions: 0 up to rounding after `update()`.
+  double barycentre_residual() const
+  {
+    double worst = 0.;
+    for(std::size_t r = 0; r < m_stencil.free_vertices.size(); ++r)
+    {
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      double total = 0.;
+      for(std::size_t k = m_stencil.row_start[r]; k < m_stencil.row_start[r + 1]; ++k)
+      {
+        sum += m_stencil.weight[k] * internal::position(m_vpm, m_idx.vertex(m_stencil.neighbour[k]));
+        total += m_stencil.weight[k];
+      }
+      const Eigen::Vector3d p = internal::position(m_vpm, m_idx.vertex(m_stencil.free_vertices[r]));
+      worst = (std::max)(worst, (p - sum / total).norm());
+    }
+    return worst;
+  }
+  /// @}
+
+private:
+  bool uses_lu() const { return m_weighting == Barycentric_weighting::mean_value; }
+
+  // L_ff (free x free) and C (free x fixed, rhs = C x_c) from the stencil, and the factorization
+  void factor()
+  {
+    const std::size_t nf = number_of_free_vertices();
+    if(nf == 0)
+      return; // every vertex is fixed: nothing to solve
+    std::vector<internal::Triplet> a, c;
+    a.reserve(m_stencil.neighbour.size() + nf);
+    c.reserve(m_stencil.neighbour.size() / 4);
+    for(std::size_t r = 0; r < nf; ++r)
+    {
+      double diagonal = 0.;
+      for(std::size_t k = m_stencil.row_start[r]; k < m_stencil.row_start[r + 1]; ++k)
+      {
+        const std::size_t j = m_stencil.neighbour[k];
+        const double w = m_stencil.weight[k];
+        diagonal += w;
+        if(m_stencil.is_fixed[j])
+          c.emplace_back(int(r), int(m_stencil.slot[j]), w);
+        else
+          a.emplace_back(int(r), int(m_stencil.slot[j]), -w);
+      }
+      a.emplace_back(int(r), int(r), diagonal);
+    }
+    internal::Sparse_matrix A{static_cast<Eigen::Index>(nf), static_cast<Eigen::Index>(nf)};
+    A.setFromTriplets(a.begin(), a.end());
+    m_coupling.resize(int(nf), int(number_of_fixed_vertices()));
+    m_coupling.setFromTriplets(c.begin(), c.end());
+    if(uses_lu())
+      m_lu.factor(std::move(A), false);
+    else
+      m_symmetric.factor(std::move(A), true);
+  }
+
+  // positions of the fixed vertices (#fixed x 3), checked finite
+  template <class PointMap>
+  Eigen::MatrixXd fixed_positions(const PointMap& map, bool from_mesh) const
+  {
+    Eigen::MatrixXd x(Eigen::Index(number_of_fixed_vertices()), 3);
+    for(std::size_t k = 0; k < number_of_fixed_vertices(); ++k)
+    {
+      const std::size_t v = m_stencil.fixed_vertices[k];
+      const Eigen::Vector3d p = internal::position(map, m_idx.vertex(v));
+      if(!p.allFinite())
+      {
+        std::ostringstream s;
+        s << "fixed vertex " << v << " has coordinates (" << p.x() << ", " << p.y() << ", " << p.z()
+          << ")";
+        if(from_mesh)
+          throw Invalid_mesh(Mesh_defect::non_finite_coordinates, v, s.str());
+        throw Invalid_constraints("the new position of " + s.str());
+      }
+      x.row(Eigen::Index(k)) = p.transpose();
+    }
+    return x;
+  }
+
+  void solve_and_write(const Eigen::MatrixXd& fixed, bool write_fixed)
+  {
+    const std::size_t nf = number_of_free_vertices();
+    Eigen::MatrixXd free(Eigen::Index(nf), 3);
+    if(nf > 0)
+    {
+      const Eigen::MatrixXd rhs = m_coupling * fixed;
+      Eigen::VectorXd x;
+      for(int d = 0; d < 3; ++d)
+      {
+        if(uses_lu())
+          m_lu.solve(rhs.col(d), x);
+        else
+          m_symmetric.solve(rhs.col(d), x);
+        free.col(d) = x;
+      }
+    }
+    // everything succeeded: write
+    if(write_fixed)
+      for(std::size_t k = 0; k < number_of_fixed_vertices(); ++k)
+        put(m_vpm, m_idx.vertex(m_stencil.fixed_vertices[k]),
+            Point(fixed(Eigen::Index(k), 0), fixed(Eigen::Index(k), 1), fixed(Eigen::Index(k), 2)));
+    for(std::size_t r = 0; r < nf; ++r)
+      put(m_vpm, m_idx.vertex(m_stencil.free_vertices[r]),
+          Point(free(Eigen::Index(r), 0), free(Eigen::Index(r), 1), free(Eigen::Index(r), 2)));
+  }
+
+  PolygonMesh& m_pm;
+  VertexPointMap m_vpm;
+  Indices m_idx;
+  Barycentric_weighting m_weighting;
+  internal::Barycentric_stencil m_stencil;
+  internal::Sparse_matrix m_coupling;
+  internal::Factored_system<SolverTraits> m_symmetric;
+  internal::Factored_system<Sparse_lu_solver_traits> m_lu;
+};
+
+} // namespace Surface_design
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_DESIGN_BARYCENTRIC_EMBEDDER_H
