@@ -130,15 +130,8 @@ int main(int argc, char** argv)
     }
 
     example::Stopwatch clock;
-    std::size_t moved = 0;
-    if(solver == "ldlt")
-      moved = embed<SD::Default_solver_traits>(mesh, fixed, weighting);
-#if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
-    else if(solver == "cholmod")
-      moved = embed<SD::Cholmod_solver_traits>(mesh, fixed, weighting);
-#endif
-    else
-      throw std::invalid_argument("solver " + solver + " is not available");
+    const std::size_t moved = example::with_solver(
+      solver, [&](auto traits) { return embed<decltype(traits)>(mesh, fixed, weighting); });
     std::cout << input << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh) << " faces; "
               << moved << " free vertices moved to the barycentre of their neighbours ("
               << SD::to_string(weighting) << " weights) in " << clock.lap() << " ms; area "

@@ -287,13 +287,7 @@ int main(int argc, char** argv)
   try
   {
     const Options o = parse(argc, argv);
-    if(o.solver == "ldlt")
-      return run<SD::Default_solver_traits>(o);
-#if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
-    if(o.solver == "cholmod")
-      return run<SD::Cholmod_solver_traits>(o);
-#endif
-    throw std::invalid_argument("unknown or unavailable solver " + o.solver);
+    return example::with_solver(o.solver, [&o](auto traits) { return run<decltype(traits)>(o); });
   }
   catch(const std::exception& e)
   {

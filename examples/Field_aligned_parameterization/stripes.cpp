@@ -372,13 +372,7 @@ int main(int argc, char** argv)
       return 2;
     }
     const Options o = parse(argc, argv);
-    if(o.solver == "ldlt")
-      return run<SD::Default_solver_traits>(o);
-#if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
-    if(o.solver == "cholmod")
-      return run<SD::Cholmod_solver_traits>(o);
-#endif
-    throw std::invalid_argument("solver " + o.solver + " is not available in this build");
+    return example::with_solver(o.solver, [&o](auto traits) { return run<decltype(traits)>(o); });
   }
   catch(const SD::Invalid_mesh& e)
   {

@@ -11,6 +11,7 @@
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_design/solver_traits.h>
 
 #include <array>
 #include <chrono>
@@ -68,6 +69,20 @@ public:
 private:
   std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
 };
+
+/// Calls `f(traits)` with a default-constructed solver traits object of the solver named `name`
+/// ("ldlt", or "cholmod" when the library was built with CHOLMOD) and returns what it returns.
+template <class F>
+decltype(auto) with_solver(const std::string& name, F&& f)
+{
+  if(name == "ldlt")
+    return f(CGAL::Surface_design::Default_solver_traits());
+#if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
+  if(name == "cholmod")
+    return f(CGAL::Surface_design::Cholmod_solver_traits());
+#endif
+  throw std::invalid_argument("unknown or unavailable solver \"" + name + "\" (ldlt, or cholmod when built with CHOLMOD)");
+}
 
 /// Parses "A:B" into two integers; throws std::invalid_argument naming `what` otherwise.
 inline std::pair<long, long> parse_pair(const std::string& s, const char* what)

@@ -254,16 +254,11 @@ template <class TriangleMesh, class FaceIndexMap, class VertexVectorMap,
 double trivial_connection_field(const TriangleMesh& tm, const FaceIndexMap& face_indices, VertexVectorMap field,
                                 const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  using Vpm = typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type;
-  using Solver = typename CGAL::internal_np::Lookup_named_param_def<
-    CGAL::internal_np::sparse_linear_solver_t, NamedParameters, Default_solver_traits>::type;
-  const Vpm vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                   get_const_property_map(CGAL::vertex_point, tm));
-  Trivial_connection<TriangleMesh, Vpm, Solver> tc(
-    tm, vpm, choose_parameter(get_parameter(np, internal_np::symmetry_order), 1),
-    choose_parameter<Solver>(get_parameter(np, CGAL::internal_np::sparse_linear_solver)));
+  using Vpm = internal::Const_vertex_point_map_t<TriangleMesh, NamedParameters>;
+  Trivial_connection<TriangleMesh, Vpm, internal::Solver_traits_t<NamedParameters>> tc(
+    tm, internal::const_vertex_point_map(tm, np),
+    CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::symmetry_order), 1),
+    internal::solver_traits(np));
   for(auto f : faces(tm))
     tc.set_index(f, int(get(face_indices, f)));
   tc.solve();

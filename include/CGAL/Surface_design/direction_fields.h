@@ -14,6 +14,7 @@
 #include <CGAL/Surface_design/internal/geometry.h>
 #include <CGAL/Surface_design/internal/Hermitian_system.h>
 #include <CGAL/Surface_design/internal/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/named_parameters.h>
 #include <CGAL/Surface_design/internal/shift_invert_lanczos.h>
 #include <CGAL/Surface_design/internal/topology.h>
 #include <CGAL/Surface_design/internal/validation.h>
@@ -184,7 +185,9 @@ inline void check_symmetry_order(int n)
 /// along each edge (see the manual).
 ///
 /// **Energy.** E(u) = sum_edges w_ij |u_j - exp(i n rho_ij) u_i|^2 with cotangent weights, the
-/// Hermitian connection Laplacian A; M the lumped (barycentric) mass matrix.
+/// Hermitian connection Laplacian A; M the lumped (barycentric) mass matrix. The library's own
+/// solver traits factor A in complex arithmetic; any other traits factor its real symmetric form
+/// of size 2|V| (`internal::Hermitian_system`).
 ///  - No boundary condition, no alignment: u is the eigenvector of the smallest eigenvalue of
 ///    A u = lambda M u, computed per connected component by shift-invert Lanczos (M inner
 ///    product, full reorthogonalization) on one factorization of A + eps M (eps = 1e-8 trace(A) /
@@ -226,12 +229,8 @@ Smoothest_direction_field_info smoothest_direction_field(const TriangleMesh& tm,
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  using Vpm = typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type;
-  using Solver = typename CGAL::internal_np::Lookup_named_param_def<
-    CGAL::internal_np::sparse_linear_solver_t, NamedParameters, Default_solver_traits>::type;
-
-  const Vpm vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                   get_const_property_map(CGAL::vertex_point, tm));
+  using Solver = internal::Solver_traits_t<NamedParameters>;
+  const auto vpm = internal::const_vertex_point_map(tm, np);
   const int n = choose_parameter(get_parameter(np, internal_np::symmetry_order), 1);
   const Direction_field_boundary boundary =
     choose_parameter(get_parameter(np, internal_np::field_boundary_condition), Direction_field_boundary::free);
@@ -329,9 +328,7 @@ Smoothest_direction_field_info smoothest_direction_field(const TriangleMesh& tm,
     a.coeffRef(Eigen::Index(v), Eigen::Index(v)) += fixed[v] ? 1. : shift[v];
   a.makeCompressed();
 
-  internal::Hermitian_system<Solver> system(
-    choose_parameter<Solver>(get_parameter(np, CGAL::internal_np::sparse_linear_solver)),
-    "connection Laplacian");
+  internal::Hermitian_system<Solver> system(internal::solver_traits(np), "connection Laplacian");
   system.factor(std::move(a));
 
   Smoothest_direction_field_info info;
@@ -424,8 +421,7 @@ std::size_t direction_field_singularities(const TriangleMesh& tm, const VertexVe
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto vpm = internal::const_vertex_point_map(tm, np);
   const int n = choose_parameter(get_parameter(np, internal_np::symmetry_order), 1);
   internal::check_symmetry_order(n);
   const internal::Mesh_indices<TriangleMesh> idx(tm);

@@ -7,6 +7,7 @@
 #define CGAL_SURFACE_DESIGN_FIELD_ALIGNED_PARAMETERIZATION_H
 
 #include <CGAL/Surface_design/Field_aligned_parameterizer.h>
+#include <CGAL/Surface_design/internal/named_parameters.h>
 #include <CGAL/Surface_design/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -20,19 +21,6 @@
 namespace CGAL {
 namespace Surface_design {
 
-namespace fap_detail {
-
-// Calls fn(value) if the named parameter is present.
-template <class NP, class Tag, class Fn>
-void if_given(const NP& np, Tag tag, Fn&& fn)
-{
-  const auto p = CGAL::parameters::get_parameter(np, tag);
-  if constexpr(!std::is_same<std::decay_t<decltype(p)>, CGAL::internal_np::Param_not_found>::value)
-    fn(p);
-  (void)p;
-}
-
-} // namespace fap_detail
 
 /// \ingroup PkgFieldAlignedParameterizationRef
 ///
@@ -71,13 +59,10 @@ double field_aligned_parameterization(const TriangleMesh& tm, const VertexVector
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  using Vpm = typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type;
-  using Solver = typename CGAL::internal_np::Lookup_named_param_def<
-    CGAL::internal_np::sparse_linear_solver_t, NamedParameters, Default_solver_traits>::type;
-
-  const Vpm vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                   get_const_property_map(CGAL::vertex_point, tm));
-  const Solver solver = choose_parameter<Solver>(get_parameter(np, CGAL::internal_np::sparse_linear_solver));
+  using Vpm = internal::Const_vertex_point_map_t<TriangleMesh, NamedParameters>;
+  using Solver = internal::Solver_traits_t<NamedParameters>;
+  const Vpm vpm = internal::const_vertex_point_map(tm, np);
+  const Solver solver = internal::solver_traits(np);
   const double stripes = choose_parameter(get_parameter(np, internal_np::stripes_per_unit_length), 0.);
   const One_form_convention convention =
     choose_parameter(get_parameter(np, internal_np::one_form_convention), One_form_convention::projected);
@@ -85,7 +70,7 @@ double field_aligned_parameterization(const TriangleMesh& tm, const VertexVector
   Field_aligned_parameterizer<TriangleMesh, Vpm, Solver> fap(tm, vpm, solver);
   fap.set_field(field, stripes, convention);
   fap.set_indices(face_indices);
-  fap_detail::if_given(
+  internal::if_given(
     np, internal_np::loop_windings, [&](const auto& windings) {
       for(const auto& [loop, winding] : windings)
         fap.set_loop_winding(loop, winding);
@@ -94,14 +79,14 @@ double field_aligned_parameterization(const TriangleMesh& tm, const VertexVector
 
   // outputs, written only after everything succeeded
   fap.alpha(alpha);
-  fap_detail::if_given(
+  internal::if_given(
     np, internal_np::edge_dalpha_map, [&](const auto& map) { fap.dalpha(map); });
-  fap_detail::if_given(
+  internal::if_given(
     np, internal_np::edge_omega_map, [&](const auto& map) {
       for(auto e : edges(tm))
         put(map, e, fap.omega(halfedge(e, tm)));
     });
-  fap_detail::if_given(
+  internal::if_given(
     np, internal_np::corner_coordinate_map, [&](const auto& map) { fap.corner_coordinates(map); });
   return fap.energy();
 }

@@ -15,6 +15,7 @@
 #include <Eigen/Sparse>
 
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -38,6 +39,31 @@ struct Has_ldlt_pivots<Traits, std::void_t<decltype(std::declval<Traits&>().solv
 
 } // namespace factored_system_detail
 
+/// Relative size below which an LDLT pivot of a positive definite system counts as zero.
+constexpr double ldlt_pivot_tolerance = 100. * std::numeric_limits<double>::epsilon();
+
+/// Throws `Linear_solver_failure` naming the system if an LDLT pivot (real part, for Hermitian
+/// systems) is not safely positive.
+template <class Pivots>
+void check_ldlt_pivots(const Pivots& d, const std::string& name, Eigen::Index size, const char* unknowns)
+{
+  if(d.size() == 0)
+    return;
+  const double largest = d.cwiseAbs().maxCoeff();
+  for(Eigen::Index i = 0; i < d.size(); ++i)
+  {
+    const double pivot = std::real(d[i]);
+    if(!(pivot > ldlt_pivot_tolerance * largest))
+    {
+      std::ostringstream s;
+      s << "the " << name << " (" << size << ' ' << unknowns << ") is not positive definite: LDLT pivot "
+        << i << " is " << pivot << " (largest " << largest << ")"
+        << (pivot > 0 ? "; the matrix is singular to working precision" : "");
+      throw Linear_solver_failure(s.str());
+    }
+  }
+}
+
 /// A sparse symmetric system factored once and solved for any number of right-hand sides.
 ///
 /// `SolverTraits` is any model of CGAL's `SparseLinearAlgebraWithFactorTraits_d`
@@ -54,8 +80,6 @@ class Factored_system
   using Vector = typename SolverTraits::Vector;
 
 public:
-  /// Relative size below which an LDLT pivot of a positive definite system counts as zero.
-  static constexpr double pivot_tolerance = 100. * std::numeric_limits<double>::epsilon();
 
   explicit Factored_system(SolverTraits traits = SolverTraits(), std::string name = "linear system")
     : m_traits(std::move(traits)), m_name(std::move(name))
@@ -91,7 +115,7 @@ public:
     if constexpr(factored_system_detail::Has_ldlt_pivots<SolverTraits>::value)
     {
       if(positive_definite)
-        check_pivots(m_traits.solver().vectorD());
+        check_ldlt_pivots(m_traits.solver().vectorD(), m_name, m_size, "unknowns");
     }
     m_factored = true;
   }
@@ -130,23 +154,6 @@ public:
   }
 
 private:
-  template <class Pivots>
-  void check_pivots(const Pivots& d) const
-  {
-    if(d.size() == 0)
-      return;
-    const double largest = d.cwiseAbs().maxCoeff();
-    for(Eigen::Index i = 0; i < d.size(); ++i)
-      if(!(d[i] > pivot_tolerance * largest))
-      {
-        std::ostringstream s;
-        s << "the " << m_name << " (" << m_size << " unknowns) is not positive definite: LDLT pivot "
-          << i << " is " << d[i] << " (largest " << largest << ")"
-          << (d[i] > 0 ? "; the matrix is singular to working precision" : "");
-        throw Linear_solver_failure(s.str());
-      }
-  }
-
   SolverTraits m_traits;
   std::unique_ptr<Matrix> m_matrix; // the traits keep a pointer to it: its address must not change
   std::string m_name;

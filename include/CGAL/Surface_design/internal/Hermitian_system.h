@@ -18,7 +18,6 @@
 
 #include <complex>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -114,7 +113,7 @@ public:
         throw Linear_solver_failure("the factorization of the " + m_name + " (" + std::to_string(a.rows()) +
                                     " complex unknowns) failed: the matrix is not positive definite");
       if constexpr(std::is_base_of<Eigen::SimplicialCholeskyBase<Complex_solver>, Complex_solver>::value)
-        check_pivots(m_complex->vectorD());
+        check_ldlt_pivots(m_complex->vectorD(), m_name, m_size, "complex unknowns");
     }
     else
     {
@@ -140,22 +139,6 @@ public:
   }
 
 private:
-  template <class Pivots>
-  void check_pivots(const Pivots& d) const
-  {
-    if(d.size() == 0)
-      return;
-    const double largest = d.cwiseAbs().maxCoeff();
-    for(Eigen::Index i = 0; i < d.size(); ++i)
-      if(!(d[i].real() > Factored_system<SolverTraits>::pivot_tolerance * largest))
-      {
-        std::ostringstream s;
-        s << "the " << m_name << " (" << m_size << " complex unknowns) is not positive definite: LDLT pivot "
-          << i << " is " << d[i].real() << " (largest " << largest << ")";
-        throw Linear_solver_failure(s.str());
-      }
-  }
-
   Factored_system<SolverTraits> m_real;
   std::optional<Complex_storage> m_complex;
   std::string m_name;
