@@ -182,7 +182,7 @@ inline const std::vector<Solver_info>& known_solvers()
     {"ldlt", "Default_solver_traits: Eigen SimplicialLDLT, AMD ordering", true, ""},
     {"ldlt-metis", "Metis_ldlt_solver_traits: Eigen SimplicialLDLT, METIS nested dissection",
      has_metis, "built without METIS: CGAL_SURFACE_DESIGN_HAS_METIS is not defined"},
-    {"cholmod", "Cholmod_solver_traits: CHOLMOD supernodal LLT on the loaded BLAS", has_cholmod,
+    {"cholmod", "Cholmod_solver_traits: CHOLMOD supernodal LLT, AMD ordering, on the loaded BLAS", has_cholmod,
      "built without CHOLMOD: CGAL_SURFACE_DESIGN_HAS_CHOLMOD is not defined"},
   };
   return table;

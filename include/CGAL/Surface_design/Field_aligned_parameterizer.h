@@ -111,8 +111,10 @@ public:
     m_topology = internal::compute_topology(m_idx);
     m_weight = weighting == Edge_weighting::cotangent ? internal::cotangent_weights(m_idx, m_vpm)
                                                       : std::vector<double>(m_idx.number_of_edges(), 1.);
-    m_d0 = internal::d0(m_idx);
-    m_d0t_w = Sparse_matrix(m_d0.transpose()) * internal::diagonal_matrix(m_weight);
+    // d0 as its edge list: (d0 f)_e = f(j) - f(i) for the edge oriented i -> j
+    m_edge_ends.resize(m_idx.number_of_edges());
+    for(std::size_t e = 0; e < m_edge_ends.size(); ++e)
+      m_edge_ends[e] = m_idx.edge_vertices(e);
 
     // L = d0^T W d0 with the root vertex of every component pinned (row and column replaced by
     // the identity): f_root = 0, which fixes the additive constant of each component.
@@ -610,18 +612,20 @@ private:
                                        const std::vector<double>& omega) const
   {
     const std::size_t ne = ystar.size();
-    Eigen::VectorXd r = Eigen::VectorXd::Zero(Eigen::Index(ne));
-    for(std::size_t e = 0; e < ne; ++e)
-      r[Eigen::Index(e)] = omega[e] - ystar[e];
-    Eigen::VectorXd b = m_d0t_w * r;
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(Eigen::Index(m_pinned.size()));
+    for(std::size_t e = 0; e < ne; ++e) // b = d0^T W (omega - ystar)
+    {
+      const double x = m_weight[e] * (omega[e] - ystar[e]);
+      b[Eigen::Index(m_edge_ends[e].first)] -= x;
+      b[Eigen::Index(m_edge_ends[e].second)] += x;
+    }
     for(std::size_t v = 0; v < m_pinned.size(); ++v)
       if(m_pinned[v])
         b[Eigen::Index(v)] = 0.;
     const Eigen::VectorXd f = m_system.solve(b);
-    const Eigen::VectorXd df = m_d0 * f;
     std::vector<double> y(ne);
-    for(std::size_t e = 0; e < ne; ++e)
-      y[e] = ystar[e] + df[Eigen::Index(e)];
+    for(std::size_t e = 0; e < ne; ++e) // y = ystar + d0 f
+      y[e] = ystar[e] + f[Eigen::Index(m_edge_ends[e].second)] - f[Eigen::Index(m_edge_ends[e].first)];
     return y;
   }
 
@@ -713,7 +717,7 @@ private:
   Indices m_idx;
   internal::Topology m_topology;
   std::vector<double> m_weight;
-  Sparse_matrix m_d0, m_d0t_w;
+  std::vector<std::pair<std::size_t, std::size_t>> m_edge_ends; // per edge: (i, j), oriented i -> j
   std::vector<bool> m_pinned;
   mutable internal::Factored_system<SolverTraits> m_system; // solving does not change the factor
 

@@ -70,7 +70,7 @@ struct Complex_solver_of<Default_solver_traits>
 template <>
 struct Complex_solver_of<Cholmod_solver_traits>
 {
-  using type = Eigen::CholmodSupernodalLLT<Complex_sparse_matrix>;
+  using type = Cholmod_amd_supernodal_llt<Complex_sparse_matrix>;
 };
 #endif
 #if defined(CGAL_SURFACE_DESIGN_HAS_METIS)

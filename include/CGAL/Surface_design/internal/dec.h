@@ -11,6 +11,8 @@
 #include <Eigen/Sparse>
 
 #include <cstddef>
+#include <algorithm>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -74,24 +76,42 @@ inline Sparse_matrix diagonal_matrix(const std::vector<double>& d)
 /// With cotangent weights it is the cotangent Laplacian, positive semi-definite on every triangle
 /// mesh (it is the P1 finite-element stiffness matrix) with the constants per connected component
 /// as kernel. Sign convention: L_ii = sum_j w_ij >= 0 (for positive weights), L_ij = -w_ij.
-/// Assembled directly from four triplets per edge, without forming d0.
+/// Assembled row by row straight into compressed storage (no triplets, no d0): row i holds the
+/// diagonal and one entry per edge at i, column indices sorted.
 template <class Indices>
 Sparse_matrix weighted_laplacian(const Indices& idx, const std::vector<double>& edge_weight)
 {
-  std::vector<Triplet> t;
-  t.reserve(4 * idx.number_of_edges());
-  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+  const auto& tm = idx.mesh();
+  const std::size_t nv = idx.number_of_vertices();
+  Sparse_matrix m(static_cast<Eigen::Index>(nv), static_cast<Eigen::Index>(nv));
+  Eigen::VectorXi row_size = Eigen::VectorXi::Zero(static_cast<Eigen::Index>(nv));
+  for(std::size_t v = 0; v < nv; ++v)
+    row_size[Eigen::Index(v)] = int(degree(idx.vertex(v), tm)) + 1;
+  m.reserve(row_size);
+  // the matrix is symmetric: fill column v (= row v) with its neighbours, sorted
+  std::vector<std::pair<int, double>> column;
+  for(std::size_t v = 0; v < nv; ++v)
   {
-    const auto ij = idx.edge_vertices(e);
-    const int i = int(ij.first), j = int(ij.second);
-    const double w = edge_weight[e];
-    t.emplace_back(i, i, w);
-    t.emplace_back(j, j, w);
-    t.emplace_back(i, j, -w);
-    t.emplace_back(j, i, -w);
+    column.clear();
+    double diagonal = 0.;
+    for(auto h : halfedges_around_source(idx.vertex(v), tm))
+    {
+      const double w = edge_weight[idx.edge_index(h)];
+      column.emplace_back(int(idx.target_index(h)), -w);
+      diagonal += w;
+    }
+    column.emplace_back(int(v), diagonal);
+    std::sort(column.begin(), column.end(),
+              [](const std::pair<int, double>& a, const std::pair<int, double>& b) { return a.first < b.first; });
+    for(std::size_t k = 0; k < column.size(); ++k)
+    {
+      double value = column[k].second;
+      while(k + 1 < column.size() && column[k + 1].first == column[k].first) // two edges, same ends
+        value += column[++k].second;
+      m.insert(Eigen::Index(column[k].first), Eigen::Index(v)) = value;
+    }
   }
-  Sparse_matrix m(int(idx.number_of_vertices()), int(idx.number_of_vertices()));
-  m.setFromTriplets(t.begin(), t.end());
+  m.makeCompressed();
   return m;
 }
 
