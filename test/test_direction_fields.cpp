@@ -25,12 +25,6 @@ namespace {
 
 const double pi = std::acos(-1.);
 
-#if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
-#define SD_FOR_EACH_SOLVER(F) F(SD::Default_solver_traits, "ldlt") F(SD::Cholmod_solver_traits, "cholmod")
-#else
-#define SD_FOR_EACH_SOLVER(F) F(SD::Default_solver_traits, "ldlt")
-#endif
-
 using Vector = test::Kernel::Vector_3;
 
 template <class Mesh>
@@ -39,8 +33,7 @@ template <class Mesh>
 using Face = typename boost::graph_traits<Mesh>::face_descriptor;
 template <class Mesh>
 using Vector_map = std::map<Vertex<Mesh>, Vector>;
-template <class Mesh>
-using Vpm = typename boost::property_map<Mesh, CGAL::vertex_point_t>::const_type;
+using test::Vpm;
 
 template <class Mesh>
 Mesh make_case(const std::string& name)

@@ -31,14 +31,7 @@ namespace {
 
 const double pi = std::acos(-1.);
 
-#if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
-#define SD_FOR_EACH_SOLVER(F) F(SD::Default_solver_traits, "ldlt") F(SD::Cholmod_solver_traits, "cholmod")
-#else
-#define SD_FOR_EACH_SOLVER(F) F(SD::Default_solver_traits, "ldlt")
-#endif
-
-template <class Mesh>
-using Vpm = typename boost::property_map<Mesh, CGAL::vertex_point_t>::const_type;
+using test::Vpm;
 template <class Mesh, class Solver>
 using Fap = SD::Field_aligned_parameterizer<Mesh, Vpm<Mesh>, Solver>;
 

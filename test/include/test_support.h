@@ -13,6 +13,7 @@
 #include <CGAL/Polyhedron_items_with_id_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Surface_design/solver_traits.h>
 
 #include <catch2/catch.hpp>
 
@@ -36,6 +37,19 @@ using Polyhedron_with_id = CGAL::Polyhedron_3<Kernel, CGAL::Polyhedron_items_wit
 // Every generic test runs on these three: CGAL's two halfedge data structures, and Polyhedron_3
 // both with internal ids and without (dynamic index maps).
 #define SD_MESH_TYPES test::Surface_mesh, test::Polyhedron, test::Polyhedron_with_id
+
+/// Expands F(Traits, "label") for every sparse solver of the build.
+#if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
+#define SD_FOR_EACH_SOLVER(F)                                                                      \
+  F(CGAL::Surface_design::Default_solver_traits, "ldlt")                                           \
+  F(CGAL::Surface_design::Cholmod_solver_traits, "cholmod")
+#else
+#define SD_FOR_EACH_SOLVER(F) F(CGAL::Surface_design::Default_solver_traits, "ldlt")
+#endif
+
+/// The mesh's own (read-only) vertex point map type.
+template <class Mesh>
+using Vpm = typename boost::property_map<Mesh, CGAL::vertex_point_t>::const_type;
 
 /// Path of a mesh bundled with the project (data/).
 inline std::string data_path(const std::string& name)

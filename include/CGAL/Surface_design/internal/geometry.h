@@ -194,11 +194,12 @@ std::vector<double> vertex_areas(const Indices& idx, const std::vector<double>& 
 
 /// Angle-weighted unit vertex normals (Thürmer & Wüthrich): the sum of the incident face normals
 /// weighted by the corner angles.
+/// `angle` are the corner angles (corner_angles()), when the caller has them already.
 template <class Indices, class VertexPointMap>
-std::vector<Eigen::Vector3d> vertex_normals(const Indices& idx, const VertexPointMap& vpm)
+std::vector<Eigen::Vector3d> vertex_normals(const Indices& idx, const VertexPointMap& vpm,
+                                            const std::vector<double>& angle)
 {
   const std::vector<Eigen::Vector3d> fn = face_normals(idx, vpm);
-  const std::vector<double> angle = corner_angles(idx, vpm);
   std::vector<Eigen::Vector3d> normal(idx.number_of_vertices(), Eigen::Vector3d::Zero());
   for(std::size_t i = 0; i < angle.size(); ++i)
   {
@@ -210,6 +211,13 @@ std::vector<Eigen::Vector3d> vertex_normals(const Indices& idx, const VertexPoin
   for(Eigen::Vector3d& n : normal)
     n.normalize();
   return normal;
+}
+
+/// Same, computing the corner angles.
+template <class Indices, class VertexPointMap>
+std::vector<Eigen::Vector3d> vertex_normals(const Indices& idx, const VertexPointMap& vpm)
+{
+  return vertex_normals(idx, vpm, corner_angles(idx, vpm));
 }
 
 } // namespace internal

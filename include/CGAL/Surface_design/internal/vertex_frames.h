@@ -110,7 +110,7 @@ Vertex_frames vertex_frames(const Indices& idx, const VertexPointMap& vpm,
   Vertex_frames fr;
   fr.scale.assign(nv, 1.);
   fr.angle.assign(idx.number_of_halfedges(), 0.);
-  fr.normal = vertex_normals(idx, vpm);
+  fr.normal = vertex_normals(idx, vpm, corner);
   fr.e0.assign(nv, Eigen::Vector3d::Zero());
   fr.e1.assign(nv, Eigen::Vector3d::Zero());
   fr.border.assign(nv, false);
