@@ -12,9 +12,10 @@
 #include "harness.h"
 
 #include <CGAL/Surface_design/exceptions.h>
-#include <CGAL/Surface_design/internal/Mesh_indices.h>
-#include <CGAL/Surface_design/internal/validation.h>
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/validation.h>
 #include <CGAL/Surface_design/mesh_generators.h>
+#include <CGAL/Surface_design/octahedron_membrane.h>
 
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/IO/OFF.h>

@@ -83,7 +83,7 @@ void run_trivial(const Mesh& mesh, Run& run)
 {
   using Tc = SD::Trivial_connection<Mesh, Vertex_point_map, SolverTraits>;
   std::optional<Tc> tc;
-  run.phase("factor", [&] { tc.emplace(mesh, get(CGAL::vertex_point, mesh)); });
+  run.phase("factor", [&] { tc.emplace(mesh); });
   const auto setup = trivial_setup(tc->indices());
   std::vector<Kernel::Vector_3> field(num_vertices(mesh));
   run.phase("solve", [&] {

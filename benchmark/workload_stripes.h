@@ -13,10 +13,10 @@
 #include "harness.h"
 
 #include <CGAL/Surface_design/Field_aligned_parameterizer.h>
-#include <CGAL/Surface_design/internal/Face_space_stripe_solver.h>
-#include <CGAL/Surface_design/internal/Mesh_indices.h>
-#include <CGAL/Surface_design/internal/dec.h>
-#include <CGAL/Surface_design/internal/geometry.h>
+#include "Face_space_stripe_solver.h"
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/dec.h>
+#include <CGAL/Surface_design/internal/Core/geometry.h>
 
 #include <CGAL/property_map.h>
 
@@ -195,7 +195,7 @@ template <class SolverTraits>
 void run_stripes(const Mesh& mesh, Run& run)
 {
   std::optional<Parameterizer<SolverTraits>> fap;
-  run.phase("factor", [&] { fap.emplace(mesh, get(CGAL::vertex_point, mesh)); });
+  run.phase("factor", [&] { fap.emplace(mesh); });
   const Stripe_setup setup = make_setup(*fap);
   const Field_map field = direction_field();
   run.phase("field", [&] { fap->set_field(field, setup.stripes_per_unit_length); });
@@ -232,7 +232,7 @@ void run_stripes_face_space(const Mesh& mesh, Run& run)
 
   // untimed: the vertex-space solver provides the inputs (index maps, topology, weights, loops,
   // omega) and the windings it chooses, which the face-space solver takes as given
-  Parameterizer<SolverTraits> fap(mesh, get(CGAL::vertex_point, mesh));
+  Parameterizer<SolverTraits> fap(mesh);
   const Stripe_setup setup = make_setup(fap);
   set_singularities(fap, setup);
   const std::vector<std::vector<std::size_t>> loops = fap.loops_as_indices();

@@ -10,8 +10,9 @@
 
 #include <CGAL/Surface_design/barycentric_embedding.h>
 #include <CGAL/Surface_design/Barycentric_embedder.h>
-#include <CGAL/Surface_design/internal/topology.h>
+#include <CGAL/Surface_design/internal/Core/topology.h>
 #include <CGAL/Surface_design/mesh_generators.h>
+#include <CGAL/Surface_design/octahedron_membrane.h>
 
 #include <CGAL/boost/graph/generators.h>
 #include <CGAL/Polygon_mesh_processing/fair.h>
@@ -248,7 +249,7 @@ TEMPLATE_TEST_CASE("cotangent and mean-value weights: the weighted barycentre co
     const auto cot_fixed = border_vertices(cot_mesh);
     const auto cot_ref = reference_of(cot_mesh);
     SD::barycentric_embedding(cot_mesh, set_map<Mesh>(cot_fixed),
-                              P::weighting(SD::Barycentric_weighting::cotangent,
+                              P::weighting(SD::Edge_weighting::cotangent,
                                            P::reference_point_map(cot_ref, P::sparse_linear_solver(Solver()))));
     std::size_t negative = 0;
     auto cotangent = [&](auto h) {
@@ -271,7 +272,7 @@ TEMPLATE_TEST_CASE("cotangent and mean-value weights: the weighted barycentre co
     const auto mv_fixed = border_vertices(mv_mesh);
     const auto mv_ref = reference_of(mv_mesh);
     SD::barycentric_embedding(mv_mesh, set_map<Mesh>(mv_fixed),
-                              P::weighting(SD::Barycentric_weighting::mean_value,
+                              P::weighting(SD::Edge_weighting::mean_value,
                                            P::reference_point_map(mv_ref, P::sparse_linear_solver(Solver()))));
     auto mean_value = [&](auto h) {
       // h: neighbour r -> free vertex q; t and p the neighbours before and after r around q
@@ -308,12 +309,12 @@ TEMPLATE_TEST_CASE("a planar convex boundary gives Tutte's embedding without fli
   std::set<Vertex<Mesh>> fixed;
   for(std::size_t k = 0; k < loops.loops[0].size(); ++k)
   {
-    const double angle = 2. * std::acos(-1.) * arc[k] / arc.back();
+    const double angle = 2. * CGAL_PI * arc[k] / arc.back();
     const auto v = source(idx.halfedge(loops.loops[0][k]), original);
     put(vpm, v, test::Point(std::cos(angle), std::sin(angle), 0.));
     fixed.insert(v);
   }
-  for(auto weighting : {SD::Barycentric_weighting::uniform, SD::Barycentric_weighting::mean_value})
+  for(auto weighting : {SD::Edge_weighting::uniform, SD::Edge_weighting::mean_value})
   {
     INFO("weights " << SD::to_string(weighting));
     Mesh mesh = original;
@@ -429,13 +430,13 @@ TEMPLATE_TEST_CASE("the direct solution is the limit of the paper's iteration", 
 
     // the paper's tolerance (1e-6 on the area) stops earlier, but close to the limit area
     const SD::Iterative_embedding_result paper = SD::barycentric_embedding_iterative(
-      coarse, set_map<Mesh>(border_vertices(coarse)), P::maximum_number_of_iterations(std::size_t(100000)));
+      coarse, set_map<Mesh>(border_vertices(coarse)), P::number_of_iterations(std::size_t(100000)));
     CHECK(paper.converged);
     CHECK(std::abs(paper.area - r.area) < 1e-4);
 
     Mesh capped = test::load_mesh<Mesh>("hemisphere.off");
     const auto capped_result = SD::barycentric_embedding_iterative(
-      capped, border_vertices(capped), P::maximum_number_of_iterations(std::size_t(3)));
+      capped, border_vertices(capped), P::number_of_iterations(std::size_t(3)));
     CHECK(capped_result.iterations == 3);
     CHECK(!capped_result.converged);
   }
@@ -444,10 +445,10 @@ TEMPLATE_TEST_CASE("the direct solution is the limit of the paper's iteration", 
     Mesh direct;
     const auto fixed = bent_quad_grid(direct, 6);
     Mesh iterated = direct;
-    SD::barycentric_embedding(direct, set_map<Mesh>(fixed), P::weighting(SD::Barycentric_weighting::mean_value));
+    SD::barycentric_embedding(direct, set_map<Mesh>(fixed), P::weighting(SD::Edge_weighting::mean_value));
     const auto r = SD::barycentric_embedding_iterative(
       iterated, set_map<Mesh>(border_vertices(iterated)),
-      P::weighting(SD::Barycentric_weighting::mean_value, P::area_tolerance(1e-15)));
+      P::weighting(SD::Edge_weighting::mean_value, P::area_tolerance(1e-15)));
     CHECK(r.converged);
     CHECK(max_distance(positions(direct), positions(iterated)) <= 1e-7 * bbox_size(direct));
   }
@@ -472,12 +473,12 @@ TEMPLATE_TEST_CASE("agrees with PMP::fair at membrane continuity with the same w
   using Mesh = TestType;
   // uniform weights on the octahedron; cotangent weights on the hemisphere (well-shaped: fair's
   // clamping of near-degenerate angles does not act), both with the same reference geometry
-  for(auto weighting : {SD::Barycentric_weighting::uniform, SD::Barycentric_weighting::cotangent})
+  for(auto weighting : {SD::Edge_weighting::uniform, SD::Edge_weighting::cotangent})
   {
     INFO("weights " << SD::to_string(weighting));
     Mesh ours;
     std::set<Vertex<Mesh>> fixed;
-    if(weighting == SD::Barycentric_weighting::uniform)
+    if(weighting == SD::Edge_weighting::uniform)
       fixed = octahedron(ours, 4);
     else
     {
@@ -499,7 +500,7 @@ TEMPLATE_TEST_CASE("agrees with PMP::fair at membrane continuity with the same w
       if(!fixed.count(v))
         free_vertices.push_back(to_theirs.at(v));
     bool ok;
-    if(weighting == SD::Barycentric_weighting::uniform)
+    if(weighting == SD::Edge_weighting::uniform)
       ok = CGAL::Polygon_mesh_processing::fair(theirs, free_vertices,
                                                CGAL::parameters::fairing_continuity(0).weight_calculator(
                                                  Uniform_fair_weights<Mesh>()));
@@ -626,7 +627,7 @@ TEMPLATE_TEST_CASE("bad input throws and leaves the mesh untouched; an all-fixed
     Mesh mesh;
     const auto fixed = bent_quad_grid(mesh, 4);
     const test::Mesh_snapshot before(mesh);
-    CHECK_THROWS_AS(SD::barycentric_embedding(mesh, fixed, P::weighting(SD::Barycentric_weighting::cotangent)),
+    CHECK_THROWS_AS(SD::barycentric_embedding(mesh, fixed, P::weighting(SD::Edge_weighting::cotangent)),
                     SD::Invalid_mesh);
     CHECK(test::Mesh_snapshot(mesh) == before);
   }

@@ -23,7 +23,7 @@ namespace SDI = CGAL::Surface_design::internal;
 
 namespace {
 
-const double pi = std::acos(-1.);
+using SDI::pi;
 
 using Vector = test::Kernel::Vector_3;
 
@@ -67,10 +67,13 @@ Eigen::Vector3d to_eigen(const Vector& v) { return Eigen::Vector3d(v.x(), v.y(),
 template <class Mesh>
 std::map<Face<Mesh>, double> indices_of(const Mesh& mesh, const Vector_map<Mesh>& field, int n)
 {
-  std::map<Face<Mesh>, double> index;
+  std::map<Face<Mesh>, int> numerator; // the index in units of 1/n
   SD::direction_field_singularities(mesh, boost::make_assoc_property_map(field),
-                                    boost::make_assoc_property_map(index),
+                                    boost::make_assoc_property_map(numerator),
                                     SD::parameters::symmetry_order(n));
+  std::map<Face<Mesh>, double> index;
+  for(const auto& [f, k] : numerator)
+    index[f] = double(k) / n;
   return index;
 }
 
@@ -404,11 +407,11 @@ TEMPLATE_TEST_CASE("Curvature-aligned cross fields follow the principal directio
   Vector_map<TestType> field;
   REQUIRE_THROWS_AS(SD::smoothest_direction_field(mesh, boost::make_assoc_property_map(field),
                                                   SD::parameters::curvature_alignment_weight(1.)),
-                    SD::Invalid_constraints);
+                    SD::Invalid_parameter);
   const TestType disk = make_case<TestType>("disk");
   REQUIRE_THROWS_AS(SD::smoothest_direction_field(disk, boost::make_assoc_property_map(field),
                                                   SD::parameters::symmetry_order(4, SD::parameters::curvature_alignment_weight(1.))),
-                    SD::Invalid_constraints);
+                    SD::Invalid_parameter);
   REQUIRE(field.empty());
 }
 
@@ -470,7 +473,8 @@ TEMPLATE_TEST_CASE("Trivial connections have exactly the prescribed singularitie
 #define SD_RUN(Solver, label)                                                                      \
     {                                                                                              \
       INFO(k.mesh << ", n = " << k.n << ", solver " << label);                                     \
-      SD::Trivial_connection<TestType, Vpm<TestType>, Solver> tc(mesh, get(CGAL::vertex_point, mesh), k.n); \
+      SD::Trivial_connection<TestType, Vpm<TestType>, Solver> tc(                                    \
+        mesh, SD::parameters::symmetry_order(k.n, SD::parameters::sparse_linear_solver(Solver())));  \
       const SDI::Mesh_indices<TestType>& idx = tc.indices();                                       \
       std::map<Face<TestType>, int> prescribed;                                                    \
       for(const auto& [f, i] : k.singularities)                                                    \
@@ -531,7 +535,7 @@ TEMPLATE_TEST_CASE("Trivial connections: re-solves, the one-call function, bad s
     REQUIRE(what.find("sum to 1 but must sum to 2") != std::string::npos);
   }
   REQUIRE(untouched.empty());
-  SD::Trivial_connection<TestType> cross(mesh, 4);
+  SD::Trivial_connection<TestType> cross(mesh, SD::parameters::symmetry_order(4));
   cross.set_index(f1, 1);
   REQUIRE_THROWS_WITH(cross.solve(), Catch::Contains("sum to 1/4 but must sum to 2"));
   REQUIRE_THROWS_AS(cross.set_index(std::size_t(100000), 1), SD::Invalid_constraints);
@@ -545,7 +549,7 @@ TEMPLATE_TEST_CASE("Direction fields reject bad input and leave the mesh untouch
                    SD_MESH_TYPES)
 {
   Vector_map<TestType> field;
-  std::map<Face<TestType>, double> index;
+  std::map<Face<TestType>, int> index;
   {
     const TestType empty;
     REQUIRE_THROWS_AS(SD::smoothest_direction_field(empty, boost::make_assoc_property_map(field)), SD::Invalid_mesh);
@@ -581,8 +585,8 @@ TEMPLATE_TEST_CASE("Direction fields reject bad input and leave the mesh untouch
   const test::Mesh_snapshot before(mesh);
   REQUIRE_THROWS_AS(SD::smoothest_direction_field(mesh, boost::make_assoc_property_map(field),
                                                   SD::parameters::symmetry_order(0)),
-                    SD::Invalid_constraints);
-  REQUIRE_THROWS_AS(SD::Trivial_connection<TestType>(mesh, -1), SD::Invalid_constraints);
+                    SD::Invalid_parameter);
+  REQUIRE_THROWS_AS(SD::Trivial_connection<TestType>(mesh, SD::parameters::symmetry_order(-1)), SD::Invalid_parameter);
   // a zero or normal field vector makes the index undefined
   for(auto v : vertices(mesh))
     field[v] = Vector(1, 0, 0);

@@ -8,7 +8,7 @@
 
 #include <CGAL/Surface_design/field_aligned_parameterization.h>
 #include <CGAL/Surface_design/Field_aligned_parameterizer.h>
-#include <CGAL/Surface_design/internal/Face_space_stripe_solver.h>
+#include "Face_space_stripe_solver.h"
 #include <CGAL/Surface_design/mesh_generators.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -29,7 +29,7 @@ namespace SDI = CGAL::Surface_design::internal;
 
 namespace {
 
-const double pi = std::acos(-1.);
+using SDI::pi;
 
 using test::Vpm;
 template <class Mesh, class Solver>

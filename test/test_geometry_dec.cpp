@@ -5,10 +5,10 @@
 
 #include <test_support.h>
 
-#include <CGAL/Surface_design/internal/dec.h>
-#include <CGAL/Surface_design/internal/geometry.h>
-#include <CGAL/Surface_design/internal/Mesh_indices.h>
-#include <CGAL/Surface_design/internal/topology.h>
+#include <CGAL/Surface_design/internal/Core/dec.h>
+#include <CGAL/Surface_design/internal/Core/geometry.h>
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/topology.h>
 #include <CGAL/Surface_design/mesh_generators.h>
 
 #include <Eigen/Dense>
@@ -22,7 +22,7 @@ namespace SDI = CGAL::Surface_design::internal;
 
 namespace {
 
-const double pi = std::acos(-1.);
+using SDI::pi;
 
 const std::vector<std::string> closed_and_open_meshes = {
   "bunny_1k.off", "torus.off", "eight.off", "hemisphere.off", "mech-holes-shark.off",

@@ -5,8 +5,8 @@
 
 #include <test_support.h>
 
-#include <CGAL/Surface_design/internal/Mesh_indices.h>
-#include <CGAL/Surface_design/internal/validation.h>
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/validation.h>
 #include <CGAL/Surface_design/mesh_generators.h>
 
 #include <CGAL/IO/polygon_soup_io.h>
@@ -20,6 +20,7 @@
 namespace SD = CGAL::Surface_design;
 using SD::internal::Mesh_indices;
 using SD::internal::validate_mesh;
+namespace SDI = CGAL::Surface_design::internal;
 
 namespace {
 
@@ -116,14 +117,49 @@ TEST_CASE("User-supplied index maps are honoured", "[indices]")
 {
   test::Surface_mesh mesh = test::load_mesh<test::Surface_mesh>("bunny_1k.off");
   auto reversed = mesh.add_property_map<test::Surface_mesh::Vertex_index, std::size_t>("v:rev").first;
-  const std::size_t n = num_vertices(mesh);
+  auto face_reversed = mesh.add_property_map<test::Surface_mesh::Face_index, std::size_t>("f:rev").first;
+  auto edge_reversed = mesh.add_property_map<test::Surface_mesh::Edge_index, std::size_t>("e:rev").first;
+  const std::size_t n = num_vertices(mesh), nf = num_faces(mesh), ne = num_edges(mesh);
   for(auto v : vertices(mesh))
     put(reversed, v, n - 1 - std::size_t(v));
-  const auto np = CGAL::parameters::vertex_index_map(reversed);
-  Mesh_indices<test::Surface_mesh, std::decay_t<decltype(np)>> idx(mesh, np);
+  for(auto f : faces(mesh))
+    put(face_reversed, f, nf - 1 - std::size_t(f));
+  for(auto e : edges(mesh))
+    put(edge_reversed, e, ne - 1 - std::size_t(e));
+  const auto np =
+    CGAL::parameters::vertex_index_map(reversed).face_index_map(face_reversed).edge_index_map(edge_reversed);
+  Mesh_indices<test::Surface_mesh> idx(mesh, np);
   for(auto v : vertices(mesh))
+  {
     REQUIRE(idx.index(v) == n - 1 - std::size_t(v));
+    REQUIRE(idx.find(v) == idx.index(v));
+  }
+  for(auto f : faces(mesh))
+  {
+    REQUIRE(idx.index(f) == nf - 1 - std::size_t(f));
+    REQUIRE(idx.face(idx.index(f)) == f);
+  }
+  for(auto e : edges(mesh))
+  {
+    REQUIRE(idx.index(e) == ne - 1 - std::size_t(e));
+    REQUIRE(idx.edge(idx.index(e)) == e);
+  }
   REQUIRE(idx.vertex(0) == *std::prev(vertices(mesh).end()));
+  // a descriptor that is not an element of the mesh is not found
+  REQUIRE(idx.find(test::Surface_mesh::Face_index(test::Surface_mesh::size_type(nf + 7))) == SDI::npos);
+
+  // a user map that is not a bijection is rejected with the defect named
+  put(face_reversed, *faces(mesh).begin(), 0); // index 0 now used twice
+  try
+  {
+    Mesh_indices<test::Surface_mesh> bad(mesh, CGAL::parameters::face_index_map(face_reversed));
+    FAIL("no exception");
+  }
+  catch(const SD::Invalid_mesh& e)
+  {
+    CHECK(e.defect() == SD::Mesh_defect::invalid_index_map);
+    CHECK(std::string(e.what()).find("face index map") != std::string::npos);
+  }
 }
 
 TEST_CASE("A Surface_mesh with removed elements is rejected until garbage is collected", "[indices]")

@@ -6,10 +6,10 @@
 
 #include <test_support.h>
 
-#include <CGAL/Surface_design/internal/dec.h>
-#include <CGAL/Surface_design/internal/Factored_system.h>
-#include <CGAL/Surface_design/internal/geometry.h>
-#include <CGAL/Surface_design/internal/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/dec.h>
+#include <CGAL/Surface_design/internal/Core/Factored_system.h>
+#include <CGAL/Surface_design/internal/Core/geometry.h>
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/solver_traits.h>
 
 #include <random>

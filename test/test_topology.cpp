@@ -5,9 +5,9 @@
 
 #include <test_support.h>
 
-#include <CGAL/Surface_design/internal/dec.h>
-#include <CGAL/Surface_design/internal/Mesh_indices.h>
-#include <CGAL/Surface_design/internal/topology.h>
+#include <CGAL/Surface_design/internal/Core/dec.h>
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/topology.h>
 #include <CGAL/Surface_design/mesh_generators.h>
 
 #include <CGAL/Curves_on_surface_topology.h>

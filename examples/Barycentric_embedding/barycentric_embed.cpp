@@ -54,7 +54,7 @@ std::vector<Mesh::Vertex_index> read_fixed(const std::string& path, const Mesh& 
       const bool digits = word.size() < 10 && word.find_first_not_of("0123456789") == std::string::npos;
       const std::size_t i = digits ? std::size_t(std::stoul(word)) : std::size_t(-1);
       if(i >= num_vertices(mesh))
-        throw std::invalid_argument(path + ":" + std::to_string(number) + ": \"" + word +
+        throw example::Usage_error(path + ":" + std::to_string(number) + ": \"" + word +
                                     "\" is not a vertex index (the mesh has " +
                                     std::to_string(num_vertices(mesh)) + " vertices)");
       fixed.push_back(Mesh::Vertex_index(Mesh::size_type(i)));
@@ -64,7 +64,7 @@ std::vector<Mesh::Vertex_index> read_fixed(const std::string& path, const Mesh& 
 }
 
 template <class Solver>
-std::size_t embed(Mesh& mesh, const std::vector<Mesh::Vertex_index>& fixed, SD::Barycentric_weighting w)
+std::size_t embed(Mesh& mesh, const std::vector<Mesh::Vertex_index>& fixed, SD::Edge_weighting w)
 {
   SD::Barycentric_embedder<Mesh, boost::property_map<Mesh, CGAL::vertex_point_t>::type, Solver> embedder(
     mesh, fixed, P::weighting(w));
@@ -81,10 +81,10 @@ int main(int argc, char** argv)
     if(argc < 2)
     {
       std::cerr << usage;
-      return 2;
+      return 1;
     }
     std::string input = argv[1], fixed_file, output, png, up = "+Y", solver = "ldlt";
-    SD::Barycentric_weighting weighting = SD::Barycentric_weighting::uniform;
+    SD::Edge_weighting weighting = SD::Edge_weighting::uniform;
     for(int i = 2; i < argc; ++i)
     {
       const std::string a = argv[i];
@@ -103,16 +103,16 @@ int main(int argc, char** argv)
       {
         const std::string w = value();
         if(w == "uniform")
-          weighting = SD::Barycentric_weighting::uniform;
+          weighting = SD::Edge_weighting::uniform;
         else if(w == "cotangent")
-          weighting = SD::Barycentric_weighting::cotangent;
+          weighting = SD::Edge_weighting::cotangent;
         else if(w == "mean-value")
-          weighting = SD::Barycentric_weighting::mean_value;
+          weighting = SD::Edge_weighting::mean_value;
         else
-          throw std::invalid_argument("--weights is uniform, cotangent or mean-value, not " + w);
+          throw example::Usage_error("--weights is uniform, cotangent or mean-value, not " + w);
       }
       else
-        throw std::invalid_argument("unknown option " + a + "\n" + usage);
+        throw example::Usage_error("unknown option " + a + "\n" + usage);
     }
 
     Mesh mesh = example::read_mesh(input);
@@ -126,7 +126,7 @@ int main(int argc, char** argv)
         if(is_border(h, mesh))
           fixed.push_back(target(h, mesh));
       if(fixed.empty())
-        throw std::invalid_argument(input + " has no boundary: give the fixed vertices with --fixed");
+        throw example::Usage_error(input + " has no boundary: give the fixed vertices with --fixed");
     }
 
     example::Stopwatch clock;

@@ -62,38 +62,10 @@ inline double surface_area(const Mesh& mesh)
   return area;
 }
 
-/// Parses a whole string as a number, or throws naming the option.
-inline double parse_double(const std::string& text, const std::string& option)
+/// Parses the whole of `text` as an integer >= 1.
+inline std::size_t parse_count(const std::string& text, const std::string& option, long largest = 1000000000L)
 {
-  std::size_t used = 0;
-  double value = 0.;
-  try
-  {
-    value = std::stod(text, &used);
-  }
-  catch(const std::exception&)
-  {
-    used = 0;
-  }
-  if(used == 0 || used != text.size())
-    throw std::invalid_argument(option + " expects a number, not \"" + text + "\"");
-  return value;
-}
-
-/// The value of option argv[i] (argv[i + 1]), advancing i; throws if it is missing.
-inline std::string option_value(int argc, char** argv, int& i)
-{
-  if(i + 1 >= argc)
-    throw std::invalid_argument(std::string(argv[i]) + " needs a value");
-  return argv[++i];
-}
-
-inline std::size_t parse_count(const std::string& text, const std::string& option)
-{
-  const double value = parse_double(text, option);
-  if(!(value >= 1.) || value != double(std::size_t(value)))
-    throw std::invalid_argument(option + " expects a positive integer, not \"" + text + "\"");
-  return std::size_t(value);
+  return std::size_t(parse_integer(text, option, 1, largest));
 }
 
 } // namespace example

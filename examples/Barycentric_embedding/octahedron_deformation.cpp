@@ -11,6 +11,7 @@
 #include <CGAL/Surface_design/Barycentric_embedder.h>
 #include <CGAL/Surface_design/barycentric_embedding.h>
 #include <CGAL/Surface_design/mesh_generators.h>
+#include <CGAL/Surface_design/octahedron_membrane.h>
 
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 
@@ -61,7 +62,7 @@ int main(int argc, char** argv)
       else
       {
         std::cerr << usage;
-        return 2;
+        return 1;
       }
     }
 

@@ -10,6 +10,7 @@
 
 #include <CGAL/Surface_design/barycentric_embedding.h>
 #include <CGAL/Surface_design/mesh_generators.h>
+#include <CGAL/Surface_design/octahedron_membrane.h>
 
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 
@@ -66,17 +67,17 @@ int main(int argc, char** argv)
       {
         const std::string p = value();
         if(p != "equal" && p != "radial")
-          throw std::invalid_argument("--placement is equal or radial, not " + p);
+          throw example::Usage_error("--placement is equal or radial, not " + p);
         placement = p == "equal" ? SD::Octahedron_loop_placement::equal_angles
                                  : SD::Octahedron_loop_placement::radial_projection;
       }
       else
-        throw std::invalid_argument("unknown option " + a);
+        throw example::Usage_error("unknown option " + a);
     }
     if(m == 0 || !(radius > 0.))
     {
       std::cerr << usage;
-      return 2;
+      return 1;
     }
 
     Mesh mesh;

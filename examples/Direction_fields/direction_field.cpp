@@ -7,8 +7,10 @@
 #include "../common/example_support.h"
 
 #include <CGAL/Surface_design/direction_fields.h>
-#include <CGAL/Surface_design/internal/geometry.h>
 #include <CGAL/Surface_design/Trivial_connection.h>
+
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <cmath>
 #include <iostream>
@@ -17,7 +19,6 @@
 #include <vector>
 
 namespace SD = CGAL::Surface_design;
-namespace SDI = CGAL::Surface_design::internal;
 using example::Mesh;
 using example::Point;
 using example::Vector;
@@ -38,7 +39,8 @@ const char* usage =
   "  --curvature-weight W      smoothest: align with the principal curvature directions (N even)\n"
   "  --boundary free|tangent|normal   smoothest: boundary condition (default free)\n"
   "  --solver ldlt|cholmod     sparse solver (default ldlt)\n"
-  "  --output OUT.ply          mesh with vertex field_x, field_y, field_z and face field_index\n"
+  "  --output OUT.ply          mesh with vertex field_x, field_y, field_z and face field_index (k/N)\n"
+  "                            and field_index_numerator (k)\n"
   "  --picture OUT.png         arrows (n = 1), segments (n = 2) or crosses (n = 4) on the surface,\n"
   "                            singular faces red (positive) and blue (negative), rendered with f3d\n"
   "  --up +Y|+Z|...            up direction of the picture (default +Y)\n";
@@ -55,77 +57,91 @@ struct Options
 Options parse(int argc, char** argv)
 {
   Options o;
+  bool method_given = false, n_given = false;
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
-    auto next = [&]() -> std::string {
-      if(i + 1 >= argc)
-        throw std::invalid_argument(a + " needs a value");
-      return argv[++i];
-    };
+    auto next = [&]() { return example::option_value(argc, argv, i); };
     if(a == "--method")
-      o.method = next();
+    {
+      const std::string m = example::parse_choice(next(), a, {"smoothest", "trivial"});
+      if(method_given && m != o.method)
+        throw example::Usage_error("--method is given twice with different values");
+      o.method = m;
+      method_given = true;
+    }
     else if(a == "--n")
-      o.n = std::stoi(next());
+    {
+      const int n = int(example::parse_integer(next(), a, 1, 64));
+      if(n_given && n != o.n)
+        throw example::Usage_error("--n is given twice with different values");
+      o.n = n;
+      n_given = true;
+    }
     else if(a == "--singularity")
     {
-      const auto [f, k] = example::parse_pair(next(), "FACE:INDEX");
+      const auto [f, k] = example::parse_pair(next(), "--singularity FACE:INDEX");
       if(f < 0)
-        throw std::invalid_argument("face numbers start at 0");
+        throw example::Usage_error("face numbers start at 0");
+      if(k == 0)
+        throw example::Usage_error("--singularity " + std::to_string(f) + ":0 prescribes nothing");
       o.singularities[std::size_t(f)] += int(k);
     }
     else if(a == "--curvature-weight")
-      o.curvature_weight = std::stod(next());
+      o.curvature_weight = example::parse_double(next(), a, 0., 1e12);
     else if(a == "--boundary")
-      o.boundary = next();
+      o.boundary = example::parse_choice(next(), a, {"free", "tangent", "normal"});
     else if(a == "--solver")
-      o.solver = next();
+      o.solver = example::parse_choice(next(), a, {"ldlt", "cholmod"});
     else if(a == "--output")
-      o.output = next();
+      example::check_output_path(o.output = next(), a, {".ply"});
     else if(a == "--picture")
-      o.picture = next();
+      example::check_output_path(o.picture = next(), a, {".png"});
     else if(a == "--up")
-      o.up = next();
+      o.up = example::parse_choice(next(), a, {"+X", "-X", "+Y", "-Y", "+Z", "-Z"});
     else if(!a.empty() && a[0] == '-')
-      throw std::invalid_argument("unknown option " + a);
+      throw example::Usage_error("unknown option " + a);
     else if(o.input.empty())
       o.input = a;
     else
-      throw std::invalid_argument("more than one input file");
+      throw example::Usage_error("more than one input file");
   }
   if(o.input.empty())
-    throw std::invalid_argument("no input mesh");
-  if(o.method != "smoothest" && o.method != "trivial")
-    throw std::invalid_argument("--method must be smoothest or trivial");
+    throw example::Usage_error("no input mesh");
+  if(!method_given)
+    throw example::Usage_error("--method smoothest|trivial is required");
   if(o.output.empty())
-    throw std::invalid_argument("--output OUT.ply is required");
+    throw example::Usage_error("--output OUT.ply is required");
   if(o.method == "smoothest" && !o.singularities.empty())
-    throw std::invalid_argument("--singularity needs --method trivial (smoothest fields place their own)");
+    throw example::Usage_error("--singularity needs --method trivial (smoothest fields place their own)");
   if(o.method == "trivial" && (o.curvature_weight != 0. || o.boundary != "free"))
-    throw std::invalid_argument("--curvature-weight and --boundary apply to --method smoothest");
+    throw example::Usage_error("--curvature-weight and --boundary apply to --method smoothest");
   return o;
 }
 
 SD::Direction_field_boundary boundary_condition(const std::string& b)
 {
-  if(b == "free")
-    return SD::Direction_field_boundary::free;
-  if(b == "tangent")
-    return SD::Direction_field_boundary::tangent;
-  if(b == "normal")
-    return SD::Direction_field_boundary::normal;
-  throw std::invalid_argument("--boundary must be free, tangent or normal");
+  return b == "tangent" ? SD::Direction_field_boundary::tangent
+         : b == "normal" ? SD::Direction_field_boundary::normal
+                         : SD::Direction_field_boundary::free;
 }
 
 // Glyphs of an n-direction field, one per face (every stride-th face on big meshes), over the
 // surface; scalar 0 surface, 1 glyphs, 2 / 3 faces of positive / negative index.
-void write_picture(const Mesh& mesh, const std::vector<Vector>& field, const std::vector<double>& index, int n,
+void write_picture(const Mesh& mesh, const std::vector<Vector>& field, const std::vector<int>& index, int n,
                    const Options& o)
 {
-  const SDI::Mesh_indices<Mesh> idx(mesh);
-  const auto normal = SDI::vertex_normals(idx, mesh.points());
-  const auto face_normal = SDI::face_normals(idx, mesh.points());
-  const auto area = SDI::face_areas(idx, mesh.points());
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  auto eigen = [](const Vector& x) { return Eigen::Vector3d(x.x(), x.y(), x.z()); };
+  std::vector<Eigen::Vector3d> normal, face_normal;
+  std::vector<double> area;
+  for(auto v : vertices(mesh))
+    normal.push_back(eigen(PMP::compute_vertex_normal(v, mesh)));
+  for(auto f : faces(mesh))
+  {
+    face_normal.push_back(eigen(PMP::compute_face_normal(f, mesh)));
+    area.push_back(PMP::face_area(f, mesh));
+  }
   example::Vtk_surface vtk;
   vtk.scalar_name = "field";
   auto add_point = [&](const Eigen::Vector3d& p, const Eigen::Vector3d& nn, double s) {
@@ -138,7 +154,6 @@ void write_picture(const Mesh& mesh, const std::vector<Vector>& field, const std
   for(double a : area)
     mean_area += a / double(area.size());
   const std::size_t stride = (std::max<std::size_t>)(1, num_faces(mesh) / 12000);
-  const double pi = std::acos(-1.);
   const double length = 0.75 * std::sqrt(4. * mean_area * double(stride) / std::sqrt(3.));
   const double lift = 0.02 * length;
   for(auto f : faces(mesh))
@@ -151,7 +166,7 @@ void write_picture(const Mesh& mesh, const std::vector<Vector>& field, const std
     std::vector<Eigen::Vector3d> dirs;
     for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
     {
-      const Eigen::Vector3d p = SDI::position(mesh.points(), v);
+      const Eigen::Vector3d p(mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z());
       centre += p / 3.;
       t[std::size_t(k++)] = add_point(p, normal[std::size_t(v)], s);
       const Vector& x = field[std::size_t(v)];
@@ -169,7 +184,7 @@ void write_picture(const Mesh& mesh, const std::vector<Vector>& field, const std
       Eigen::Vector3d x = (dirs[i] - dirs[i].dot(nf) * nf).normalized(), best = x;
       for(int r = 1; r < n && i > 0; ++r)
       {
-        const double a = 2. * pi * r / n;
+        const double a = 2. * CGAL_PI * r / n;
         const Eigen::Vector3d y = std::cos(a) * x + std::sin(a) * nf.cross(x);
         if(y.dot(first) > best.dot(first))
           best = y;
@@ -236,7 +251,7 @@ int run(const Options& o)
   }
   else
   {
-    SD::Trivial_connection<Mesh, Mesh::Property_map<Mesh::Vertex_index, Point>, Solver> tc(mesh, mesh.points(), o.n);
+    SD::Trivial_connection tc(mesh, SD::parameters::symmetry_order(o.n, SD::parameters::sparse_linear_solver(Solver())));
     std::cout << "trivial connection set-up and factorization: " << clock.lap() << " ms\n";
     for(const auto& [f, k] : o.singularities)
       tc.set_index(f, k);
@@ -246,18 +261,20 @@ int run(const Options& o)
               << tc.largest_adjustment() << " rad)\n";
   }
 
-  std::vector<double> index(num_faces(mesh), 0.);
+  // indices in units of 1/n
+  std::vector<int> index(num_faces(mesh), 0);
   const std::size_t count = SD::direction_field_singularities(
     mesh, field_map, CGAL::make_property_map(index), SD::parameters::symmetry_order(o.n));
-  double sum = 0.;
+  long sum = 0;
+  auto text = [&o](long k) { return o.n == 1 ? std::to_string(k) : std::to_string(k) + "/" + std::to_string(o.n); };
   std::cout << "singularities (" << count << "):";
   for(std::size_t f = 0; f < index.size(); ++f)
-    if(index[f] != 0.)
+    if(index[f] != 0)
     {
       sum += index[f];
-      std::cout << ' ' << f << ':' << index[f];
+      std::cout << ' ' << f << ':' << text(index[f]);
     }
-  std::cout << "\nindex sum " << sum << " (Euler characteristic "
+  std::cout << "\nindex sum " << text(sum) << " (Euler characteristic "
             << long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh)) << ")\n";
 
   example::Ply_property fx{"field_x", "double", {}}, fy{"field_y", "double", {}}, fz{"field_z", "double", {}};
@@ -267,7 +284,13 @@ int run(const Options& o)
     fy.values.push_back(x.y());
     fz.values.push_back(x.z());
   }
-  example::write_ply(o.output, mesh, {fx, fy, fz}, {{"field_index", "double", index}});
+  example::Ply_property numerator{"field_index_numerator", "int", {}}, value{"field_index", "double", {}};
+  for(int k : index)
+  {
+    numerator.values.push_back(k);
+    value.values.push_back(double(k) / o.n);
+  }
+  example::write_ply(o.output, mesh, {fx, fy, fz}, {value, numerator});
   std::cout << "wrote " << o.output << '\n';
   if(!o.picture.empty())
     write_picture(mesh, field, index, o.n, o);
@@ -289,9 +312,14 @@ int main(int argc, char** argv)
     const Options o = parse(argc, argv);
     return example::with_solver(o.solver, [&o](auto traits) { return run<decltype(traits)>(o); });
   }
+  catch(const example::Usage_error& e)
+  {
+    std::cerr << "direction_field: " << e.what() << "\n(run without arguments for the usage)\n";
+    return 1;
+  }
   catch(const std::exception& e)
   {
-    std::cerr << "error: " << e.what() << "\n\n" << usage;
+    std::cerr << "direction_field: " << e.what() << '\n';
     return 1;
   }
 }

@@ -9,10 +9,10 @@
 #include <CGAL/Surface_design/direction_fields.h>
 #include <CGAL/Surface_design/field_aligned_parameterization.h>
 #include <CGAL/Surface_design/Field_aligned_parameterizer.h>
-#include <CGAL/Surface_design/internal/geometry.h>
 #include <CGAL/Surface_design/Trivial_connection.h>
 
 #include <CGAL/Heat_method_3/Surface_mesh_geodesic_distances_3.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 
 #include <cmath>
 #include <iostream>
@@ -70,78 +70,91 @@ Options parse(int argc, char** argv)
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
-    auto next = [&]() -> std::string {
-      if(i + 1 >= argc)
-        throw std::invalid_argument(a + " needs a value");
-      return argv[++i];
-    };
+    auto next = [&]() { return example::option_value(argc, argv, i); };
     if(a == "--field")
       o.field = next();
     else if(a == "--scale")
-      o.scale = std::stod(next());
+      o.scale = example::parse_positive(next(), a);
     else if(a == "--singularity")
     {
-      const auto [f, k] = parse_pair(next(), "FACE:INDEX");
+      const auto [f, k] = parse_pair(next(), "--singularity FACE:INDEX");
       if(f < 0)
-        throw std::invalid_argument("face numbers start at 0");
+        throw example::Usage_error("face numbers start at 0");
+      if(k == 0)
+        throw example::Usage_error("--singularity " + std::to_string(f) + ":0 prescribes nothing");
       o.singularities.emplace_back(std::size_t(f), int(k));
     }
     else if(a == "--winding")
     {
-      const auto [l, n] = parse_pair(next(), "LOOP:N");
+      const auto [l, n] = parse_pair(next(), "--winding LOOP:N");
       if(l < 0)
-        throw std::invalid_argument("loop numbers start at 0");
+        throw example::Usage_error("loop numbers start at 0");
+      if(o.windings.count(std::size_t(l)) && o.windings[std::size_t(l)] != int(n))
+        throw example::Usage_error("--winding " + std::to_string(l) + " is given twice with different values");
       o.windings[std::size_t(l)] = int(n);
     }
     else if(a == "--solver")
-      o.solver = next();
+      o.solver = example::parse_choice(next(), a, {"ldlt", "cholmod"});
     else if(a == "--convention")
-    {
-      const std::string c = next();
-      if(c == "projected")
-        o.convention = SD::One_form_convention::projected;
-      else if(c == "angle_rescaled")
-        o.convention = SD::One_form_convention::angle_rescaled;
-      else
-        throw std::invalid_argument("unknown convention " + c);
-    }
+      o.convention = example::parse_choice(next(), a, {"projected", "angle_rescaled"}) == "projected"
+                       ? SD::One_form_convention::projected
+                       : SD::One_form_convention::angle_rescaled;
     else if(a == "--output")
-      o.output = next();
+      example::check_output_path(o.output = next(), a, {".ply"});
     else if(a == "--picture")
-      o.picture = next();
+      example::check_output_path(o.picture = next(), a, {".png"});
     else if(a == "--up")
-      o.up = next();
+      o.up = example::parse_choice(next(), a, {"+X", "-X", "+Y", "-Y", "+Z", "-Z"});
     else if(!a.empty() && a[0] == '-')
-      throw std::invalid_argument("unknown option " + a);
+      throw example::Usage_error("unknown option " + a);
     else if(o.input.empty())
       o.input = a;
     else
-      throw std::invalid_argument("more than one input file");
+      throw example::Usage_error("more than one input file");
   }
   if(o.input.empty())
-    throw std::invalid_argument("no input mesh");
+    throw example::Usage_error("no input mesh");
   return o;
+}
+
+Eigen::Vector3d eigen(const Point& p) { return Eigen::Vector3d(p.x(), p.y(), p.z()); }
+
+// Unit vertex normals (CGAL's default weighting), indexed by vertex.
+std::vector<Eigen::Vector3d> vertex_normals(const Mesh& mesh)
+{
+  std::vector<Eigen::Vector3d> normal;
+  for(auto v : vertices(mesh))
+  {
+    const Vector n = CGAL::Polygon_mesh_processing::compute_vertex_normal(v, mesh);
+    normal.emplace_back(n.x(), n.y(), n.z());
+  }
+  return normal;
 }
 
 // The vector field the stripes follow, one vector per vertex.
 std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec)
 {
-  namespace SDI = CGAL::Surface_design::internal;
   if(spec.rfind("axis:", 0) == 0)
   {
-    double x, y, z;
-    if(std::sscanf(spec.c_str() + 5, "%lf,%lf,%lf", &x, &y, &z) != 3)
-      throw std::invalid_argument("expected --field axis:X,Y,Z, got " + spec);
-    return std::vector<Vector>(num_vertices(mesh), Vector(x, y, z));
+    std::stringstream list(spec.substr(5));
+    std::vector<double> xyz;
+    for(std::string item; std::getline(list, item, ',');)
+      xyz.push_back(example::parse_double(item, "--field axis:X,Y,Z"));
+    if(xyz.size() != 3)
+      throw example::Usage_error("expected --field axis:X,Y,Z, got " + spec);
+    if(xyz[0] == 0. && xyz[1] == 0. && xyz[2] == 0.)
+      throw example::Usage_error("--field axis:0,0,0 has no direction");
+    return std::vector<Vector>(num_vertices(mesh), Vector(xyz[0], xyz[1], xyz[2]));
   }
   if(spec.rfind("heat:", 0) == 0)
   {
-    long v = -1;
-    double degrees = 0.;
-    if(std::sscanf(spec.c_str() + 5, "%ld:%lf", &v, &degrees) < 1 || v < 0 ||
-       std::size_t(v) >= num_vertices(mesh))
-      throw std::invalid_argument("expected --field heat:VERTEX[:DEGREES] with a vertex of the mesh "
-                                  "(0.." + std::to_string(num_vertices(mesh) - 1) + "), got " + spec);
+    const std::string rest = spec.substr(5);
+    const auto colon = rest.find(':');
+    const long v = example::parse_integer(rest.substr(0, colon), "--field heat:VERTEX[:DEGREES] (VERTEX)", 0,
+                                          long(num_vertices(mesh)) - 1);
+    const double degrees = colon == std::string::npos
+                             ? 0.
+                             : example::parse_double(rest.substr(colon + 1), "--field heat:VERTEX:DEGREES (DEGREES)");
     const Mesh::Vertex_index source_vertex(static_cast<std::uint32_t>(v));
     // the faces where a singularity centres the rings, spokes or spiral
     std::cout << "faces around vertex " << v << ":";
@@ -154,8 +167,7 @@ std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec)
     CGAL::Heat_method_3::estimate_geodesic_distances(mesh, distance, source_vertex);
     // gradient of the piecewise-linear distance in every face, area-averaged to the vertices,
     // then rotated about the vertex normal
-    SDI::Mesh_indices<Mesh> idx(mesh);
-    const auto normal = SDI::vertex_normals(idx, mesh.points());
+    const std::vector<Eigen::Vector3d> normal = vertex_normals(mesh);
     std::vector<Eigen::Vector3d> g(num_vertices(mesh), Eigen::Vector3d::Zero());
     for(auto f : faces(mesh))
     {
@@ -166,7 +178,7 @@ std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec)
       for(auto w : vertices_around_face(halfedge(f, mesh), mesh))
       {
         vs[k] = w;
-        p[k] = SDI::position(mesh.points(), w);
+        p[k] = eigen(mesh.point(w));
         d[k] = distance_values[std::size_t(w)];
         ++k;
       }
@@ -180,7 +192,7 @@ std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec)
       for(int i = 0; i < 3; ++i)
         g[std::size_t(vs[i])] += std::sqrt(area2) * grad;
     }
-    const double theta = degrees * std::acos(-1.) / 180.;
+    const double theta = degrees * CGAL_PI / 180.;
     std::vector<Vector> field;
     for(std::size_t i = 0; i < g.size(); ++i)
     {
@@ -200,14 +212,14 @@ std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec)
   if(spec.rfind("trivial:", 0) == 0)
   {
     // trivial:FACE:INDEX,FACE:INDEX,...
-    SD::Trivial_connection<Mesh> tc(mesh);
+    SD::Trivial_connection tc(mesh);
     std::map<std::size_t, int> indices; // repeated faces add up
     std::stringstream list(spec.substr(8));
     for(std::string item; std::getline(list, item, ',');)
     {
       const auto [f, k] = parse_pair(item, "--field trivial:FACE:INDEX,FACE:INDEX,...");
       if(f < 0)
-        throw std::invalid_argument("face numbers start at 0");
+        throw example::Usage_error("face numbers start at 0");
       indices[std::size_t(f)] += int(k);
     }
     for(const auto& [f, k] : indices)
@@ -217,7 +229,7 @@ std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec)
     std::cout << "trivial-connection vector field: largest adjustment " << tc.largest_adjustment() << " rad\n";
     return field;
   }
-  throw std::invalid_argument("unknown field " + spec);
+  throw example::Usage_error("unknown field " + spec + " (axis:X,Y,Z, heat:V[:DEGREES], smoothest or trivial:...)");
 }
 
 template <class Solver>
@@ -228,13 +240,11 @@ int run(const Options& o)
   std::cout << "read " << o.input << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh)
             << " faces (" << clock.lap() << " ms)\n";
 
-  SD::Field_aligned_parameterizer<Mesh, Mesh::Property_map<Mesh::Vertex_index, Point>, Solver> fap(
-    mesh, mesh.points());
+  SD::Field_aligned_parameterizer fap(mesh, SD::parameters::sparse_linear_solver(Solver()));
   std::cout << "validate, topology, weights, factorization: " << clock.lap() << " ms\n";
-  const auto& topo = fap.topology();
-  std::cout << "  " << topo.components.size() << " component(s), genus";
-  for(const auto& c : topo.components.info)
-    std::cout << ' ' << c.genus();
+  std::cout << "  " << fap.number_of_connected_components() << " component(s), genus";
+  for(std::size_t c = 0; c < fap.number_of_connected_components(); ++c)
+    std::cout << ' ' << fap.genus(c);
   std::cout << ", " << fap.number_of_generator_loops() << " generator loop(s), "
             << fap.number_of_boundary_loops() << " boundary loop(s)\n";
 
@@ -272,9 +282,8 @@ int run(const Options& o)
     if(detected[f] != 0)
       std::cout << ' ' << std::size_t(f) << ':' << detected[f];
   std::cout << '\n';
-  const auto& prescribed = fap.indices_per_face();
   for(auto f : faces(mesh))
-    if(detected[f] != prescribed[std::size_t(f)])
+    if(detected[f] != fap.index(f))
     {
       std::cout << "  note: some faces next to a singularity carry |dalpha| >= pi on an edge, so the\n"
                    "  wrapped alpha shows their winding differently (refine the mesh or lower --scale)\n";
@@ -283,15 +292,14 @@ int run(const Options& o)
 
   if(!o.output.empty())
   {
-    const auto& idx = fap.indices();
     std::vector<std::array<std::size_t, 2>> edge_vertices;
     example::Ply_property omega{"omega", "double", {}}, dalpha{"dalpha", "double", {}};
-    for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+    for(auto e : edges(mesh))
     {
-      const auto ij = idx.edge_vertices(e); // oriented from vertex1 to vertex2
-      edge_vertices.push_back({ij.first, ij.second});
-      omega.values.push_back(fap.target_one_form()[e]);
-      dalpha.values.push_back(fap.one_form()[e]);
+      const auto h = halfedge(e, mesh); // omega and dalpha along h: from vertex1 to vertex2
+      edge_vertices.push_back({std::size_t(source(h, mesh)), std::size_t(target(h, mesh))});
+      omega.values.push_back(fap.omega(h));
+      dalpha.values.push_back(fap.dalpha(h));
     }
     example::Ply_property alpha_prop{"alpha", "double", {}}, index_prop{"index", "int", {}};
     for(auto v : vertices(mesh))
@@ -308,11 +316,10 @@ int run(const Options& o)
     // the rendered stripes cos(alpha) are crisp and seamless.
     auto corner = mesh.add_property_map<Mesh::Halfedge_index, double>("h:corner", 0.).first;
     fap.corner_coordinates(corner);
-    namespace SDI = CGAL::Surface_design::internal;
-    const auto normal = SDI::vertex_normals(fap.indices(), mesh.points());
+    const std::vector<Eigen::Vector3d> normal = vertex_normals(mesh);
     double largest = 0.;
-    for(double y : fap.one_form())
-      largest = (std::max)(largest, std::abs(y));
+    for(auto h : halfedges(mesh))
+      largest = (std::max)(largest, std::abs(fap.dalpha(h)));
     const std::size_t budget = 3000000 / (std::max<std::size_t>)(num_faces(mesh), 1);
     std::size_t n = std::size_t(std::ceil(largest / 0.6));
     n = (std::max<std::size_t>)(1, (std::min)(n, (std::min<std::size_t>)(8, std::size_t(std::sqrt(double(budget))))));
@@ -327,7 +334,7 @@ int run(const Options& o)
       for(int i = 0; i < 3; ++i)
       {
         const auto v = target(hs[i], mesh);
-        p[i] = SDI::position(mesh.points(), v);
+        p[i] = eigen(mesh.point(v));
         nn[i] = normal[std::size_t(v)];
         u[i] = corner[hs[i]];
       }
@@ -364,30 +371,20 @@ int run(const Options& o)
 
 int main(int argc, char** argv)
 {
+  if(argc < 2)
+  {
+    std::cerr << usage;
+    return 1;
+  }
   try
   {
-    if(argc < 2)
-    {
-      std::cerr << usage;
-      return 2;
-    }
     const Options o = parse(argc, argv);
     return example::with_solver(o.solver, [&o](auto traits) { return run<decltype(traits)>(o); });
   }
-  catch(const SD::Invalid_mesh& e)
+  catch(const example::Usage_error& e)
   {
-    std::cerr << "stripes: " << e.what() << '\n';
+    std::cerr << "stripes: " << e.what() << "\n(run without arguments for the usage)\n";
     return 1;
-  }
-  catch(const SD::Invalid_constraints& e)
-  {
-    std::cerr << "stripes: " << e.what() << '\n';
-    return 1;
-  }
-  catch(const std::invalid_argument& e)
-  {
-    std::cerr << "stripes: " << e.what() << "\n\n" << usage;
-    return 2;
   }
   catch(const std::exception& e)
   {

@@ -13,7 +13,12 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_design/solver_traits.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <array>
+#include <cmath>
+#include <limits>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -32,6 +37,13 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Vector = Kernel::Vector_3;
 using Mesh = CGAL::Surface_mesh<Point>;
+
+/// A command-line error: the program prints the message and exits with status 1, writing nothing.
+struct Usage_error : std::invalid_argument
+{
+  using std::invalid_argument::invalid_argument;
+};
+
 
 /// Reads OFF, OBJ, PLY, STL... into a Surface_mesh whose vertices and faces keep the file's order
 /// (vertex i and face i of the file are Mesh::Vertex_index(i) and Mesh::Face_index(i)).
@@ -81,22 +93,121 @@ decltype(auto) with_solver(const std::string& name, F&& f)
   if(name == "cholmod")
     return f(CGAL::Surface_design::Cholmod_solver_traits());
 #endif
-  throw std::invalid_argument("unknown or unavailable solver \"" + name + "\" (ldlt, or cholmod when built with CHOLMOD)");
+  throw Usage_error("unknown or unavailable solver \"" + name + "\" (ldlt, or cholmod when built with CHOLMOD)");
 }
 
-/// Parses "A:B" into two integers; throws std::invalid_argument naming `what` otherwise.
-inline std::pair<long, long> parse_pair(const std::string& s, const char* what)
+/// The value of option argv[i] (argv[i + 1]), advancing i; throws if it is missing.
+inline std::string option_value(int argc, char** argv, int& i)
 {
-  const auto colon = s.find(':');
+  if(i + 1 >= argc)
+    throw Usage_error(std::string(argv[i]) + " needs a value");
+  return argv[++i];
+}
+
+/// Parses the whole of `text` as a finite number in [lo, hi], or throws naming the option.
+inline double parse_double(const std::string& text, const std::string& option,
+                           double lo = -std::numeric_limits<double>::max(),
+                           double hi = std::numeric_limits<double>::max())
+{
+  std::size_t used = 0;
+  double value = 0.;
   try
   {
-    if(colon == std::string::npos)
-      throw std::invalid_argument(s);
-    return {std::stol(s.substr(0, colon)), std::stol(s.substr(colon + 1))};
+    value = std::stod(text, &used);
   }
   catch(const std::exception&)
   {
-    throw std::invalid_argument(std::string("expected ") + what + ", got '" + s + "'");
+    used = 0;
+  }
+  if(used == 0 || used != text.size() || !std::isfinite(value))
+    throw Usage_error(option + " expects a finite number, not \"" + text + "\"");
+  if(value < lo || value > hi)
+  {
+    std::ostringstream s;
+    s << option << " must lie in [" << lo << ", " << hi << "], not " << text;
+    throw Usage_error(s.str());
+  }
+  return value;
+}
+
+/// Parses the whole of `text` as a number > 0 (finite).
+inline double parse_positive(const std::string& text, const std::string& option)
+{
+  const double value = parse_double(text, option);
+  if(!(value > 0.))
+    throw Usage_error(option + " must be positive, not " + text);
+  return value;
+}
+
+/// Parses the whole of `text` as an integer in [lo, hi], or throws naming the option.
+inline long parse_integer(const std::string& text, const std::string& option, long lo, long hi)
+{
+  std::size_t used = 0;
+  long value = 0;
+  try
+  {
+    value = std::stol(text, &used);
+  }
+  catch(const std::exception&)
+  {
+    used = 0;
+  }
+  if(used == 0 || used != text.size())
+    throw Usage_error(option + " expects an integer, not \"" + text + "\"");
+  if(value < lo || value > hi)
+    throw Usage_error(option + " must lie in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], not " + text);
+  return value;
+}
+
+/// Parses "A:B" into two integers; throws naming `what` otherwise.
+inline std::pair<long, long> parse_pair(const std::string& s, const char* what)
+{
+  const auto colon = s.find(':');
+  if(colon == std::string::npos)
+    throw Usage_error(std::string("expected ") + what + ", got '" + s + "'");
+  const long lim = std::numeric_limits<int>::max();
+  return {parse_integer(s.substr(0, colon), what, -lim, lim), parse_integer(s.substr(colon + 1), what, -lim, lim)};
+}
+
+/// Parses one of `words`, or throws listing them.
+inline std::string parse_choice(const std::string& text, const std::string& option,
+                                const std::vector<std::string>& words)
+{
+  for(const std::string& w : words)
+    if(w == text)
+      return text;
+  std::string list;
+  for(const std::string& w : words)
+    list += (list.empty() ? "" : ", ") + w;
+  throw Usage_error(option + " is one of " + list + ", not \"" + text + "\"");
+}
+
+/// Throws unless `path` can be created: its folder exists (so that a run never computes for
+/// minutes and then fails to write, and never leaves a partial set of outputs).
+inline void check_output_path(const std::string& path, const std::string& option,
+                              const std::vector<std::string>& extensions = {})
+{
+  if(path.empty())
+    throw Usage_error(option + " needs a file name");
+  const auto slash = path.rfind('/');
+  const std::string folder = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
+  struct stat info;
+  if(stat(folder.c_str(), &info) != 0 || !S_ISDIR(info.st_mode) || access(folder.c_str(), W_OK) != 0)
+    throw Usage_error(option + ": the folder \"" + folder + "\" of " + path + " does not exist or is not writable");
+  if(!extensions.empty())
+  {
+    const auto dot = path.rfind('.');
+    const std::string ext = dot == std::string::npos ? "" : path.substr(dot);
+    bool known = false;
+    for(const std::string& e : extensions)
+      known = known || e == ext;
+    if(!known)
+    {
+      std::string list;
+      for(const std::string& e : extensions)
+        list += (list.empty() ? "" : ", ") + e;
+      throw Usage_error(option + " expects a file ending in " + list + ", not " + path);
+    }
   }
 }
 

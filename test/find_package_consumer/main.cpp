@@ -1,10 +1,10 @@
 // Uses the installed headers: topology of a generated torus, solved with the default solver.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Surface_design/internal/dec.h>
-#include <CGAL/Surface_design/internal/Factored_system.h>
-#include <CGAL/Surface_design/internal/geometry.h>
-#include <CGAL/Surface_design/internal/topology.h>
+#include <CGAL/Surface_design/internal/Core/dec.h>
+#include <CGAL/Surface_design/internal/Core/Factored_system.h>
+#include <CGAL/Surface_design/internal/Core/geometry.h>
+#include <CGAL/Surface_design/internal/Core/topology.h>
 #include <CGAL/Surface_design/mesh_generators.h>
 
 #include <iostream>

@@ -8,12 +8,14 @@
 #ifndef CGAL_SURFACE_DESIGN_BARYCENTRIC_EMBEDDER_H
 #define CGAL_SURFACE_DESIGN_BARYCENTRIC_EMBEDDER_H
 
+#include <CGAL/Surface_design/edge_weighting.h>
 #include <CGAL/Surface_design/exceptions.h>
-#include <CGAL/Surface_design/internal/barycentric_stencil.h>
-#include <CGAL/Surface_design/internal/dec.h>
-#include <CGAL/Surface_design/internal/Factored_system.h>
-#include <CGAL/Surface_design/internal/geometry.h>
-#include <CGAL/Surface_design/internal/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Barycentric_embedding/barycentric_stencil.h>
+#include <CGAL/Surface_design/internal/Core/dec.h>
+#include <CGAL/Surface_design/internal/Core/Factored_system.h>
+#include <CGAL/Surface_design/internal/Core/geometry.h>
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/named_parameters.h>
 #include <CGAL/Surface_design/parameters.h>
 #include <CGAL/Surface_design/solver_traits.h>
 
@@ -96,7 +98,7 @@ public:
   /// \param np optional named parameters among:
   /// - `vertex_point_map`: where positions are read and written; default
   ///   `get(CGAL::vertex_point, pm)`
-  /// - `weighting` (`Barycentric_weighting`): default `uniform` (the paper's)
+  /// - `weighting` (`Edge_weighting`): default `uniform` (the paper's)
   /// - `reference_point_map`: readable vertex -> `Point_3` map of the geometry the cotangent or
   ///   mean-value weights are computed from; default: `vertex_point_map`
   /// - `sparse_linear_solver`: a `SolverTraits` object; default `SolverTraits()`
@@ -113,18 +115,16 @@ public:
   Barycentric_embedder(PolygonMesh& pm, const FixedVertices& fixed_vertices,
                        const NamedParameters& np = CGAL::parameters::default_values())
     : m_pm(pm),
-      m_vpm(CGAL::parameters::choose_parameter<VertexPointMap>(
-        CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-        get_property_map(CGAL::vertex_point, pm))),
-      m_idx(pm),
+      m_vpm(internal::class_vertex_point_map<VertexPointMap, true>(pm, np)),
+      m_idx(pm, np),
       m_weighting(CGAL::parameters::choose_parameter(
-        CGAL::parameters::get_parameter(np, internal_np::weighting), Barycentric_weighting::uniform)),
-      m_symmetric(CGAL::parameters::choose_parameter<SolverTraits>(
-                    CGAL::parameters::get_parameter(np, CGAL::internal_np::sparse_linear_solver)),
+        CGAL::parameters::get_parameter(np, internal_np::weighting), Edge_weighting::uniform)),
+      m_symmetric(internal::class_solver_traits<SolverTraits>(np),
                   std::string("barycentric system of the free vertices (") + to_string(m_weighting) +
                     " weights)"),
       m_lu(Sparse_lu_solver_traits(), "barycentric system of the free vertices (mean-value weights)")
   {
+    internal::check_edge_weighting(m_weighting);
     const auto reference = CGAL::parameters::choose_parameter(
       CGAL::parameters::get_parameter(np, internal_np::reference_point_map), m_vpm);
     std::vector<bool> is_fixed = internal::fixed_flags(m_idx, fixed_vertices);
@@ -157,7 +157,7 @@ public:
   std::size_t number_of_free_vertices() const { return m_stencil.number_of_free_vertices(); }
   std::size_t number_of_fixed_vertices() const { return m_stencil.number_of_fixed_vertices(); }
   bool is_fixed(vertex_descriptor v) const { return m_stencil.is_fixed[m_idx.index(v)]; }
-  Barycentric_weighting weighting() const { return m_weighting; }
+  Edge_weighting weighting() const { return m_weighting; }
   /// The fixed vertices, in the order of their columns in the system.
   std::vector<vertex_descriptor> fixed_vertices() const
   {
@@ -189,7 +189,7 @@ public:
   /// @}
 
 private:
-  bool uses_lu() const { return m_weighting == Barycentric_weighting::mean_value; }
+  bool uses_lu() const { return m_weighting == Edge_weighting::mean_value; }
 
   // L_ff (free x free) and C (free x fixed, rhs = C x_c) from the stencil, and the factorization
   void factor()
@@ -197,26 +197,27 @@ private:
     const std::size_t nf = number_of_free_vertices();
     if(nf == 0)
       return; // every vertex is fixed: nothing to solve
-    std::vector<internal::Triplet> a, c;
-    a.reserve(m_stencil.neighbour.size() + nf);
-    c.reserve(m_stencil.neighbour.size() / 4);
+    // weight of neighbour target(h) at source(h), per halfedge leaving a free vertex
+    std::vector<double> halfedge_weight(m_idx.number_of_halfedges(), 0.);
+    std::vector<double> diagonal(m_idx.number_of_vertices(), 0.);
+    std::vector<internal::Triplet> c;
     for(std::size_t r = 0; r < nf; ++r)
-    {
-      double diagonal = 0.;
       for(std::size_t k = m_stencil.row_start[r]; k < m_stencil.row_start[r + 1]; ++k)
       {
         const std::size_t j = m_stencil.neighbour[k];
         const double w = m_stencil.weight[k];
-        diagonal += w;
+        halfedge_weight[m_stencil.halfedge[k]] += w;
+        diagonal[m_stencil.free_vertices[r]] += w;
         if(m_stencil.is_fixed[j])
           c.emplace_back(int(r), int(m_stencil.slot[j]), w);
-        else
-          a.emplace_back(int(r), int(m_stencil.slot[j]), -w);
       }
-      a.emplace_back(int(r), int(r), diagonal);
-    }
-    internal::Sparse_matrix A{static_cast<Eigen::Index>(nf), static_cast<Eigen::Index>(nf)};
-    A.setFromTriplets(a.begin(), a.end());
+    // the free rows and columns only: slot of a free vertex, npos for a fixed one
+    std::vector<std::size_t> free_slot(m_idx.number_of_vertices(), internal::npos);
+    for(std::size_t r = 0; r < nf; ++r)
+      free_slot[m_stencil.free_vertices[r]] = r;
+    internal::Sparse_matrix A = internal::assemble_vertex_matrix<double>(
+      m_idx, [&](std::size_t h) { return -halfedge_weight[h]; }, [&](std::size_t v) { return diagonal[v]; },
+      free_slot);
     m_coupling.resize(int(nf), int(number_of_fixed_vertices()));
     m_coupling.setFromTriplets(c.begin(), c.end());
     if(uses_lu())
@@ -278,7 +279,7 @@ private:
   PolygonMesh& m_pm;
   VertexPointMap m_vpm;
   Indices m_idx;
-  Barycentric_weighting m_weighting;
+  Edge_weighting m_weighting;
   internal::Barycentric_stencil m_stencil;
   internal::Sparse_matrix m_coupling;
   internal::Factored_system<SolverTraits> m_symmetric;

@@ -9,12 +9,24 @@
 #define CGAL_SURFACE_DESIGN_TRIVIAL_CONNECTION_H
 
 #include <CGAL/Surface_design/direction_fields.h>
-#include <CGAL/Surface_design/Field_aligned_parameterizer.h>
+#include <CGAL/Surface_design/exceptions.h>
+#include <CGAL/Surface_design/internal/Core/angles.h>
+#include <CGAL/Surface_design/internal/Core/discrete_connection.h>
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/named_parameters.h>
+#include <CGAL/Surface_design/internal/Core/Periodic_one_form_solver.h>
+#include <CGAL/Surface_design/internal/Core/validation.h>
+#include <CGAL/Surface_design/internal/Direction_fields/direction_field_operators.h>
+#include <CGAL/Surface_design/parameters.h>
+#include <CGAL/Surface_design/solver_traits.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -38,8 +50,9 @@ namespace Surface_design {
 ///
 /// **How it is solved.** With omega_e = n rho_e (wrapped into [-pi, pi)) and y = omega + x, the
 /// constraints read (d1 y)_f = 2 pi (k_f + m_f) with the integers m_f = ((d1 omega)_f - n K_f) / 2 pi,
-/// and integer windings of y along the loops: exactly the stripe problem of
-/// `Field_aligned_parameterizer` with target omega, face indices k + m and uniform edge weights.
+/// and integer windings of y along the loops: the periodic 1-form problem that the stripes of
+/// `Field_aligned_parameterizer` solve too (`internal::Periodic_one_form_solver`), here with
+/// target omega, face integers k + m and uniform edge weights.
 /// The pinned graph Laplacian is factored once; changing the singularities and solving again
 /// costs O(|E|) plus one back-substitution. The loop holonomies are chosen like the stripe
 /// windings: the integers of least adjustment norm (relaxed optimum, then best rounding).
@@ -50,50 +63,60 @@ namespace Surface_design {
 /// a vertex-based field turns by less than pi relative to the transport.
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
-/// \tparam VertexPointMap a readable property map from vertices to `Point_3`
-/// \tparam SolverTraits a model of `SparseLinearAlgebraWithFactorTraits_d` (own object per instance)
+/// \tparam VertexPointMap a readable property map from vertices to `Point_3` (default: the mesh's)
+/// \tparam SolverTraits a model of `SparseLinearAlgebraWithFactorTraits_d` (default
+///         `Default_solver_traits`; own object per instance)
+///
+/// With class template argument deduction, `Trivial_connection tc(mesh, np)` takes both types
+/// from the named parameters.
 template <class TriangleMesh,
           class VertexPointMap = typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type,
           class SolverTraits = Default_solver_traits>
 class Trivial_connection
 {
-  using Parameterizer = Field_aligned_parameterizer<TriangleMesh, VertexPointMap, SolverTraits>;
+  using Solver = internal::Periodic_one_form_solver<TriangleMesh, SolverTraits>;
+  using Indices = internal::Mesh_indices<TriangleMesh>;
   using GT = boost::graph_traits<TriangleMesh>;
 
 public:
   using vertex_descriptor = typename GT::vertex_descriptor;
   using face_descriptor = typename GT::face_descriptor;
 
-  /// Validates the mesh, computes the connection and factors the graph Laplacian.
-  /// \throws Invalid_mesh on bad input, Invalid_constraints if n < 1, Linear_solver_failure
-  Trivial_connection(const TriangleMesh& tm, VertexPointMap vpm, int symmetry_order = 1,
-                     SolverTraits solver = SolverTraits())
-    : m_n((internal::check_symmetry_order(symmetry_order), symmetry_order)),
-      m_solver(tm, vpm, std::move(solver), Edge_weighting::uniform),
-      m_connection(internal::levi_civita_connection(m_solver.indices(), vpm))
+  /// Validates the mesh, computes the connection and factors the graph Laplacian. The mesh must
+  /// not change while this object is used.
+  ///
+  /// \param tm a triangle mesh
+  /// \param np optional named parameters among:
+  /// - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
+  /// - `sparse_linear_solver`: a `SolverTraits` object; default `SolverTraits()`
+  /// - `symmetry_order` (int n >= 1): default 1 (vector field)
+  /// - `vertex_index_map`, `halfedge_index_map`, `edge_index_map`, `face_index_map`: the
+  ///   numbering of the elements (faces addressed by index, error messages); default the mesh's own
+  ///
+  /// \throws Invalid_mesh on bad input, Invalid_parameter if n < 1, Linear_solver_failure
+  ///
+  /// Complexity: O(|E|) plus one sparse factorization of size |V|.
+  template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+  explicit Trivial_connection(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
+    : m_n(checked_symmetry_order(np)), m_solver(make_solver(tm, np)),
+      m_connection(internal::levi_civita_connection(m_solver.indices(),
+                                                    internal::class_vertex_point_map<VertexPointMap>(tm, np)))
   {
     const auto& idx = m_solver.indices();
-    const double two_pi = 2. * std::acos(-1.);
-    std::vector<double> omega(idx.number_of_edges());
-    for(std::size_t e = 0; e < omega.size(); ++e)
-      omega[e] = internal::wrap_angle(m_n * m_connection.rho[e]);
+    m_omega.resize(idx.number_of_edges());
+    for(std::size_t e = 0; e < m_omega.size(); ++e)
+      m_omega[e] = internal::wrap_angle(m_n * m_connection.rho[e]);
     // m_f = ((d1 omega)_f - n K_f) / 2 pi: an integer, since the transport angles sum to K_f mod 2 pi
     m_offset.resize(idx.number_of_faces());
     for(std::size_t f = 0; f < m_offset.size(); ++f)
     {
       double curl = -m_n * m_connection.curvature[f];
       for(auto h : halfedges_around_face(halfedge(idx.face(f), tm), tm))
-        curl += idx.orientation_sign(h) * omega[idx.edge_index(h)];
-      m_offset[f] = int(std::lround(curl / two_pi));
+        curl += idx.orientation_sign(h) * m_omega[idx.edge_index(h)];
+      m_offset[f] = int(std::lround(curl / internal::two_pi));
     }
-    m_solver.set_target_one_form_by_edge_index(std::move(omega));
     m_index.assign(idx.number_of_faces(), 0);
   }
-
-  /// Same, with the mesh's internal vertex point map.
-  explicit Trivial_connection(const TriangleMesh& tm, int symmetry_order = 1)
-    : Trivial_connection(tm, get(CGAL::vertex_point, tm), symmetry_order)
-  {}
 
   int symmetry_order() const { return m_n; }
 
@@ -101,15 +124,23 @@ public:
   /// @{
   /// Index numerator k of face `f`: its index is k / n.
   int index(face_descriptor f) const { return m_index[checked_face(f)]; }
-  /// Prescribes the index k / n in face `f`.
+  /// Prescribes the index k / n in face `f`. \throws Invalid_constraints if `f` is not a face of the mesh
   void set_index(face_descriptor f, int k) { m_index[checked_face(f)] = k; }
-  /// Same, with the face given by its index (input order for meshes read from a file).
+  /// Same, with the face given by its index (the face index map's; for meshes read from a file,
+  /// the input order).
   void set_index(std::size_t face_index, int k)
   {
     if(face_index >= m_index.size())
       throw Invalid_constraints("face " + std::to_string(face_index) + " does not exist (the mesh has " +
                                 std::to_string(m_index.size()) + " faces)");
     m_index[face_index] = k;
+  }
+  /// Reads all indices (in units of 1/n) from a face -> integer map.
+  template <class FaceIndexMap>
+  void set_indices(const FaceIndexMap& k)
+  {
+    for(std::size_t f = 0; f < m_index.size(); ++f)
+      m_index[f] = int(get(k, m_solver.indices().face(f)));
   }
   void clear_indices() { std::fill(m_index.begin(), m_index.end(), 0); }
   /// Moves the singularity of face `from` to face `to` (adding its index to that of `to`).
@@ -124,7 +155,8 @@ public:
 
   /// Rotates the whole field by `angle` (radians, in the rescaled angles of the frames); the
   /// field is otherwise determined up to this rotation per connected component.
-  void set_rotation(double angle) { m_rotation = angle; }
+  /// \throws Invalid_parameter if `angle` is not finite
+  void set_rotation(double angle) { m_rotation = internal::require_finite("rotation", angle); }
 
   /// Computes the connection and the field. O(|E|) plus one back-substitution.
   /// \throws Invalid_constraints if the indices of a closed component do not sum to its Euler
@@ -154,9 +186,15 @@ public:
         throw Invalid_constraints(s.str());
       }
     }
-    for(std::size_t f = 0; f < m_index.size(); ++f)
-      m_solver.set_index(f, m_index[f] + m_offset[f]);
-    m_solver.solve();
+    std::vector<int> k(m_index.size());
+    for(std::size_t f = 0; f < k.size(); ++f)
+      k[f] = m_index[f] + m_offset[f];
+    typename Solver::Solution s = m_solver.solve(m_omega, k, std::vector<std::optional<int>>(m_solver.number_of_loops()));
+    std::vector<double> alpha = m_solver.integrate(s.y);
+    for(double& a : alpha)
+      a = internal::wrap_angle(a);
+    m_solution = std::move(s);
+    m_alpha = std::move(alpha);
     m_solved = true;
   }
 
@@ -166,7 +204,7 @@ public:
   double angle(vertex_descriptor v) const
   {
     require_solved();
-    return (m_solver.alpha(v) + m_rotation) / m_n;
+    return (m_alpha[m_solver.indices().index(v)] + m_rotation) / m_n;
   }
 
   /// Writes one of the field's n directions per vertex, as a unit tangent vector.
@@ -186,10 +224,9 @@ public:
   std::vector<double> adjustment() const
   {
     require_solved();
-    std::vector<double> x = m_solver.one_form();
-    const std::vector<double>& omega = m_solver.target_one_form();
+    std::vector<double> x = m_solution.y;
     for(std::size_t e = 0; e < x.size(); ++e)
-      x[e] -= omega[e];
+      x[e] -= m_omega[e];
     return x;
   }
   /// max_e |x_e|. Below pi, every face has exactly its prescribed index; above, the field's
@@ -205,22 +242,39 @@ public:
   double adjustment_norm2() const
   {
     require_solved();
-    return m_solver.energy();
+    return m_solution.energy;
   }
 
-  /// \name Access for tests and examples
+  /// \name Internal data, for tests (unstable: may change without notice)
   /// @{
   const internal::Mesh_indices<TriangleMesh>& indices() const { return m_solver.indices(); }
   const internal::Discrete_connection& connection() const { return m_connection; }
-  const Parameterizer& parameterizer() const { return m_solver; }
+  const internal::Topology& topology() const { return m_solver.topology(); }
   /// @}
 
 private:
+  template <class NamedParameters>
+  static int checked_symmetry_order(const NamedParameters& np)
+  {
+    const int n = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::symmetry_order), 1);
+    internal::check_symmetry_order(n);
+    return n;
+  }
+
+  template <class NamedParameters>
+  static Solver make_solver(const TriangleMesh& tm, const NamedParameters& np)
+  {
+    Indices idx(tm, np);
+    internal::validate_mesh(idx, internal::class_vertex_point_map<VertexPointMap>(tm, np));
+    const std::size_t ne = idx.number_of_edges();
+    return Solver(std::move(idx), std::vector<double>(ne, 1.), internal::class_solver_traits<SolverTraits>(np),
+                  "pinned graph Laplacian of the trivial connection");
+  }
+
   std::size_t checked_face(face_descriptor f) const
   {
-    const auto& idx = m_solver.indices();
-    const std::size_t i = idx.index(f);
-    if(i >= idx.number_of_faces() || idx.face(i) != f)
+    const std::size_t i = m_solver.indices().find(f);
+    if(i == internal::npos)
       throw Invalid_constraints("the face is not a face of this mesh");
     return i;
   }
@@ -235,32 +289,50 @@ private:
   }
 
   int m_n;
-  Parameterizer m_solver;
+  Solver m_solver;
   internal::Discrete_connection m_connection;
+  std::vector<double> m_omega; // n rho wrapped into [-pi, pi)
   std::vector<int> m_offset, m_index;
   double m_rotation = 0.;
   bool m_solved = false;
+  typename Solver::Solution m_solution;
+  std::vector<double> m_alpha; // n times the field angle, in [-pi, pi)
 };
+
+/// Deduces the point map and solver types from the named parameters.
+template <class TriangleMesh, class NamedParameters>
+Trivial_connection(const TriangleMesh&, const NamedParameters&)
+  -> Trivial_connection<TriangleMesh, internal::Const_vertex_point_map_t<TriangleMesh, NamedParameters>,
+                        internal::Solver_traits_t<NamedParameters>>;
+template <class TriangleMesh>
+Trivial_connection(const TriangleMesh&) -> Trivial_connection<TriangleMesh>;
 
 /// \ingroup PkgDirectionFieldsRef
 ///
 /// One-call trivial connection: writes to `field` a unit vertex-based n-direction field (one of
 /// its n directions per vertex) whose singularities are exactly the faces f with
 /// `get(face_indices, f) != 0`, of index `get(face_indices, f) / n`. See `Trivial_connection`.
-/// \param np `vertex_point_map`, `sparse_linear_solver`, `symmetry_order` (n, default 1)
+///
+/// \param tm a triangle mesh
+/// \param face_indices a readable face -> integer map: the indices in units of 1/n
+/// \param field a writable vertex -> `Vector_3` map (output), written only on success
+/// \param np optional named parameters: those of the `Trivial_connection` constructor
+///        (`vertex_point_map`, `sparse_linear_solver`, `symmetry_order`, index maps)
+///
 /// \returns the largest adjustment (see `Trivial_connection::largest_adjustment()`)
+/// \throws Invalid_mesh, Invalid_parameter, Invalid_constraints, Linear_solver_failure as
+///         `Trivial_connection` and its `solve()`
+///
+/// Complexity: one sparse factorization of size |V| and O(|E|) work.
 template <class TriangleMesh, class FaceIndexMap, class VertexVectorMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 double trivial_connection_field(const TriangleMesh& tm, const FaceIndexMap& face_indices, VertexVectorMap field,
                                 const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using Vpm = internal::Const_vertex_point_map_t<TriangleMesh, NamedParameters>;
-  Trivial_connection<TriangleMesh, Vpm, internal::Solver_traits_t<NamedParameters>> tc(
-    tm, internal::const_vertex_point_map(tm, np),
-    CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::symmetry_order), 1),
-    internal::solver_traits(np));
-  for(auto f : faces(tm))
-    tc.set_index(f, int(get(face_indices, f)));
+  Trivial_connection<TriangleMesh, internal::Const_vertex_point_map_t<TriangleMesh, NamedParameters>,
+                     internal::Solver_traits_t<NamedParameters>>
+    tc(tm, np);
+  tc.set_indices(face_indices);
   tc.solve();
   tc.field(field);
   return tc.largest_adjustment();

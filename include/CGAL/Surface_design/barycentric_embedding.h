@@ -8,7 +8,8 @@
 #define CGAL_SURFACE_DESIGN_BARYCENTRIC_EMBEDDING_H
 
 #include <CGAL/Surface_design/Barycentric_embedder.h>
-#include <CGAL/Surface_design/internal/barycentric_stencil.h>
+#include <CGAL/Surface_design/internal/Barycentric_embedding/barycentric_stencil.h>
+#include <CGAL/Surface_design/internal/Core/named_parameters.h>
 #include <CGAL/Surface_design/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -38,7 +39,7 @@ namespace Surface_design {
 /// \param np optional named parameters among:
 /// - `vertex_point_map`: read (fixed vertices) and written (free vertices); default
 ///   `get(CGAL::vertex_point, pm)`
-/// - `weighting` (`Barycentric_weighting`): default `uniform` (the paper's graph barycentre)
+/// - `weighting` (`Edge_weighting`): default `uniform` (the paper's graph barycentre)
 /// - `reference_point_map`: geometry of the cotangent or mean-value weights; default: the
 ///   vertex point map before the call
 /// - `sparse_linear_solver`: a model of `SparseLinearAlgebraWithFactorTraits_d` for symmetric
@@ -99,16 +100,16 @@ inline double surface_area(const std::vector<std::size_t>& face_start,
 /// positions, repeats C <- F C, i.e. moves every free vertex to the weighted barycentre of its
 /// neighbours' *previous* positions (a Jacobi iteration), until the surface area changes by less
 /// than `area_tolerance` in one step (the paper's criterion, sec. 4.2) or
-/// `maximum_number_of_iterations` steps were made. Then writes the free vertices' positions. Its
+/// `number_of_iterations` steps were made. Then writes the free vertices' positions. Its
 /// limit is the solution of `barycentric_embedding()`, which gets it in one solve; the number of
 /// steps grows like the square of the mesh's diameter in edges. It converges for uniform and
 /// mean-value weights (positive weights, every free component with a fixed vertex); with
 /// negative cotangent weights it may not.
 ///
 /// Same parameters as `barycentric_embedding()` (but no `sparse_linear_solver`), plus:
-/// - `area_tolerance` (double): absolute change of the area that stops the iteration; default
-///   1e-6 (the paper's)
-/// - `maximum_number_of_iterations` (std::size_t): default 1000000
+/// - `area_tolerance` (double > 0): absolute change of the area that stops the iteration;
+///   default 1e-6 (the paper's)
+/// - `number_of_iterations` (std::size_t): the largest number of steps; default 1000000
 ///
 /// \returns the number of steps, the final area and whether the tolerance was met. The positions
 ///          of the last step are written in either case.
@@ -130,13 +131,15 @@ barycentric_embedding_iterative(PolygonMesh& pm, const FixedVertices& fixed_vert
   const Vpm vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                    get_property_map(CGAL::vertex_point, pm));
   const auto reference = choose_parameter(get_parameter(np, internal_np::reference_point_map), vpm);
-  const Barycentric_weighting weighting =
-    choose_parameter(get_parameter(np, internal_np::weighting), Barycentric_weighting::uniform);
-  const double tolerance = choose_parameter(get_parameter(np, internal_np::area_tolerance), 1e-6);
-  const std::size_t max_iterations = choose_parameter(
-    get_parameter(np, internal_np::maximum_number_of_iterations), std::size_t(1000000));
+  const Edge_weighting weighting =
+    choose_parameter(get_parameter(np, internal_np::weighting), Edge_weighting::uniform);
+  const double tolerance =
+    internal::require_positive("area_tolerance", choose_parameter(get_parameter(np, internal_np::area_tolerance), 1e-6));
+  const std::size_t max_iterations =
+    choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(1000000));
+  internal::check_edge_weighting(weighting);
 
-  internal::Mesh_indices<PolygonMesh> idx(pm);
+  internal::Mesh_indices<PolygonMesh> idx(pm, np);
   std::vector<bool> is_fixed = internal::fixed_flags(idx, fixed_vertices);
   internal::validate_barycentric_input(idx, vpm, reference, weighting, is_fixed);
   const internal::Barycentric_stencil s =

@@ -8,16 +8,17 @@
 #define CGAL_SURFACE_DESIGN_DIRECTION_FIELDS_H
 
 #include <CGAL/Surface_design/exceptions.h>
-#include <CGAL/Surface_design/internal/dec.h>
-#include <CGAL/Surface_design/internal/discrete_connection.h>
-#include <CGAL/Surface_design/internal/Factored_system.h>
-#include <CGAL/Surface_design/internal/geometry.h>
-#include <CGAL/Surface_design/internal/Hermitian_system.h>
-#include <CGAL/Surface_design/internal/Mesh_indices.h>
-#include <CGAL/Surface_design/internal/named_parameters.h>
-#include <CGAL/Surface_design/internal/shift_invert_lanczos.h>
-#include <CGAL/Surface_design/internal/topology.h>
-#include <CGAL/Surface_design/internal/validation.h>
+#include <CGAL/Surface_design/internal/Core/angles.h>
+#include <CGAL/Surface_design/internal/Core/dec.h>
+#include <CGAL/Surface_design/internal/Core/discrete_connection.h>
+#include <CGAL/Surface_design/internal/Core/geometry.h>
+#include <CGAL/Surface_design/internal/Core/Hermitian_system.h>
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/named_parameters.h>
+#include <CGAL/Surface_design/internal/Core/shift_invert_lanczos.h>
+#include <CGAL/Surface_design/internal/Core/topology.h>
+#include <CGAL/Surface_design/internal/Core/validation.h>
+#include <CGAL/Surface_design/internal/Direction_fields/direction_field_operators.h>
 #include <CGAL/Surface_design/parameters.h>
 #include <CGAL/Surface_design/solver_traits.h>
 
@@ -64,114 +65,6 @@ struct Smoothest_direction_field_info
   bool converged = true;
 };
 
-namespace internal {
-
-/// The connection Laplacian of n-direction fields, the Hermitian |V| x |V| matrix A of
-///   E(u) = u^H A u = sum_edges w_ij |u_j - r_ij^n u_i|^2,  r_ij = exp(i rho_ij),
-/// with w the given edge weights (cotangent weights: the Dirichlet energy of the field):
-/// A_ii = sum_j w_ij, A_ji = -w_ij r_ij^n, A_ij = conj(A_ji).
-template <class Indices>
-Complex_sparse_matrix complex_connection_laplacian(const Indices& idx, const Discrete_connection& c,
-                                                   const std::vector<double>& weight, int n)
-{
-  std::vector<Eigen::Triplet<std::complex<double>>> t;
-  t.reserve(2 * idx.number_of_edges() + idx.number_of_vertices());
-  std::vector<double> diagonal(idx.number_of_vertices(), 0.);
-  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
-  {
-    const auto ij = idx.edge_vertices(e);
-    const Eigen::Index i = Eigen::Index(ij.first), j = Eigen::Index(ij.second);
-    const double w = weight[e];
-    diagonal[ij.first] += w;
-    diagonal[ij.second] += w;
-    const std::complex<double> a_ji = -w * std::polar(1., n * c.rho[e]);
-    t.emplace_back(j, i, a_ji);
-    t.emplace_back(i, j, std::conj(a_ji));
-  }
-  for(std::size_t v = 0; v < diagonal.size(); ++v)
-    t.emplace_back(Eigen::Index(v), Eigen::Index(v), diagonal[v]);
-  const Eigen::Index size = Eigen::Index(idx.number_of_vertices());
-  Complex_sparse_matrix a(size, size);
-  a.setFromTriplets(t.begin(), t.end());
-  return a;
-}
-
-/// The same as a real symmetric matrix of size 2|V| (unknowns Re u_v, Im u_v interleaved).
-template <class Indices>
-Sparse_matrix connection_laplacian(const Indices& idx, const Discrete_connection& c,
-                                   const std::vector<double>& weight, int n)
-{
-  return realify(complex_connection_laplacian(idx, c, weight, n));
-}
-
-/// The traceless part of the shape operator at every vertex as a complex number in the vertex
-/// frame, of doubled angle: -sum over the edges ij at i of (beta_ij l_ij / 2) exp(2 i phi_ij), with
-/// beta the signed dihedral angle (positive where the surface is convex for the face orientation).
-/// Its argument / 2 is the direction of the larger principal curvature (Cohen-Steiner & Morvan's
-/// edge-based curvature tensor: an edge bends the surface across itself).
-template <class Indices, class VertexPointMap>
-std::vector<std::complex<double>> principal_curvature_directions(const Indices& idx, const VertexPointMap& vpm,
-                                                                 const Discrete_connection& c)
-{
-  const auto& tm = idx.mesh();
-  const std::vector<Eigen::Vector3d> fn = face_normals(idx, vpm);
-  std::vector<std::complex<double>> q(idx.number_of_vertices(), 0.);
-  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
-  {
-    const auto h = idx.oriented_halfedge(e), o = opposite(h, tm);
-    if(idx.is_border(h) || idx.is_border(o))
-      continue;
-    const Eigen::Vector3d d = position(vpm, target(h, tm)) - position(vpm, source(h, tm));
-    const Eigen::Vector3d& n1 = fn[idx.index(face(h, tm))];
-    const Eigen::Vector3d& n2 = fn[idx.index(face(o, tm))];
-    const double beta = std::atan2(n1.cross(n2).dot(d.normalized()), n1.dot(n2));
-    const double weight = -0.5 * beta * d.norm();
-    q[idx.source_index(h)] += weight * std::polar(1., 2. * c.frames.angle[idx.index(h)]);
-    q[idx.source_index(o)] += weight * std::polar(1., 2. * c.frames.angle[idx.index(o)]);
-  }
-  return q;
-}
-
-template <class Indices, class VertexVectorMap>
-std::vector<double> field_angles(const Indices& idx, const Vertex_frames& frames, const VertexVectorMap& field)
-{
-  std::vector<double> angle(idx.number_of_vertices());
-  for(std::size_t v = 0; v < angle.size(); ++v)
-  {
-    const auto& x = get(field, idx.vertex(v));
-    const Eigen::Vector3d xv(CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z()));
-    const Eigen::Vector3d t = xv - xv.dot(frames.normal[v]) * frames.normal[v];
-    if(!(t.norm() > 1e-12 * xv.norm()) || !t.allFinite())
-      throw Invalid_constraints("the field vector at vertex " + std::to_string(v) +
-                                (t.allFinite() ? " has no tangential component" : " is not finite") +
-                                ": the direction, and the index of the faces around it, are undefined");
-    angle[v] = frames.to_angle(v, t);
-  }
-  return angle;
-}
-
-/// Writes, per vertex, the direction of angle `angle[v]` (rescaled, in the vertex frame) scaled
-/// by `magnitude[v]` (unit when `magnitude` is empty).
-template <class Indices, class VertexVectorMap>
-void write_field(const Indices& idx, const Vertex_frames& frames, const std::vector<double>& angle,
-                 const std::vector<double>& magnitude, VertexVectorMap out)
-{
-  using Vector = typename boost::property_traits<VertexVectorMap>::value_type;
-  for(std::size_t v = 0; v < angle.size(); ++v)
-  {
-    const Eigen::Vector3d x = (magnitude.empty() ? 1. : magnitude[v]) * frames.to_vector(v, angle[v]);
-    put(out, idx.vertex(v), Vector(x.x(), x.y(), x.z()));
-  }
-}
-
-inline void check_symmetry_order(int n)
-{
-  if(n < 1)
-    throw Invalid_constraints("the symmetry order n of a direction field must be at least 1 (1: vector "
-                              "field, 2: line field, 4: cross field), got " + std::to_string(n));
-}
-
-} // namespace internal
 
 /// \ingroup PkgDirectionFieldsRef
 ///
@@ -211,17 +104,31 @@ inline void check_symmetry_order(int n)
 ///        (tangent to the angle-weighted vertex normal), or vectors of length |u_v| with
 ///        `normalize_field(false)` (u scaled to sum_v m_v |u_v|^2 = total area; |u| falls to 0
 ///        near singularities); written only if the computation succeeds.
-/// \param np optional named parameters: `vertex_point_map`, `sparse_linear_solver` (a model of
-///        `SparseLinearAlgebraWithFactorTraits_d`, default `Default_solver_traits`),
-///        `symmetry_order` (n, default 1), `field_boundary_condition` (default free),
-///        `curvature_alignment_weight` (default 0), `normalize_field` (default true),
-///        `eigen_tolerance` (default 1e-6), `number_of_iterations` (limit on the Lanczos
-///        back-substitutions, default 200).
+/// \param np optional named parameters among:
+/// - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
+/// - `sparse_linear_solver`: a model of `SparseLinearAlgebraWithFactorTraits_d`; default
+///   `Default_solver_traits`
+/// - `symmetry_order` (int n >= 1): 1 vector field (default), 2 line field, 4 cross field, ...
+/// - `field_boundary_condition` (`Direction_field_boundary`): default `free`
+/// - `curvature_alignment_weight` (double t >= 0): default 0 (no alignment)
+/// - `normalize_field` (bool): default true
+/// - `eigen_tolerance` (double in (0, 1)): relative Lanczos residual at which the eigensolver
+///   stops; default 1e-6
+/// - `number_of_iterations` (std::size_t >= 1): limit on the Lanczos back-substitutions;
+///   default 200
+/// - `vertex_index_map`, `halfedge_index_map`, `edge_index_map`, `face_index_map`: the numbering
+///   of the elements named in error messages; default the mesh's own
+///
+/// \returns the eigenvalue per component, the number of Lanczos steps and whether they converged
 /// \throws Invalid_mesh on bad input (the mesh is never modified)
-/// \throws Invalid_constraints if n < 1, or curvature alignment is asked for with an odd n or on
-///         a surface whose curvature tensor vanishes everywhere (a plane has no principal directions)
+/// \throws Invalid_parameter if n < 1, t < 0 or not finite, the tolerance is not in (0, 1), the
+///         iteration limit is 0, or curvature alignment is asked for with an odd n or on a
+///         surface whose curvature tensor vanishes everywhere (a plane has no principal directions)
 /// \throws Linear_solver_failure if the connection Laplacian is not positive definite (possible
 ///         with many negative cotangent weights) or the solver fails
+///
+/// Complexity: one sparse Hermitian factorization of size |V| and, for the eigenproblem, one
+/// back-substitution per Lanczos step (typically 10 to 20).
 template <class TriangleMesh, class VertexVectorMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 Smoothest_direction_field_info smoothest_direction_field(const TriangleMesh& tm, VertexVectorMap field,
@@ -241,13 +148,18 @@ Smoothest_direction_field_info smoothest_direction_field(const TriangleMesh& tm,
     choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(200));
 
   internal::check_symmetry_order(n);
-  if(!(alignment >= 0.) || !std::isfinite(alignment))
-    throw Invalid_constraints("the curvature alignment weight must be finite and >= 0");
+  internal::require_nonnegative("curvature_alignment_weight", alignment);
+  internal::require_in_range("eigen_tolerance", tolerance, 0., 1., true, true);
+  internal::require_at_least("number_of_iterations", max_iterations, std::size_t(1));
+  if(boundary != Direction_field_boundary::free && boundary != Direction_field_boundary::tangent &&
+     boundary != Direction_field_boundary::normal)
+    throw Invalid_parameter("field_boundary_condition", "not a Direction_field_boundary enumerator");
   if(alignment > 0. && n % 2 != 0)
-    throw Invalid_constraints("curvature alignment needs an even symmetry order (n = 2: line field, "
-                              "n = 4: cross field): principal directions have no orientation");
+    throw Invalid_parameter("curvature_alignment_weight",
+                            "curvature alignment needs an even symmetry order (n = 2: line field, "
+                            "n = 4: cross field): principal directions have no orientation");
 
-  const internal::Mesh_indices<TriangleMesh> idx(tm);
+  const internal::Mesh_indices<TriangleMesh> idx(tm, np);
   internal::validate_mesh(idx, vpm);
   const std::size_t nv = idx.number_of_vertices();
   const internal::Discrete_connection conn = internal::levi_civita_connection(idx, vpm);
@@ -263,8 +175,7 @@ Smoothest_direction_field_info smoothest_direction_field(const TriangleMesh& tm,
   Eigen::VectorXd fixed_value = Eigen::VectorXd::Zero(Eigen::Index(2 * nv));
   if(boundary != Direction_field_boundary::free)
   {
-    const double pi = std::acos(-1.);
-    const double direction = boundary == Direction_field_boundary::tangent ? 0. : pi / 2.;
+    const double direction = boundary == Direction_field_boundary::tangent ? 0. : internal::pi / 2.;
     for(const auto& loop : loops.loops)
       for(std::size_t h : loop)
       {
@@ -307,7 +218,7 @@ Smoothest_direction_field_info smoothest_direction_field(const TriangleMesh& tm,
       rms += mass[v] * std::norm(q[v]);
     rms = std::sqrt(rms / total_mass);
     if(!(rms > 0.))
-      throw Invalid_constraints("curvature alignment is undefined on this mesh: its curvature tensor "
+      throw Invalid_parameter("curvature_alignment_weight", "curvature alignment is undefined on this mesh: its curvature tensor "
                                 "vanishes everywhere (a planar surface has no principal directions)");
     for(std::size_t v = 0; v < nv; ++v)
       as_complex(rhs_fixed)[Eigen::Index(v)] = shift[v] * q[v] / rms;
@@ -400,19 +311,32 @@ Smoothest_direction_field_info smoothest_direction_field(const TriangleMesh& tm,
 /// \ingroup PkgDirectionFieldsRef
 ///
 /// Computes the singularity index of a vertex-based n-direction field in every face and writes
-/// it (a multiple of 1/n) to `face_index`. Returns the number of singular faces.
+/// it to `face_index` as an integer k, the index in units of 1/n (the library's convention:
+/// k = 1 is a +1/4 singularity of a cross field, a +1 singularity of a vector field).
 ///
 /// The field is given by one of its n directions per vertex (vectors are projected to the vertex
 /// tangent planes; their length is ignored). Around a face, each edge contributes the smallest
 /// turn of the n-fold direction relative to the Levi-Civita transport along the edge, and the
-/// transport contributes the face curvature; the total, divided by 2 pi, is the index. Boundary
+/// transport contributes the face curvature; the total, divided by 2 pi, is k. Boundary
 /// faces get indices like any other face (their boundary edges included), so that on every
-/// closed surface the indices sum to the Euler characteristic (Poincaré-Hopf), and on a surface
-/// with boundary to chi plus the turning of the field along the boundary relative to it.
+/// closed surface the indices sum to n times the Euler characteristic (Poincaré-Hopf), and on a
+/// surface with boundary to n chi plus the turning of the field along the boundary relative to it.
 ///
-/// \param np `vertex_point_map`, `symmetry_order` (n, default 1)
-/// \throws Invalid_mesh on bad input; Invalid_constraints if a field vector is zero, normal to
-///         the surface or not finite
+/// \param tm a triangle mesh
+/// \param field a readable vertex -> `Vector_3` map
+/// \param face_index a writable face -> integer map (output), written only on success
+/// \param np optional named parameters among:
+/// - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
+/// - `symmetry_order` (int n >= 1): default 1
+/// - `vertex_index_map`, `halfedge_index_map`, `edge_index_map`, `face_index_map`: the numbering
+///   of the elements named in error messages; default the mesh's own
+///
+/// \returns the number of faces with a non-zero index
+/// \throws Invalid_mesh on bad input; Invalid_parameter if n < 1, or if a field vector is zero,
+///         normal to the surface or not finite (its direction, and the index of the faces around
+///         it, are undefined)
+///
+/// Complexity: O(|E|).
 template <class TriangleMesh, class VertexVectorMap, class FaceIndexMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 std::size_t direction_field_singularities(const TriangleMesh& tm, const VertexVectorMap& field,
@@ -424,7 +348,7 @@ std::size_t direction_field_singularities(const TriangleMesh& tm, const VertexVe
   const auto vpm = internal::const_vertex_point_map(tm, np);
   const int n = choose_parameter(get_parameter(np, internal_np::symmetry_order), 1);
   internal::check_symmetry_order(n);
-  const internal::Mesh_indices<TriangleMesh> idx(tm);
+  const internal::Mesh_indices<TriangleMesh> idx(tm, np);
   internal::validate_mesh(idx, vpm);
   const internal::Discrete_connection conn = internal::levi_civita_connection(idx, vpm);
   const std::vector<double> angle = internal::field_angles(idx, conn.frames, field);
@@ -432,7 +356,7 @@ std::size_t direction_field_singularities(const TriangleMesh& tm, const VertexVe
   std::size_t count = 0;
   for(std::size_t f = 0; f < k.size(); ++f)
   {
-    put(face_index, idx.face(f), double(k[f]) / n);
+    put(face_index, idx.face(f), k[f]);
     count += (k[f] != 0);
   }
   return count;

@@ -84,6 +84,24 @@ public:
 };
 
 /// \ingroup PkgSurfaceDesignRef
+/// Thrown when a parameter of an algorithm (a named parameter, a constructor or function
+/// argument) has a value outside its documented range: NaN or infinite numbers, negative
+/// scales, a symmetry order below 1, an enumerator an algorithm does not support... `name()` is
+/// the parameter's name; the message gives the value and the valid range. Nothing is modified.
+class Invalid_parameter : public std::invalid_argument
+{
+public:
+  Invalid_parameter(const std::string& name, const std::string& what)
+    : std::invalid_argument("CGAL::Surface_design: invalid parameter `" + name + "`: " + what), m_name(name)
+  {}
+
+  const std::string& name() const { return m_name; }
+
+private:
+  std::string m_name;
+};
+
+/// \ingroup PkgSurfaceDesignRef
 /// Thrown when a sparse factorization or solve fails (e.g. a matrix that should be positive
 /// definite is not). The message names the system and the solver's diagnosis.
 class Linear_solver_failure : public std::runtime_error

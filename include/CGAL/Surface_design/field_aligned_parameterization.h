@@ -7,7 +7,9 @@
 #define CGAL_SURFACE_DESIGN_FIELD_ALIGNED_PARAMETERIZATION_H
 
 #include <CGAL/Surface_design/Field_aligned_parameterizer.h>
-#include <CGAL/Surface_design/internal/named_parameters.h>
+#include <CGAL/Surface_design/internal/Core/angles.h>
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/named_parameters.h>
 #include <CGAL/Surface_design/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -38,7 +40,8 @@ namespace Surface_design {
 /// - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
 /// - `sparse_linear_solver`: a model of `SparseLinearAlgebraWithFactorTraits_d`; default
 ///   `Default_solver_traits` (Eigen `SimplicialLDLT`)
-/// - `stripes_per_unit_length` (double): when positive the field is normalized and alpha
+/// - `weighting` (`Edge_weighting`): `cotangent` (default) or `uniform`
+/// - `stripes_per_unit_length` (double >= 0): when positive the field is normalized and alpha
 ///   advances by 2 pi times this per unit length along it; default 0 = use the field as given
 ///   (|X| radians per unit length)
 /// - `one_form_convention` (`One_form_convention`): default `projected`
@@ -48,9 +51,14 @@ namespace Surface_design {
 /// - `edge_omega_map` (writable edge -> double): the target 1-form along `halfedge(e, tm)`
 /// - `corner_coordinate_map` (writable halfedge -> double): see
 ///   `Field_aligned_parameterizer::corner_coordinates()`
+/// - `vertex_index_map`, `halfedge_index_map`, `edge_index_map`, `face_index_map`: the numbering
+///   used by loop numbers and error messages; default the mesh's own
 ///
 /// \returns the energy sum_e w_e (dalpha_e - omega_e)^2 of the result
-/// \throws Invalid_mesh, Invalid_constraints, Linear_solver_failure
+/// \throws Invalid_mesh, Invalid_parameter, Invalid_constraints, Linear_solver_failure (see
+///         `Field_aligned_parameterizer`); nothing is written then
+///
+/// Complexity: one sparse factorization of size |V| and O(|E|) work.
 template <class TriangleMesh, class VertexVectorMap, class FaceIndexMap, class VertexScalarMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 double field_aligned_parameterization(const TriangleMesh& tm, const VertexVectorMap& field,
@@ -59,15 +67,13 @@ double field_aligned_parameterization(const TriangleMesh& tm, const VertexVector
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  using Vpm = internal::Const_vertex_point_map_t<TriangleMesh, NamedParameters>;
-  using Solver = internal::Solver_traits_t<NamedParameters>;
-  const Vpm vpm = internal::const_vertex_point_map(tm, np);
-  const Solver solver = internal::solver_traits(np);
   const double stripes = choose_parameter(get_parameter(np, internal_np::stripes_per_unit_length), 0.);
   const One_form_convention convention =
     choose_parameter(get_parameter(np, internal_np::one_form_convention), One_form_convention::projected);
 
-  Field_aligned_parameterizer<TriangleMesh, Vpm, Solver> fap(tm, vpm, solver);
+  Field_aligned_parameterizer<TriangleMesh, internal::Const_vertex_point_map_t<TriangleMesh, NamedParameters>,
+                              internal::Solver_traits_t<NamedParameters>>
+    fap(tm, np);
   fap.set_field(field, stripes, convention);
   fap.set_indices(face_indices);
   internal::if_given(
@@ -103,14 +109,13 @@ template <class PolygonMesh, class VertexScalarMap, class FaceIndexMap>
 std::size_t stripe_singularities(const PolygonMesh& tm, const VertexScalarMap& alpha,
                                  FaceIndexMap face_indices)
 {
-  const double two_pi = 2. * std::acos(-1.);
   std::size_t count = 0;
   for(auto f : faces(tm))
   {
     double sum = 0.;
     for(auto h : halfedges_around_face(halfedge(f, tm), tm))
       sum += internal::wrap_angle(double(get(alpha, target(h, tm))) - double(get(alpha, source(h, tm))));
-    const int k = int(std::lround(sum / two_pi));
+    const int k = int(std::lround(sum / internal::two_pi));
     put(face_indices, f, k);
     count += (k != 0);
   }
@@ -128,7 +133,6 @@ template <class PolygonMesh, class EdgeScalarMap, class FaceIndexMap>
 std::size_t one_form_singularities(const PolygonMesh& tm, const EdgeScalarMap& one_form,
                                    FaceIndexMap face_indices)
 {
-  const double two_pi = 2. * std::acos(-1.);
   // Accumulate edge by edge: the orientation of an edge must come from edges(tm), because on a
   // Surface_mesh and a Polyhedron_3 alike halfedge(edge(h, tm), tm) is h itself, whichever side
   // of the edge h is on.
@@ -146,7 +150,7 @@ std::size_t one_form_singularities(const PolygonMesh& tm, const EdgeScalarMap& o
   std::size_t count = 0;
   for(std::size_t f = 0; f < curl.size(); ++f)
   {
-    const int k = int(std::lround(curl[f] / two_pi));
+    const int k = int(std::lround(curl[f] / internal::two_pi));
     put(face_indices, idx.face(f), k);
     count += (k != 0);
   }

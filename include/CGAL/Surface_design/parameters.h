@@ -21,7 +21,6 @@ enum edge_omega_map_t { edge_omega_map };
 enum corner_coordinate_map_t { corner_coordinate_map };
 enum weighting_t { weighting };
 enum reference_point_map_t { reference_point_map };
-enum maximum_number_of_iterations_t { maximum_number_of_iterations };
 enum area_tolerance_t { area_tolerance };
 enum symmetry_order_t { symmetry_order };
 enum curvature_alignment_weight_t { curvature_alignment_weight };
@@ -62,7 +61,6 @@ CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(edge_omega_map)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(corner_coordinate_map)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(weighting)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(reference_point_map)
-CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(maximum_number_of_iterations)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(area_tolerance)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(symmetry_order)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(curvature_alignment_weight)

@@ -4,10 +4,10 @@
 // Topology of a FaceGraph: connected components, boundary loops, tree-cotree decomposition with
 // homology generators, and integration of a 1-form along a spanning tree.
 
-#ifndef CGAL_SURFACE_DESIGN_INTERNAL_TOPOLOGY_H
-#define CGAL_SURFACE_DESIGN_INTERNAL_TOPOLOGY_H
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_TOPOLOGY_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_CORE_TOPOLOGY_H
 
-#include <CGAL/Surface_design/internal/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -18,8 +18,6 @@
 namespace CGAL {
 namespace Surface_design {
 namespace internal {
-
-constexpr std::size_t npos = (std::numeric_limits<std::size_t>::max)();
 
 /// Counts of one connected component.
 struct Component_info
@@ -343,4 +341,4 @@ Topology compute_topology(const Indices& idx)
 } // namespace Surface_design
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_DESIGN_INTERNAL_TOPOLOGY_H
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_CORE_TOPOLOGY_H

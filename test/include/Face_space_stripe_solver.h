@@ -4,13 +4,13 @@
 // The paper's own face-space formulation of the field-aligned parameterization (Noma & Kawahara,
 // sec. 5.2), done correctly. A reference for tests and benchmarks, not the library's solver.
 
-#ifndef CGAL_SURFACE_DESIGN_INTERNAL_FACE_SPACE_STRIPE_SOLVER_H
-#define CGAL_SURFACE_DESIGN_INTERNAL_FACE_SPACE_STRIPE_SOLVER_H
+#ifndef CGAL_SURFACE_DESIGN_TEST_FACE_SPACE_STRIPE_SOLVER_H
+#define CGAL_SURFACE_DESIGN_TEST_FACE_SPACE_STRIPE_SOLVER_H
 
 #include <CGAL/Surface_design/exceptions.h>
-#include <CGAL/Surface_design/internal/dec.h>
-#include <CGAL/Surface_design/internal/Factored_system.h>
-#include <CGAL/Surface_design/internal/topology.h>
+#include <CGAL/Surface_design/internal/Core/dec.h>
+#include <CGAL/Surface_design/internal/Core/Factored_system.h>
+#include <CGAL/Surface_design/internal/Core/topology.h>
 
 #include <cmath>
 #include <string>
@@ -83,7 +83,6 @@ public:
   std::vector<double> solve(const std::vector<double>& omega, const std::vector<int>& k,
                             const std::vector<int>& windings)
   {
-    const double two_pi = 2. * std::acos(-1.);
     const Eigen::Map<const Eigen::VectorXd> om(omega.data(), Eigen::Index(omega.size()));
     Eigen::VectorXd c(m_A.rows());
     for(std::size_t r = 0; r < m_face_of_row.size(); ++r)
@@ -112,4 +111,4 @@ private:
 } // namespace Surface_design
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_DESIGN_INTERNAL_FACE_SPACE_STRIPE_SOLVER_H
+#endif // CGAL_SURFACE_DESIGN_TEST_FACE_SPACE_STRIPE_SOLVER_H

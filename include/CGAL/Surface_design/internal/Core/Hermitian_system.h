@@ -5,12 +5,12 @@
 // user's `SolverTraits`: in complex arithmetic for the library's own traits, as the equivalent
 // real symmetric system of twice the size for any other model of the concept.
 
-#ifndef CGAL_SURFACE_DESIGN_INTERNAL_HERMITIAN_SYSTEM_H
-#define CGAL_SURFACE_DESIGN_INTERNAL_HERMITIAN_SYSTEM_H
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_HERMITIAN_SYSTEM_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_CORE_HERMITIAN_SYSTEM_H
 
 #include <CGAL/Surface_design/exceptions.h>
-#include <CGAL/Surface_design/internal/dec.h>
-#include <CGAL/Surface_design/internal/Factored_system.h>
+#include <CGAL/Surface_design/internal/Core/dec.h>
+#include <CGAL/Surface_design/internal/Core/Factored_system.h>
 #include <CGAL/Surface_design/solver_traits.h>
 
 #include <Eigen/Core>
@@ -149,4 +149,4 @@ private:
 } // namespace Surface_design
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_DESIGN_INTERNAL_HERMITIAN_SYSTEM_H
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_CORE_HERMITIAN_SYSTEM_H

@@ -3,10 +3,11 @@
 //
 // Per-element geometric quantities of a triangle mesh, indexed by Mesh_indices.
 
-#ifndef CGAL_SURFACE_DESIGN_INTERNAL_GEOMETRY_H
-#define CGAL_SURFACE_DESIGN_INTERNAL_GEOMETRY_H
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_GEOMETRY_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_CORE_GEOMETRY_H
 
-#include <CGAL/Surface_design/internal/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/angles.h>
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Weights/utils.h>
@@ -92,14 +93,6 @@ std::vector<double> edge_lengths(const Indices& idx, const VertexPointMap& vpm)
     length[e] = (position(vpm, target(h, idx.mesh())) - position(vpm, source(h, idx.mesh()))).norm();
   }
   return length;
-}
-
-/// x wrapped into [-pi, pi).
-inline double wrap_angle(double x)
-{
-  constexpr double pi = 3.14159265358979323846, two_pi = 2. * pi;
-  const double w = x - two_pi * std::floor((x + pi) / two_pi);
-  return w >= pi ? w - two_pi : w; // guard against rounding at the upper end
 }
 
 /// Interior angle of every corner (per halfedge: the angle of face(h) at target(h); 0 on border
@@ -224,4 +217,4 @@ std::vector<Eigen::Vector3d> vertex_normals(const Indices& idx, const VertexPoin
 } // namespace Surface_design
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_DESIGN_INTERNAL_GEOMETRY_H
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_CORE_GEOMETRY_H

@@ -3,66 +3,66 @@
 //
 // The target 1-form omega of a per-vertex tangent vector field (Noma & Kawahara, eq. 12).
 
-#ifndef CGAL_SURFACE_DESIGN_INTERNAL_TARGET_ONE_FORM_H
-#define CGAL_SURFACE_DESIGN_INTERNAL_TARGET_ONE_FORM_H
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_FIELD_ALIGNED_PARAMETERIZATION_TARGET_ONE_FORM_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_FIELD_ALIGNED_PARAMETERIZATION_TARGET_ONE_FORM_H
 
-#include <CGAL/Surface_design/internal/geometry.h>
-#include <CGAL/Surface_design/internal/Mesh_indices.h>
-#include <CGAL/Surface_design/internal/vertex_frames.h>
+#include <CGAL/Surface_design/exceptions.h>
+#include <CGAL/Surface_design/internal/Core/geometry.h>
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/topology.h>
+#include <CGAL/Surface_design/internal/Core/vertex_frames.h>
 
 #include <Eigen/Core>
 
 #include <cmath>
 #include <cstddef>
+#include <sstream>
+#include <string>
 #include <vector>
 
 namespace CGAL {
 namespace Surface_design {
 
-/// \ingroup PkgFieldAlignedParameterizationRef
-/// How the target 1-form omega is computed from a per-vertex field X. Both integrate X along each
-/// edge e = (i, j), X_i ruling the half of the edge next to i (paper, eq. 12):
-/// omega_ij = 1/2 (integral contribution of X_i + that of X_j).
-enum class One_form_convention
-{
-  /// X_i is projected to the tangent plane of vertex i (angle-weighted vertex normal) and
-  /// omega_ij = 1/2 <X_i + X_j, p_j - p_i>. Extrinsic, simple, exact on planar meshes.
-  projected,
-  /// The paper's convention (sec. 4.1, after Knöppel et al. 2015): angles around vertex i are
-  /// rescaled by s_i = 2 pi / (angle sum at i) (s_i = 1 on the boundary) so that the vertex star
-  /// is flat; with theta_i the rescaled angle of X_i and phi_ij that of the edge leaving i towards
-  /// j, omega_ij = l_ij / 2 (|X_i| cos(theta_i - phi_ij) - |X_j| cos(theta_j - phi_ji)): X_j is
-  /// integrated along i -> j, i.e. against the direction phi_ji of the edge leaving j. (The paper's
-  /// eq. 12 prints "+"; with phi_ji read as the direction j -> i that sign would make the integral
-  /// of a constant planar field vanish, so the consistent sign is used.)
-  /// A 3D vector is converted to a rescaled angle by locating it, after projection to the
-  /// tangent plane, in the wedge of one corner and interpolating linearly inside that corner.
-  angle_rescaled
-};
-
 namespace internal {
 
 /// Per-vertex field as tangent vectors: projected to the vertex tangent planes and, when
-/// `radians_per_unit_length > 0`, normalized to that length (zero vectors stay zero).
+/// `radians_per_unit_length > 0`, normalized to that length (vectors that project to zero stay
+/// zero: a field may vanish at isolated vertices, e.g. a constant direction at the poles).
+/// \throws Invalid_parameter (`field`) if a vector is not finite, or if the field is to be
+///         normalized and vanishes at every vertex of a connected component (it gives no
+///         direction there)
 template <class Indices, class VertexPointMap, class VertexVectorMap>
 std::vector<Eigen::Vector3d> tangent_field(const Indices& idx, const VertexPointMap& vpm,
-                                           const VertexVectorMap& field,
-                                           double radians_per_unit_length)
+                                           const VertexVectorMap& field, double radians_per_unit_length,
+                                           const Components& components)
 {
   const std::vector<Eigen::Vector3d> normal = vertex_normals(idx, vpm);
   std::vector<Eigen::Vector3d> x(idx.number_of_vertices());
+  std::vector<bool> has_direction(components.size(), false);
   for(std::size_t v = 0; v < x.size(); ++v)
   {
     const auto& f = get(field, idx.vertex(v));
-    Eigen::Vector3d xv(CGAL::to_double(f.x()), CGAL::to_double(f.y()), CGAL::to_double(f.z()));
-    xv -= xv.dot(normal[v]) * normal[v];
-    if(radians_per_unit_length > 0.)
+    const Eigen::Vector3d input(CGAL::to_double(f.x()), CGAL::to_double(f.y()), CGAL::to_double(f.z()));
+    if(!input.allFinite())
     {
-      const double len = xv.norm();
-      xv = len > 0. ? Eigen::Vector3d(xv * (radians_per_unit_length / len)) : Eigen::Vector3d::Zero();
+      std::ostringstream s;
+      s << "the vector at vertex " << v << " is (" << input.x() << ", " << input.y() << ", " << input.z() << ")";
+      throw Invalid_parameter("field", s.str());
     }
+    Eigen::Vector3d xv = input - input.dot(normal[v]) * normal[v];
+    // a tangential part below 1e-12 of the vector is rounding: the vector is normal there
+    const double len = xv.norm();
+    const bool tangent = len > 1e-12 * input.norm();
+    has_direction[components.vertex_component[v]] = has_direction[components.vertex_component[v]] || tangent;
+    if(radians_per_unit_length > 0.)
+      xv = tangent ? Eigen::Vector3d(xv * (radians_per_unit_length / len)) : Eigen::Vector3d::Zero();
     x[v] = xv;
   }
+  if(radians_per_unit_length > 0.)
+    for(std::size_t c = 0; c < has_direction.size(); ++c)
+      if(!has_direction[c])
+        throw Invalid_parameter("field", "the field has no tangential component at any vertex of connected component " +
+                                           std::to_string(c) + ": there is no direction to normalize");
   return x;
 }
 
@@ -82,7 +82,7 @@ std::vector<double> projected_one_form(const Indices& idx, const VertexPointMap&
   return omega;
 }
 
-/// omega per edge, the paper's angle-rescaled convention (see One_form_convention).
+/// omega per edge, the paper's angle-rescaled convention (see `One_form_convention`).
 template <class Indices, class VertexPointMap>
 std::vector<double> angle_rescaled_one_form(const Indices& idx, const VertexPointMap& vpm,
                                             const std::vector<Eigen::Vector3d>& x)
@@ -117,4 +117,4 @@ std::vector<double> angle_rescaled_one_form(const Indices& idx, const VertexPoin
 } // namespace Surface_design
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_DESIGN_INTERNAL_TARGET_ONE_FORM_H
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_FIELD_ALIGNED_PARAMETERIZATION_TARGET_ONE_FORM_H

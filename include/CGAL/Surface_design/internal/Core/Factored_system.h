@@ -3,8 +3,8 @@
 //
 // Factor once, solve many times, through any model of SparseLinearAlgebraWithFactorTraits_d.
 
-#ifndef CGAL_SURFACE_DESIGN_INTERNAL_FACTORED_SYSTEM_H
-#define CGAL_SURFACE_DESIGN_INTERNAL_FACTORED_SYSTEM_H
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_FACTORED_SYSTEM_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_CORE_FACTORED_SYSTEM_H
 
 #include <CGAL/Surface_design/exceptions.h>
 #include <CGAL/Surface_design/solver_traits.h>
@@ -165,4 +165,4 @@ private:
 } // namespace Surface_design
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_DESIGN_INTERNAL_FACTORED_SYSTEM_H
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_CORE_FACTORED_SYSTEM_H

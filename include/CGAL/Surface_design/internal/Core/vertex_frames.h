@@ -5,10 +5,10 @@
 // around every vertex the corner angles are scaled so that the star becomes flat, and a tangent
 // direction is an angle measured counter-clockwise from a reference outgoing edge.
 
-#ifndef CGAL_SURFACE_DESIGN_INTERNAL_VERTEX_FRAMES_H
-#define CGAL_SURFACE_DESIGN_INTERNAL_VERTEX_FRAMES_H
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_VERTEX_FRAMES_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_CORE_VERTEX_FRAMES_H
 
-#include <CGAL/Surface_design/internal/geometry.h>
+#include <CGAL/Surface_design/internal/Core/geometry.h>
 
 #include <Eigen/Core>
 
@@ -50,7 +50,6 @@ struct Vertex_frames
   /// projection; returns 0 otherwise).
   double to_angle(std::size_t v, const Eigen::Vector3d& x) const
   {
-    const double two_pi = 2. * std::acos(-1.);
     const double px = x.dot(e0[v]), py = x.dot(e1[v]);
     if(px == 0. && py == 0.)
       return 0.;
@@ -60,8 +59,8 @@ struct Vertex_frames
     const std::size_t b = star_begin[v], e = star_begin[v + 1] - 1; // e: the sentinel
     for(std::size_t k = b; k < e; ++k)
       if(star_psi[k + 1] > star_psi[k] && psi >= star_psi[k] && psi <= star_psi[k + 1])
-        return wrap(star_phi[k] + (psi - star_psi[k]) / (star_psi[k + 1] - star_psi[k]) *
-                                    (star_phi[k + 1] - star_phi[k]));
+        return wrap_angle(star_phi[k] + (psi - star_psi[k]) / (star_psi[k + 1] - star_psi[k]) *
+                                    (star_phi[k + 1] - star_phi[k]), 0.);
     // folded projected star: the nearest edge
     double best = two_pi, theta = 0.;
     for(std::size_t k = b; k < e; ++k)
@@ -80,7 +79,7 @@ struct Vertex_frames
   /// Unit tangent vector at vertex `v` of rescaled angle `a` (any real; taken modulo 2 pi).
   Eigen::Vector3d to_vector(std::size_t v, double a) const
   {
-    a = wrap(a);
+    a = wrap_angle(a, 0.);
     const std::size_t b = star_begin[v], e = star_begin[v + 1] - 1;
     std::size_t k = b;
     while(k + 1 < e && star_phi[k + 1] <= a)
@@ -91,12 +90,6 @@ struct Vertex_frames
     return std::cos(psi) * e0[v] + std::sin(psi) * e1[v];
   }
 
-  static double wrap(double a)
-  {
-    const double two_pi = 2. * std::acos(-1.);
-    a -= two_pi * std::floor(a / two_pi);
-    return a >= two_pi ? 0. : a;
-  }
 };
 
 /// Computes the frames (see Vertex_frames). `corner` are the corner angles (corner_angles()).
@@ -105,7 +98,6 @@ Vertex_frames vertex_frames(const Indices& idx, const VertexPointMap& vpm,
                             const std::vector<double>& corner)
 {
   const auto& tm = idx.mesh();
-  const double two_pi = 2. * std::acos(-1.);
   const std::size_t nv = idx.number_of_vertices();
   Vertex_frames fr;
   fr.scale.assign(nv, 1.);
@@ -176,4 +168,4 @@ Vertex_frames vertex_frames(const Indices& idx, const VertexPointMap& vpm,
 } // namespace Surface_design
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_DESIGN_INTERNAL_VERTEX_FRAMES_H
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_CORE_VERTEX_FRAMES_H

@@ -3,12 +3,12 @@
 //
 // Input validation shared by every algorithm: read-only, throws Invalid_mesh.
 
-#ifndef CGAL_SURFACE_DESIGN_INTERNAL_VALIDATION_H
-#define CGAL_SURFACE_DESIGN_INTERNAL_VALIDATION_H
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_VALIDATION_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_CORE_VALIDATION_H
 
 #include <CGAL/Surface_design/exceptions.h>
-#include <CGAL/Surface_design/internal/geometry.h>
-#include <CGAL/Surface_design/internal/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/geometry.h>
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 
 #include <cmath>
 #include <cstddef>
@@ -145,4 +145,4 @@ void validate_mesh(const Indices& idx, const VertexPointMap& vpm,
 } // namespace Surface_design
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_DESIGN_INTERNAL_VALIDATION_H
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_CORE_VALIDATION_H

@@ -5,14 +5,15 @@
 // weighted neighbour list of every free vertex (uniform, cotangent or mean-value weights). Shared
 // by the direct solver (Barycentric_embedding) and the paper's iterative reference.
 
-#ifndef CGAL_SURFACE_DESIGN_INTERNAL_BARYCENTRIC_STENCIL_H
-#define CGAL_SURFACE_DESIGN_INTERNAL_BARYCENTRIC_STENCIL_H
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_BARYCENTRIC_EMBEDDING_BARYCENTRIC_STENCIL_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_BARYCENTRIC_EMBEDDING_BARYCENTRIC_STENCIL_H
 
+#include <CGAL/Surface_design/edge_weighting.h>
 #include <CGAL/Surface_design/exceptions.h>
-#include <CGAL/Surface_design/internal/geometry.h>
-#include <CGAL/Surface_design/internal/Mesh_indices.h>
-#include <CGAL/Surface_design/internal/topology.h>
-#include <CGAL/Surface_design/internal/validation.h>
+#include <CGAL/Surface_design/internal/Core/geometry.h>
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/topology.h>
+#include <CGAL/Surface_design/internal/Core/validation.h>
 
 #include <CGAL/Weights/tangent_weights.h>
 
@@ -30,36 +31,14 @@
 namespace CGAL {
 namespace Surface_design {
 
-/// \ingroup PkgBarycentricEmbeddingRef
-/// The weights w_ij with which a free vertex i is the weighted barycentre of its neighbours j:
-/// x_i = sum_j w_ij x_j / sum_j w_ij.
-enum class Barycentric_weighting
-{
-  /// w_ij = 1: the graph barycentre of Imafuji & Ochiai (only the connectivity matters).
-  uniform,
-  /// w_ij = (cot a_ij + cot b_ij) / 2 of a reference geometry (symmetric; negative on
-  /// non-Delaunay edges). Triangle meshes only.
-  cotangent,
-  /// w_ij = (tan(alpha/2) + tan(beta/2)) / |x_j - x_i| of a reference geometry (Floater), alpha
-  /// and beta the angles at i between edge ij and its neighbouring edges in the two incident
-  /// faces: positive, not symmetric. Any polygon faces.
-  mean_value
-};
-
-/// \ingroup PkgBarycentricEmbeddingRef
-/// Name of a `Barycentric_weighting` ("uniform", "cotangent", "mean-value").
-inline const char* to_string(Barycentric_weighting w)
-{
-  switch(w)
-  {
-    case Barycentric_weighting::uniform: return "uniform";
-    case Barycentric_weighting::cotangent: return "cotangent";
-    case Barycentric_weighting::mean_value: return "mean-value";
-  }
-  return "unknown";
-}
-
 namespace internal {
+
+/// \throws Invalid_parameter if `w` is not an enumerator of `Edge_weighting`
+inline void check_edge_weighting(Edge_weighting w)
+{
+  if(w != Edge_weighting::uniform && w != Edge_weighting::cotangent && w != Edge_weighting::mean_value)
+    throw Invalid_parameter("weighting", "not an Edge_weighting enumerator (" + std::to_string(int(w)) + ")");
+}
 
 namespace stencil_detail {
 
@@ -109,12 +88,13 @@ std::vector<bool> fixed_flags(const Indices& idx, const FixedVertices& fixed)
 /// rows: free vertex `free_vertices[r]` has neighbours `neighbour[k]` with weights `weight[k]` for
 /// `k` in `[row_start[r], row_start[r + 1])` (one entry per halfedge leaving it, so a neighbour
 /// joined by two edges appears twice). `slot[v]` is the position of vertex `v` in `free_vertices`
-/// or in `fixed_vertices`.
+/// or in `fixed_vertices`. `halfedge[k]` is the halfedge index of entry k (from the free vertex
+/// to its neighbour).
 struct Barycentric_stencil
 {
   std::vector<bool> is_fixed;
   std::vector<std::size_t> free_vertices, fixed_vertices, slot;
-  std::vector<std::size_t> row_start, neighbour;
+  std::vector<std::size_t> row_start, neighbour, halfedge;
   std::vector<double> weight;
 
   std::size_t number_of_free_vertices() const { return free_vertices.size(); }
@@ -129,16 +109,16 @@ struct Barycentric_stencil
 ///   singular: a free component floats (`Invalid_constraints`, naming the component).
 template <class Indices, class VertexPointMap, class ReferencePointMap>
 void validate_barycentric_input(const Indices& idx, const VertexPointMap& vpm,
-                                const ReferencePointMap& reference, Barycentric_weighting weighting,
+                                const ReferencePointMap& reference, Edge_weighting weighting,
                                 const std::vector<bool>& is_fixed)
 {
   Validation_options options;
-  options.require_triangles = weighting == Barycentric_weighting::cotangent;
-  options.reject_degenerate_faces = weighting == Barycentric_weighting::cotangent;
+  options.require_triangles = weighting == Edge_weighting::cotangent;
+  options.reject_degenerate_faces = weighting == Edge_weighting::cotangent;
   validate_mesh(idx, vpm, options);
-  if(weighting != Barycentric_weighting::uniform)
+  if(weighting != Edge_weighting::uniform)
     validate_mesh(idx, reference, options); // the geometry the weights come from
-  if(weighting == Barycentric_weighting::mean_value)
+  if(weighting == Edge_weighting::mean_value)
     for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
     {
       const auto ij = idx.edge_vertices(e);
@@ -189,7 +169,7 @@ inline double tangent_half_angle(const Eigen::Vector3d& u, const Eigen::Vector3d
 /// face at a free vertex point in opposite directions)
 template <class Indices, class ReferencePointMap>
 Barycentric_stencil barycentric_stencil(const Indices& idx, const ReferencePointMap& reference,
-                                        Barycentric_weighting weighting, std::vector<bool> is_fixed)
+                                        Edge_weighting weighting, std::vector<bool> is_fixed)
 {
   const auto& tm = idx.mesh();
   Barycentric_stencil s;
@@ -203,23 +183,23 @@ Barycentric_stencil barycentric_stencil(const Indices& idx, const ReferencePoint
   }
 
   std::vector<double> edge_weight; // cotangent weights, per edge
-  if(weighting == Barycentric_weighting::cotangent)
+  if(weighting == Edge_weighting::cotangent)
     edge_weight = cotangent_weights(idx, reference);
 
   s.row_start.reserve(s.free_vertices.size() + 1);
   s.row_start.push_back(0);
   for(std::size_t v : s.free_vertices)
   {
-    const Eigen::Vector3d p = weighting == Barycentric_weighting::mean_value
+    const Eigen::Vector3d p = weighting == Edge_weighting::mean_value
                                 ? position(reference, idx.vertex(v))
                                 : Eigen::Vector3d::Zero();
     for(auto h : halfedges_around_source(idx.vertex(v), tm))
     {
       const std::size_t j = idx.target_index(h);
       double w = 1.;
-      if(weighting == Barycentric_weighting::cotangent)
+      if(weighting == Edge_weighting::cotangent)
         w = edge_weight[idx.edge_index(h)];
-      else if(weighting == Barycentric_weighting::mean_value)
+      else if(weighting == Edge_weighting::mean_value)
       {
         // h runs v -> j; the neighbouring edges at v are prev(h) in face(h) and
         // next(opposite(h)) in the face on the other side (one term on a border edge)
@@ -239,6 +219,7 @@ Barycentric_stencil barycentric_stencil(const Indices& idx, const ReferencePoint
                                std::to_string(v) + " in the reference geometry)");
       }
       s.neighbour.push_back(j);
+      s.halfedge.push_back(idx.index(h));
       s.weight.push_back(w);
     }
     s.row_start.push_back(s.neighbour.size());
@@ -250,4 +231,4 @@ Barycentric_stencil barycentric_stencil(const Indices& idx, const ReferencePoint
 } // namespace Surface_design
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_DESIGN_INTERNAL_BARYCENTRIC_STENCIL_H
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_BARYCENTRIC_EMBEDDING_BARYCENTRIC_STENCIL_H

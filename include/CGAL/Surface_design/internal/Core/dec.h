@@ -1,0 +1,155 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Discrete exterior calculus operators on a FaceGraph.
+
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_DEC_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_CORE_DEC_H
+
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
+
+#include <Eigen/Sparse>
+
+#include <cstddef>
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_design {
+namespace internal {
+
+using Sparse_matrix = Eigen::SparseMatrix<double>;
+using Triplet = Eigen::Triplet<double>;
+
+// Orientation conventions (see Mesh_indices): edge e runs from its endpoint of smaller vertex
+// index to the larger one; face f is oriented by its halfedge cycle (next()), i.e.
+// counter-clockwise seen from the side of its normal. Hence
+//   (d0 u)_e = u_j - u_i            for e = (i -> j),
+//   (d1 y)_f = sum_{h in f} s(h) y_{edge(h)},   s(h) = +1 if h runs along its edge, -1 otherwise,
+// and d1 * d0 = 0 exactly (every term cancels in integer arithmetic). Both work on polygon faces.
+
+/// Exterior derivative on 0-forms, |E| x |V|.
+template <class Indices>
+Sparse_matrix d0(const Indices& idx)
+{
+  std::vector<Triplet> t;
+  t.reserve(2 * idx.number_of_edges());
+  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+  {
+    const auto ij = idx.edge_vertices(e);
+    t.emplace_back(int(e), int(ij.first), -1.);
+    t.emplace_back(int(e), int(ij.second), 1.);
+  }
+  Sparse_matrix m(int(idx.number_of_edges()), int(idx.number_of_vertices()));
+  m.setFromTriplets(t.begin(), t.end());
+  return m;
+}
+
+/// Exterior derivative on 1-forms, |F| x |E|.
+template <class Indices>
+Sparse_matrix d1(const Indices& idx)
+{
+  const auto& tm = idx.mesh();
+  std::vector<Triplet> t;
+  t.reserve(idx.number_of_halfedges());
+  for(std::size_t f = 0; f < idx.number_of_faces(); ++f)
+    for(auto h : halfedges_around_face(halfedge(idx.face(f), tm), tm))
+      t.emplace_back(int(f), int(idx.edge_index(h)), double(idx.orientation_sign(h)));
+  Sparse_matrix m(int(idx.number_of_faces()), int(idx.number_of_edges()));
+  m.setFromTriplets(t.begin(), t.end());
+  return m;
+}
+
+/// Diagonal sparse matrix from a vector (Hodge stars, lumped mass matrix).
+inline Sparse_matrix diagonal_matrix(const std::vector<double>& d)
+{
+  Sparse_matrix m(int(d.size()), int(d.size()));
+  m.reserve(Eigen::VectorXi::Constant(int(d.size()), 1));
+  for(std::size_t i = 0; i < d.size(); ++i)
+    m.insert(int(i), int(i)) = d[i];
+  m.makeCompressed();
+  return m;
+}
+
+/// Assembles a sparse matrix on the vertices with the sparsity of a vertex Laplacian: entry
+/// (source(h), target(h)) = `off_diagonal(h)` for every halfedge h (so both (i, j) and (j, i)
+/// for every edge, from its two halfedges; two edges joining the same vertices add up), and
+/// entry (v, v) = `diagonal(v)`. Every Laplacian-like operator of the library is assembled here:
+/// the weighted (e.g. cotangent) Laplacian, the Hermitian connection Laplacian of direction
+/// fields, the barycentric systems.
+///
+/// `slot` optionally restricts and renumbers: row/column `slot[v]` for vertex `v`, and vertices
+/// with `slot[v] == npos` are left out with every entry in their row or column. Empty: all
+/// vertices in index order. Assembled column by column straight into compressed storage (no
+/// triplets), row indices sorted; the pattern depends on the connectivity (and `slot`) only.
+/// \tparam Scalar `double` or `std::complex<double>`
+template <class Scalar, class Indices, class OffDiagonal, class Diagonal>
+Eigen::SparseMatrix<Scalar> assemble_vertex_matrix(const Indices& idx, const OffDiagonal& off_diagonal,
+                                                   const Diagonal& diagonal,
+                                                   const std::vector<std::size_t>& slot = {})
+{
+  const auto& tm = idx.mesh();
+  const std::size_t nv = idx.number_of_vertices();
+  auto slot_of = [&slot](std::size_t v) { return slot.empty() ? v : slot[v]; };
+  std::size_t size = 0;
+  for(std::size_t v = 0; v < nv; ++v)
+    size += slot_of(v) != npos;
+  Eigen::SparseMatrix<Scalar> m(static_cast<Eigen::Index>(size), static_cast<Eigen::Index>(size));
+  Eigen::VectorXi column_size = Eigen::VectorXi::Zero(static_cast<Eigen::Index>(size));
+  for(std::size_t v = 0; v < nv; ++v)
+    if(slot_of(v) != npos)
+      column_size[Eigen::Index(slot_of(v))] = int(degree(idx.vertex(v), tm)) + 1;
+  m.reserve(column_size);
+  std::vector<std::pair<std::size_t, Scalar>> column;
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    const std::size_t c = slot_of(v);
+    if(c == npos)
+      continue;
+    column.clear();
+    for(auto h : halfedges_around_target(idx.vertex(v), tm)) // entries (source(h), v)
+    {
+      const std::size_t r = slot_of(idx.source_index(h));
+      if(r != npos)
+        column.emplace_back(r, off_diagonal(idx.index(h)));
+    }
+    column.emplace_back(c, diagonal(v));
+    std::sort(column.begin(), column.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    for(std::size_t k = 0; k < column.size(); ++k)
+    {
+      Scalar value = column[k].second;
+      while(k + 1 < column.size() && column[k + 1].first == column[k].first) // two edges, same ends
+        value += column[++k].second;
+      m.insert(Eigen::Index(column[k].first), Eigen::Index(c)) = value;
+    }
+  }
+  m.makeCompressed();
+  return m;
+}
+
+/// The weighted graph Laplacian L = d0^T W d0 (|V| x |V|, symmetric), with W = diag(edge_weight).
+/// With cotangent weights it is the cotangent Laplacian, positive semi-definite on every triangle
+/// mesh (it is the P1 finite-element stiffness matrix) with the constants per connected component
+/// as kernel. Sign convention: L_ii = sum_j w_ij >= 0 (for positive weights), L_ij = -w_ij.
+template <class Indices>
+Sparse_matrix weighted_laplacian(const Indices& idx, const std::vector<double>& edge_weight)
+{
+  std::vector<double> diagonal(idx.number_of_vertices(), 0.);
+  for(std::size_t e = 0; e < edge_weight.size(); ++e)
+  {
+    const auto ij = idx.edge_vertices(e);
+    diagonal[ij.first] += edge_weight[e];
+    diagonal[ij.second] += edge_weight[e];
+  }
+  return assemble_vertex_matrix<double>(
+    idx, [&](std::size_t h) { return -edge_weight[idx.edge_index(idx.halfedge(h))]; },
+    [&](std::size_t v) { return diagonal[v]; });
+}
+
+} // namespace internal
+} // namespace Surface_design
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_CORE_DEC_H
