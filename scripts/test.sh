@@ -9,13 +9,13 @@ install_packages "${BUILD_PACKAGES[@]}"
 if [ "${1:-}" = "--sanitize" ]; then
   BUILD="$ROOT/build-sanitize"
   configure_and_build "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g" \
-    -DCGAL_SURFACE_DESIGN_SANITIZE=ON -DCGAL_SURFACE_DESIGN_WERROR=ON \
+    -DCGAL_SURFACE_DESIGN_SANITIZE=ON -DCGAL_SURFACE_DESIGN_WERROR=ON -DCGAL_SURFACE_DESIGN_REQUIRE_CHOLMOD=ON \
     -DCGAL_SURFACE_DESIGN_BUILD_EXAMPLES=OFF -DCGAL_SURFACE_DESIGN_BUILD_BENCHMARKS=OFF
   export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
   export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 else
   BUILD="$ROOT/build"
-  configure_and_build "$BUILD" -DCMAKE_BUILD_TYPE=Release -DCGAL_SURFACE_DESIGN_WERROR=ON
+  configure_and_build "$BUILD" -DCMAKE_BUILD_TYPE=Release -DCGAL_SURFACE_DESIGN_WERROR=ON -DCGAL_SURFACE_DESIGN_REQUIRE_CHOLMOD=ON
 fi
 
 echo "== Running the tests in $BUILD"

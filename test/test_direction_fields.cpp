@@ -13,6 +13,8 @@
 #include <CGAL/Surface_design/Trivial_connection.h>
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseLU>
 
 #include <cmath>
 #include <map>
@@ -249,6 +251,177 @@ TEMPLATE_TEST_CASE("Smoothest field on a sphere: the smallest eigenvalue, never 
     }
     SD_FOR_EACH_SOLVER(SD_RUN)
 #undef SD_RUN
+  }
+}
+
+TEST_CASE("Smoothest field on a scanned mesh of 4k vertices: optimal against independent inverse iteration",
+          "[direction_fields]")
+{
+  // bunny_8k: 4151 vertices. The reference eigenpair comes from plain inverse iteration on a
+  // sparse LU factorization of A (not Lanczos, not LDLT) with A assembled here from its formula
+  // by triplets (not by the library's assembly), so that a wrong assembly, a wrong eigenvector
+  // or a stalled Lanczos process would all show.
+  using Mesh = test::Surface_mesh;
+  const Mesh mesh = test::load_mesh<Mesh>("bunny_8k.off");
+  const SDI::Mesh_indices<Mesh> idx(mesh);
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  const SDI::Discrete_connection c = SDI::levi_civita_connection(idx, vpm);
+  const std::vector<double> w = SDI::cotangent_weights(idx, vpm);
+  const std::vector<double> mass = SDI::vertex_areas(idx, SDI::face_areas(idx, vpm));
+  const Eigen::Index nv = Eigen::Index(idx.number_of_vertices());
+  for(int n : {1, 4})
+  {
+    INFO("n = " << n);
+    std::vector<Eigen::Triplet<std::complex<double>>> t;
+    for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+    {
+      const auto ij = idx.edge_vertices(e);
+      const Eigen::Index i = Eigen::Index(ij.first), j = Eigen::Index(ij.second);
+      const std::complex<double> r = std::polar(1., n * c.rho[e]); // transport i -> j, n-fold
+      t.emplace_back(i, i, w[e]);
+      t.emplace_back(j, j, w[e]);
+      t.emplace_back(j, i, -w[e] * r);
+      t.emplace_back(i, j, -w[e] * std::conj(r));
+    }
+    Eigen::SparseMatrix<std::complex<double>> a(nv, nv);
+    a.setFromTriplets(t.begin(), t.end());
+    Eigen::SparseLU<Eigen::SparseMatrix<std::complex<double>>> lu(a);
+    REQUIRE(lu.info() == Eigen::Success);
+    const Eigen::Map<const Eigen::VectorXd> m(mass.data(), nv);
+    auto rayleigh = [&](const Eigen::VectorXcd& u) {
+      return (u.dot(a * u)).real() / (u.dot(m.cast<std::complex<double>>().cwiseProduct(u))).real();
+    };
+    Eigen::VectorXcd x = Eigen::VectorXcd::Ones(nv);
+    double lambda = rayleigh(x), previous = 0.;
+    for(int it = 0; it < 2000 && std::abs(lambda - previous) > 1e-15 * lambda; ++it)
+    {
+      x = lu.solve(Eigen::VectorXcd(m.cast<std::complex<double>>().cwiseProduct(x)));
+      x /= x.norm();
+      previous = lambda;
+      lambda = rayleigh(x);
+    }
+    // the reference is an eigenpair: the residual of A x = lambda M x is at rounding level
+    const Eigen::VectorXcd residual = a * x - lambda * m.cast<std::complex<double>>().cwiseProduct(x);
+    REQUIRE(residual.norm() <= 1e-7 * lambda * (m.cast<std::complex<double>>().cwiseProduct(x)).norm());
+
+    Vector_map<Mesh> field;
+    const auto info = SD::smoothest_direction_field(
+      mesh, boost::make_assoc_property_map(field),
+      SD::parameters::symmetry_order(n, SD::parameters::normalize_field(false)));
+    REQUIRE(info.converged);
+    REQUIRE(std::abs(info.eigenvalues[0] - lambda) <= 1e-8 * lambda);
+    const Eigen::VectorXd ur = complex_values(mesh, c, field, n);
+    Eigen::VectorXcd u(nv);
+    for(Eigen::Index v = 0; v < nv; ++v)
+      u[v] = std::complex<double>(ur[2 * v], ur[2 * v + 1]);
+    REQUIRE(std::abs(rayleigh(u) - lambda) <= 1e-8 * lambda);
+    // and the field is that eigenvector (up to a global phase): |<x, u>_M| = |x|_M |u|_M
+    const std::complex<double> inner = x.dot(m.cast<std::complex<double>>().cwiseProduct(u));
+    const double nx = std::sqrt((x.dot(m.cast<std::complex<double>>().cwiseProduct(x))).real());
+    const double nu = std::sqrt((u.dot(m.cast<std::complex<double>>().cwiseProduct(u))).real());
+    REQUIRE(std::abs(inner) >= (1. - 1e-8) * nx * nu);
+  }
+}
+
+TEST_CASE("Shift-invert Lanczos: several components, restarts, non-convergence", "[direction_fields]")
+{
+  // Block-diagonal S (three path-graph Laplacians plus a shift, sizes 30, 45, 60) and a positive
+  // diagonal M: the largest theta of M x = theta S x per block, against a dense eigensolver.
+  const std::vector<Eigen::Index> size{30, 45, 60};
+  const Eigen::Index N = size[0] + size[1] + size[2];
+  std::vector<Eigen::Triplet<double>> t;
+  std::vector<std::size_t> group(static_cast<std::size_t>(N));
+  Eigen::VectorXd mass(N);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> uniform(0.5, 2.);
+  Eigen::Index begin = 0;
+  for(std::size_t g = 0; g < size.size(); ++g)
+  {
+    for(Eigen::Index i = begin; i < begin + size[g]; ++i)
+    {
+      group[std::size_t(i)] = g;
+      mass[i] = uniform(random);
+      t.emplace_back(i, i, 2. + 0.01 * double(g + 1));
+      if(i + 1 < begin + size[g])
+      {
+        t.emplace_back(i, i + 1, -1.);
+        t.emplace_back(i + 1, i, -1.);
+      }
+    }
+    begin += size[g];
+  }
+  Eigen::SparseMatrix<double> S(N, N);
+  S.setFromTriplets(t.begin(), t.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(S);
+  auto solve = [&ldlt](const Eigen::VectorXd& b, Eigen::VectorXd& x) { x = ldlt.solve(b); };
+
+  std::vector<double> reference(size.size());
+  begin = 0;
+  for(std::size_t g = 0; g < size.size(); ++g)
+  {
+    const Eigen::MatrixXd Sg = Eigen::MatrixXd(S).block(begin, begin, size[g], size[g]);
+    const Eigen::MatrixXd Mg = mass.segment(begin, size[g]).asDiagonal();
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(Mg, Sg);
+    reference[g] = dense.eigenvalues()[size[g] - 1];
+    begin += size[g];
+  }
+  Eigen::VectorXd start(N);
+  for(Eigen::Index i = 0; i < N; ++i)
+    start[i] = uniform(random) - 1.25;
+  const std::vector<bool> active{true, false, true};
+
+  auto check = [&](const SDI::Lanczos_result& r, double tolerance) {
+    for(std::size_t g = 0; g < size.size(); ++g)
+    {
+      double norm2 = 0.;
+      for(Eigen::Index i = 0; i < N; ++i)
+        if(group[std::size_t(i)] == g)
+          norm2 += mass[i] * r.x[i] * r.x[i];
+      if(!active[g])
+      {
+        REQUIRE(norm2 == 0.); // inactive groups stay zero
+        continue;
+      }
+      REQUIRE(std::abs(norm2 - 1.) <= 1e-10); // unit M-norm per group
+      REQUIRE(std::abs(r.theta[g] - reference[g]) <= tolerance * reference[g]);
+    }
+  };
+  SECTION("converges per active group, sharing back-substitutions")
+  {
+    const SDI::Lanczos_result r = SDI::largest_eigenvectors_by_group(solve, mass, group, active, start, 1e-10, 500);
+    REQUIRE(r.converged);
+    check(r, 1e-12);
+  }
+  SECTION("explicit restarts when the basis is full")
+  {
+    const SDI::Lanczos_result r =
+      SDI::largest_eigenvectors_by_group(solve, mass, group, active, start, 1e-10, 2000, /*max_basis=*/4);
+    REQUIRE(r.converged);
+    REQUIRE(r.solves > 4); // it had to restart
+    check(r, 1e-12);
+  }
+  SECTION("stops at the iteration limit and says so")
+  {
+    const SDI::Lanczos_result r = SDI::largest_eigenvectors_by_group(solve, mass, group, active, start, 1e-14, 2);
+    REQUIRE_FALSE(r.converged);
+    REQUIRE(r.solves == 2);
+    for(std::size_t g = 0; g < size.size(); ++g)
+      if(active[g])
+        REQUIRE(r.theta[g] <= reference[g] * (1. + 1e-12)); // Ritz values approach from below
+  }
+  SECTION("through the public function: several components, and the iteration limit reported")
+  {
+    const test::Surface_mesh blobs = test::load_mesh<test::Surface_mesh>("blobby_3cc.off");
+    Vector_map<test::Surface_mesh> field;
+    const auto all = SD::smoothest_direction_field(blobs, boost::make_assoc_property_map(field));
+    REQUIRE(all.converged);
+    REQUIRE(all.eigenvalues.size() == 3);
+    for(double l : all.eigenvalues)
+      REQUIRE(l > 0.);
+    const auto limited = SD::smoothest_direction_field(blobs, boost::make_assoc_property_map(field),
+                                                       SD::parameters::number_of_iterations(2));
+    REQUIRE_FALSE(limited.converged);
+    REQUIRE(limited.iterations == 2);
   }
 }
 

@@ -6,6 +6,8 @@
 
 #include <test_support.h>
 
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+
 #include <CGAL/Surface_design/field_aligned_parameterization.h>
 #include <CGAL/Surface_design/Field_aligned_parameterizer.h>
 #include "Face_space_stripe_solver.h"
@@ -274,7 +276,7 @@ TEMPLATE_TEST_CASE("Both solvers give the same stripes", "[stripes]", SD_MESH_TY
   for(std::size_t l = 0; l < a.number_of_loops(); ++l)
     REQUIRE(a.loop_winding(l) == b.loop_winding(l));
 #else
-  WARN("CHOLMOD is not available: skipped");
+  SD_CHOLMOD_UNAVAILABLE("the comparison of the stripes of both solvers");
 #endif
 }
 
@@ -417,7 +419,53 @@ TEMPLATE_TEST_CASE("The two conventions for omega agree on planar meshes", "[str
   for(std::size_t e = 0; e < projected.target_one_form().size(); ++e)
     REQUIRE(rescaled.target_one_form()[e] == Approx(projected.target_one_form()[e]).margin(1e-12));
 
-  // on a curved mesh they differ, but only by the discretization of the tangent spaces
+  // An open prism cylinder (rings of 16 vertices, quads split along alternating diagonals) is
+  // intrinsically flat and its vertex normals are horizontal: for the axial field both
+  // conventions must give exactly the rise of every edge, 2 pi s (z_j - z_i). A wrong sign in
+  // the angle-rescaled integral (the paper's printed "+") would give about 0 on vertical edges.
+  {
+    const std::size_t ring = 16, rings = 9;
+    std::vector<test::Point> points;
+    std::vector<std::vector<std::size_t>> triangles;
+    for(std::size_t k = 0; k < rings; ++k)
+      for(std::size_t j = 0; j < ring; ++j)
+      {
+        const double a = 2. * pi * double(j) / double(ring);
+        points.emplace_back(std::cos(a), std::sin(a), 0.37 * double(k));
+      }
+    for(std::size_t k = 0; k + 1 < rings; ++k)
+      for(std::size_t j = 0; j < ring; ++j)
+      {
+        const std::size_t a = k * ring + j, b = k * ring + (j + 1) % ring, c = b + ring, d = a + ring;
+        if((j + k) % 2 == 0)
+          triangles.insert(triangles.end(), {{a, b, c}, {a, c, d}});
+        else
+          triangles.insert(triangles.end(), {{a, b, d}, {b, c, d}});
+      }
+    TestType cylinder;
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, cylinder);
+    std::map<typename boost::graph_traits<TestType>::vertex_descriptor, test::Kernel::Vector_3> up;
+    for(auto v : vertices(cylinder))
+      up[v] = test::Kernel::Vector_3(0., 0., 1.);
+    const double s = 1.7;
+    for(auto convention : {SD::One_form_convention::projected, SD::One_form_convention::angle_rescaled})
+    {
+      Fap<TestType, SD::Default_solver_traits> fap(cylinder);
+      fap.set_field(boost::make_assoc_property_map(up), s, convention);
+      const auto& idx = fap.indices();
+      for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+      {
+        const auto ij = idx.edge_vertices(e);
+        const double rise = get(CGAL::vertex_point, cylinder, idx.vertex(ij.second)).z() -
+                            get(CGAL::vertex_point, cylinder, idx.vertex(ij.first)).z();
+        REQUIRE(std::abs(fap.target_one_form()[e] - 2. * pi * s * rise) <= 1e-12 * 2. * pi * s);
+      }
+    }
+  }
+
+  // On a curved mesh they differ by the discretization of the tangent spaces only: per edge at
+  // most a fraction of |omega|, measured on the bunny (the difference is O(h) and the bound
+  // leaves a margin of about 2x over the measured value; a wrong sign or frame gives O(1)).
   const TestType bunny = make_case<TestType>("bunny_1k.off");
   Fap<TestType, SD::Default_solver_traits> p2(bunny), r2(bunny);
   p2.set_field(axis_field(bunny), resolved_frequency(bunny));
@@ -429,7 +477,8 @@ TEMPLATE_TEST_CASE("The two conventions for omega agree on planar meshes", "[str
     norm += CGAL::square(p2.target_one_form()[e]);
   }
   REQUIRE(diff > 0.);
-  REQUIRE(std::sqrt(diff / norm) < 0.5);
+  CAPTURE(std::sqrt(diff / norm));
+  REQUIRE(std::sqrt(diff / norm) < 0.12); // measured 0.059
 }
 
 TEMPLATE_TEST_CASE("The one-call function writes every output", "[stripes]", SD_MESH_TYPES)

@@ -20,6 +20,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <map>
+#include <memory>
 #include <fstream>
 #include <optional>
 #include <stdexcept>
@@ -46,6 +47,62 @@ using Polyhedron_with_id = CGAL::Polyhedron_3<Kernel, CGAL::Polyhedron_items_wit
 #else
 #define SD_FOR_EACH_SOLVER(F) F(CGAL::Surface_design::Default_solver_traits, "ldlt")
 #endif
+
+/// A model of `SparseLinearAlgebraWithFactorTraits_d` that counts the factorizations and the
+/// solves it performs (around Eigen's SimplicialLDLT). Copies share the counts, as copies of
+/// CGAL's Eigen traits share their factorization. Not one of the library's own traits: the
+/// direction fields factor their Hermitian systems in the real form with it.
+class Counting_solver_traits
+{
+  using Base = CGAL::Surface_design::Default_solver_traits;
+
+public:
+  using Matrix = Base::Matrix;
+  using Vector = Base::Vector;
+  using NT = Base::NT;
+
+  struct Counts
+  {
+    std::size_t factorizations = 0, solves = 0;
+  };
+
+  Counting_solver_traits() : m_counts(std::make_shared<Counts>()) {}
+
+  bool factor(const Matrix& A, NT& D)
+  {
+    ++m_counts->factorizations;
+    return m_base.factor(A, D);
+  }
+  bool linear_solver(const Vector& B, Vector& X)
+  {
+    ++m_counts->solves;
+    return m_base.linear_solver(B, X);
+  }
+  bool linear_solver(const Matrix& A, const Vector& B, Vector& X, NT& D)
+  {
+    ++m_counts->factorizations;
+    ++m_counts->solves;
+    return m_base.linear_solver(A, B, X, D);
+  }
+
+  const Counts& counts() const { return *m_counts; }
+
+private:
+  Base m_base;
+  std::shared_ptr<Counts> m_counts;
+};
+
+/// Fails if CHOLMOD was required for this build (CMake option
+/// CGAL_SURFACE_DESIGN_REQUIRE_CHOLMOD, set by scripts/test.sh, which installs it), else warns
+/// that the cross-check `what` was skipped.
+#define SD_CHOLMOD_UNAVAILABLE(what)                                                               \
+  do                                                                                               \
+  {                                                                                                \
+    if(CGAL_SURFACE_DESIGN_TESTS_REQUIRE_CHOLMOD)                                                  \
+      FAIL("CHOLMOD is required for this build but not available: " << what);                      \
+    else                                                                                           \
+      WARN("CHOLMOD is not available: skipped " << what);                                          \
+  } while(false)
 
 /// The mesh's own (read-only) vertex point map type.
 template <class Mesh>
