@@ -66,10 +66,11 @@ struct Stripe_setup
   std::size_t moved_from = SDI::npos, moved_to = SDI::npos; ///< the move of `resolve`, if any
 };
 
-/// Two +1/-1 pairs, at faces (n/7, n/3) and (4n/5, n/2) of the n faces; a pair whose faces lie on
+/// Two +1/-1 pairs, at faces (n/7, n/3) and (4n/5, n/2) of the n faces, or the next faces in index
+/// order with no edge on the boundary (those cannot hold a singularity); a pair whose faces lie on
 /// different connected components (or coincide with another chosen face) is left out, so that
 /// each closed component keeps a zero index sum. The move of `resolve` takes the first +1 to an
-/// edge-adjacent face without singularity.
+/// edge-adjacent face without singularity and without boundary edge.
 template <class Fap>
 Stripe_setup make_setup(const Fap& fap)
 {
@@ -94,10 +95,18 @@ Stripe_setup make_setup(const Fap& fap)
     return std::any_of(s.singularities.begin(), s.singularities.end(),
                        [f](const std::pair<std::size_t, int>& x) { return x.first == f; });
   };
-  const std::pair<std::size_t, std::size_t> pairs[] = {{n / 7, n / 3}, {4 * n / 5, n / 2}};
+  auto interior = [&](std::size_t f) { // the first face from f on with no edge on the boundary
+    for(std::size_t i = 0; i < n; ++i, f = (f + 1) % n)
+      if(!fap.has_boundary_edge(idx.face(f)))
+        return f;
+    return f;
+  };
+  const std::pair<std::size_t, std::size_t> pairs[] = {{interior(n / 7), interior(n / 3)},
+                                                       {interior(4 * n / 5), interior(n / 2)}};
   for(const auto& p : pairs)
     if(p.first != p.second && !is_chosen(p.first) && !is_chosen(p.second) &&
-       component[p.first] == component[p.second])
+       component[p.first] == component[p.second] && !fap.has_boundary_edge(idx.face(p.first)) &&
+       !fap.has_boundary_edge(idx.face(p.second)))
     {
       s.singularities.emplace_back(p.first, +1);
       s.singularities.emplace_back(p.second, -1);
@@ -112,7 +121,7 @@ Stripe_setup make_setup(const Fap& fap)
       if(is_border(o, mesh))
         continue;
       const std::size_t to = idx.index(face(o, mesh));
-      if(!is_chosen(to))
+      if(!is_chosen(to) && !fap.has_boundary_edge(face(o, mesh)))
       {
         s.moved_from = from;
         s.moved_to = to;

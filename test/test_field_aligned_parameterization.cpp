@@ -90,8 +90,8 @@ double smallest_weight(const F& fap, std::size_t f)
   return w;
 }
 
-// Among the first n/8 faces from index `start` on (cyclically) that are allowed and not taken,
-// the one whose smallest edge weight is largest.
+// Among the first n/8 faces from index `start` on (cyclically) that are allowed, not taken and
+// can hold a singularity (no edge on the boundary), the one whose smallest edge weight is largest.
 template <class F, class Allowed>
 std::size_t well_shaped_face(const F& fap, std::size_t start, const std::map<std::size_t, int>& taken,
                              const Allowed& allowed)
@@ -101,7 +101,7 @@ std::size_t well_shaped_face(const F& fap, std::size_t start, const std::map<std
   for(std::size_t i = 0; i < n && examined < window; ++i)
   {
     const std::size_t f = (start + i) % n;
-    if(taken.count(f) || !allowed(f))
+    if(taken.count(f) || !allowed(f) || fap.has_boundary_edge(fap.indices().face(f)))
       continue;
     ++examined;
     if(best == n || smallest_weight(fap, f) > smallest_weight(fap, best))
@@ -406,6 +406,68 @@ TEMPLATE_TEST_CASE("Automatic windings are integers no worse than their neighbou
       REQUIRE(fap.loop_winding(0) == chosen[0]);
       check_solution(fap);
     }
+  }
+}
+
+TEMPLATE_TEST_CASE("A face with an edge on the boundary cannot hold a singularity; one with a vertex there can",
+                   "[stripes]", SD_MESH_TYPES)
+{
+  const TestType mesh = make_case<TestType>("hemisphere.off");
+  Fap<TestType, SD::Default_solver_traits> fap(mesh);
+  const auto& idx = fap.indices();
+  std::vector<std::size_t> edge_faces, vertex_faces; // a boundary edge / boundary vertices only
+  for(std::size_t f = 0; f < idx.number_of_faces(); ++f)
+  {
+    bool edge = false, vertex = false;
+    for(auto h : halfedges_around_face(halfedge(idx.face(f), mesh), mesh))
+    {
+      edge = edge || is_border(opposite(h, mesh), mesh);
+      vertex = vertex || bool(is_border(target(h, mesh), mesh));
+    }
+    REQUIRE(fap.has_boundary_edge(idx.face(f)) == edge);
+    if(edge)
+      edge_faces.push_back(f);
+    else if(vertex)
+      vertex_faces.push_back(f);
+  }
+  REQUIRE(edge_faces.size() >= 10);
+  REQUIRE(vertex_faces.size() >= 10);
+  const std::size_t fb = edge_faces.front(), fi = well_shaped_face(fap, idx.number_of_faces() / 2);
+  REQUIRE_FALSE(fap.has_boundary_edge(idx.face(fi)));
+
+  // refused, with the reason and the loop, by every setter; nothing changes
+  CHECK_THROWS_WITH(fap.set_index(fb, 1), Catch::Contains("face " + std::to_string(fb) + " has an edge on boundary loop 0") &&
+                                            Catch::Contains("winding of loop 0 lower by 1"));
+  CHECK_THROWS_WITH(fap.set_index(idx.face(fb), -2), Catch::Contains("higher by 2"));
+  CHECK(fap.index(idx.face(fb)) == 0);
+  fap.set_index(fb, 0); // no singularity: fine
+  fap.set_index(fi, 1);
+  CHECK_THROWS_AS(fap.move_singularity(idx.face(fi), idx.face(fb)), SD::Invalid_constraints);
+  CHECK(fap.index(idx.face(fi)) == 1);
+  CHECK(fap.index(idx.face(fb)) == 0);
+  std::map<typename Fap<TestType, SD::Default_solver_traits>::face_descriptor, int> k;
+  for(auto f : faces(mesh))
+    k[f] = 0;
+  k[idx.face(fb)] = 1;
+  CHECK_THROWS_AS(fap.set_indices(boost::make_assoc_property_map(k)), SD::Invalid_constraints);
+  CHECK(fap.index(idx.face(fi)) == 1); // set_indices changed nothing
+  std::map<typename Fap<TestType, SD::Default_solver_traits>::vertex_descriptor, double> alpha;
+  CHECK_THROWS_AS(SD::field_aligned_parameterization(mesh, axis_field(mesh), boost::make_assoc_property_map(k),
+                                                     boost::make_assoc_property_map(alpha)),
+                  SD::Invalid_constraints);
+  CHECK(alpha.empty());
+
+  // faces with only vertices on the boundary: exactly the prescribed singularity appears, at a
+  // frequency the vortex next to the boundary resolves
+  fap.clear_indices();
+  fap.set_field(axis_field(mesh), resolved_frequency(mesh, 0.05));
+  for(std::size_t i = 0; i < vertex_faces.size(); i += vertex_faces.size() / 10)
+  {
+    INFO("face " << vertex_faces[i]);
+    fap.clear_indices();
+    fap.set_index(vertex_faces[i], i % 2 ? 1 : -1);
+    fap.solve();
+    check_solution(fap, true);
   }
 }
 

@@ -45,7 +45,9 @@ const char* usage =
   "                            on a closed surface)\n"
   "  --scale S                 stripes per unit length (default: 10 stripes across the bounding box)\n"
   "  --singularity FACE:INDEX  prescribe a singularity (repeatable); on a closed surface the\n"
-  "                            indices must sum to 0 (boundary windings absorb the sum otherwise)\n"
+  "                            indices must sum to 0 (boundary windings absorb the sum otherwise);\n"
+  "                            not in a face with an edge on the boundary (prescribe the winding\n"
+  "                            of that loop instead)\n"
   "  --winding LOOP:N          prescribe the winding of a loop (repeatable; others automatic)\n"
   "  --solver ldlt|cholmod     sparse solver (default ldlt)\n"
   "  --convention projected|angle_rescaled   how omega is computed from the field\n"
@@ -157,10 +159,22 @@ std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec)
                              : example::parse_double(rest.substr(colon + 1), "--field heat:VERTEX:DEGREES (DEGREES)");
     const Mesh::Vertex_index source_vertex(static_cast<std::uint32_t>(v));
     // the faces where a singularity centres the rings, spokes or spiral
+    // (a face with an edge on the boundary cannot hold one)
     std::cout << "faces around vertex " << v << ":";
+    std::string on_boundary;
     for(auto f : faces_around_target(halfedge(source_vertex, mesh), mesh))
       if(f != Mesh::null_face())
-        std::cout << ' ' << std::size_t(f);
+      {
+        bool boundary_edge = false;
+        for(auto h : halfedges_around_face(halfedge(f, mesh), mesh))
+          boundary_edge = boundary_edge || is_border(opposite(h, mesh), mesh);
+        if(boundary_edge)
+          on_boundary += ' ' + std::to_string(std::size_t(f));
+        else
+          std::cout << ' ' << std::size_t(f);
+      }
+    if(!on_boundary.empty())
+      std::cout << " (with an edge on the boundary, cannot hold a singularity:" << on_boundary << ")";
     std::cout << '\n';
     std::vector<double> distance_values(num_vertices(mesh), 0.);
     auto distance = CGAL::make_property_map(distance_values);

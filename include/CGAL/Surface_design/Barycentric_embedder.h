@@ -286,6 +286,14 @@ private:
   internal::Factored_system<Sparse_lu_solver_traits> m_lu;
 };
 
+/// Deduces the point map and solver types from the named parameters.
+template <class PolygonMesh, class FixedVertices, class NamedParameters>
+Barycentric_embedder(PolygonMesh&, const FixedVertices&, const NamedParameters&)
+  -> Barycentric_embedder<PolygonMesh, typename CGAL::GetVertexPointMap<PolygonMesh, NamedParameters>::type,
+                          internal::Solver_traits_t<NamedParameters>>;
+template <class PolygonMesh, class FixedVertices>
+Barycentric_embedder(PolygonMesh&, const FixedVertices&) -> Barycentric_embedder<PolygonMesh>;
+
 } // namespace Surface_design
 } // namespace CGAL
 

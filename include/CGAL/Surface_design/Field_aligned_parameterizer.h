@@ -89,6 +89,23 @@ enum class One_form_convention
 /// sum of its boundary windings (to 0 on a closed component). With automatic boundary windings
 /// the sum is met by construction; otherwise `solve()` throws `Invalid_constraints` with the sums.
 ///
+/// **No singularity in a face with an edge on the boundary.** Such a face f shares its border
+/// edge e with the virtual face of the boundary loop L. Index k in f with winding W of L is the
+/// same problem as index 0 in f with winding W - k and the target omega shifted by 2 pi k on e
+/// alone: adding -2 pi k to dalpha on e maps one feasible set onto the other with the same
+/// energy, and leaves alpha, known modulo 2 pi, unchanged. So the index is no property of the
+/// stripe function, only a phase jump of the target at one point of the boundary, and the
+/// optimum absorbs most of it there: it leaves about 2/3 of the 2 pi k on e (a vortex at the
+/// centroid of an equilateral boundary triangle and its mirror image across the free boundary
+/// send (2/pi) atan(sqrt 3) = 2/3 of its circulation along e in the continuum; 0.59-0.75 measured
+/// on well-shaped meshes), more than pi, so the wrapped alpha shows no singularity in f and
+/// winding W - k on L. A non-zero index in such a face is therefore refused
+/// (`Invalid_constraints`, by every setter): prescribe the winding of L instead. A face with
+/// vertices on the boundary but no edge there is accepted: the cheapest way to undo its index
+/// crosses an interior edge, so its index is a genuine vortex, and it reads back exactly wherever
+/// its edges carry |dalpha| < pi, like any face (with a smaller margin: on a regular mesh about
+/// 0.42 of the 2 pi runs along one of its edges, against 0.36 in the interior).
+///
 /// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
 /// \tparam VertexPointMap a readable property map from vertices to `Point_3` (default: the mesh's)
 /// \tparam SolverTraits a model of `SparseLinearAlgebraWithFactorTraits_d` (default
@@ -134,6 +151,12 @@ public:
                                        const NamedParameters& np = CGAL::parameters::default_values())
     : m_tm(tm), m_vpm(internal::class_vertex_point_map<VertexPointMap>(tm, np)), m_solver(make_solver(tm, m_vpm, np))
   {
+    const auto& loops = topology().boundary;
+    m_face_boundary_loop.assign(indices().number_of_faces(), internal::npos);
+    for(std::size_t h = 0; h < indices().number_of_halfedges(); ++h)
+      if(loops.loop_of_halfedge[h] != internal::npos) // a border halfedge: its opposite's face
+        m_face_boundary_loop[indices().index(face(opposite(indices().halfedge(h), m_tm), m_tm))] =
+          number_of_generator_loops() + loops.loop_of_halfedge[h];
     m_omega.assign(indices().number_of_edges(), 0.);
     m_index.assign(indices().number_of_faces(), 0);
     m_winding.assign(number_of_loops(), std::nullopt);
@@ -193,23 +216,44 @@ public:
 
   /// Index of the singularity prescribed in face `f` (0: no singularity).
   int index(face_descriptor f) const { return m_index[checked_face(f)]; }
-  /// Prescribes index `k` in face `f`. \throws Invalid_constraints if `f` is not a face of the mesh
-  void set_index(face_descriptor f, int k) { m_index[checked_face(f)] = k; }
+  /// Prescribes index `k` in face `f`.
+  /// \throws Invalid_constraints if `f` is not a face of the mesh, or if `k != 0` and `f` has an
+  ///         edge on the boundary (see the class documentation); the index is left unchanged then
+  void set_index(face_descriptor f, int k)
+  {
+    const std::size_t i = checked_face(f);
+    require_singularity_allowed(i, k);
+    m_index[i] = k;
+  }
   /// Same, with the face given by its index (the face index map's; for meshes read from a file,
   /// the input order).
-  void set_index(std::size_t face_index, int k) { m_index[checked_face_index(face_index)] = k; }
+  void set_index(std::size_t face_index, int k)
+  {
+    const std::size_t i = checked_face_index(face_index);
+    require_singularity_allowed(i, k);
+    m_index[i] = k;
+  }
   /// Reads all indices from a face -> integer map.
+  /// \throws Invalid_constraints if a face with an edge on the boundary gets a non-zero index
+  ///         (then no index is changed)
   template <class FaceIndexMap>
   void set_indices(const FaceIndexMap& k)
   {
-    for(std::size_t f = 0; f < indices().number_of_faces(); ++f)
-      m_index[f] = int(get(k, indices().face(f)));
+    std::vector<int> index(indices().number_of_faces());
+    for(std::size_t f = 0; f < index.size(); ++f)
+    {
+      index[f] = int(get(k, indices().face(f)));
+      require_singularity_allowed(f, index[f]);
+    }
+    m_index = std::move(index);
   }
+  /// Whether face `f` has an edge on the boundary, i.e. cannot hold a singularity.
+  bool has_boundary_edge(face_descriptor f) const { return m_face_boundary_loop[checked_face(f)] != internal::npos; }
   /// Removes every singularity.
   void clear_indices() { std::fill(m_index.begin(), m_index.end(), 0); }
   /// Moves the singularity of face `from` to face `to` (adding its index to that of `to`).
-  /// \throws Invalid_constraints if the faces are not faces of the mesh or lie on different
-  ///         connected components
+  /// \throws Invalid_constraints if the faces are not faces of the mesh, lie on different
+  ///         connected components, or `to` has an edge on the boundary; nothing changes then
   void move_singularity(face_descriptor from, face_descriptor to)
   {
     const std::size_t a = checked_face(from), b = checked_face(to);
@@ -218,6 +262,7 @@ public:
     if(topology().components.face_component[a] != topology().components.face_component[b])
       throw Invalid_constraints("cannot move a singularity from face " + std::to_string(a) +
                                 " to face " + std::to_string(b) + " of another connected component");
+    require_singularity_allowed(b, long(m_index[b]) + m_index[a]);
     m_index[b] += m_index[a];
     m_index[a] = 0;
   }
@@ -428,6 +473,23 @@ private:
     return f;
   }
 
+  // A face with an edge on the boundary cannot hold a singularity (see the class documentation).
+  void require_singularity_allowed(std::size_t f, long k) const
+  {
+    const std::size_t l = m_face_boundary_loop[f];
+    if(k == 0 || l == internal::npos)
+      return;
+    const std::string ls = std::to_string(l), n = std::to_string(k < 0 ? -k : k);
+    throw Invalid_constraints(
+      "face " + std::to_string(f) + " has an edge on boundary loop " + ls + ": it cannot hold a singularity. "
+      "Index " + std::to_string(k) + " there differs from index 0 with the winding of loop " + ls +
+      (k > 0 ? " lower" : " higher") + " by " + n + " only by 2 pi" + (n == "1" ? "" : " * " + n) +
+      " of dalpha on that boundary edge, which alpha, known modulo 2 pi, cannot show; the optimum leaves "
+      "about 2/3 of it on that edge, more than pi, so alpha would show no singularity in the face. "
+      "Prescribe the winding of loop " + ls + " instead, or choose a face with no edge on the boundary "
+      "(vertices on the boundary are fine)");
+  }
+
   std::size_t checked_loop(std::size_t l) const
   {
     if(l >= number_of_loops())
@@ -447,6 +509,7 @@ private:
   VertexPointMap m_vpm;
   Solver m_solver;
 
+  std::vector<std::size_t> m_face_boundary_loop; // per face: the loop of one of its border edges, or npos
   std::vector<double> m_omega;
   std::vector<int> m_index;
   std::vector<std::optional<int>> m_winding;

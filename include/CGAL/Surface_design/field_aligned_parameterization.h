@@ -34,7 +34,8 @@ namespace Surface_design {
 ///
 /// \param tm a triangle mesh (any number of connected components, with or without boundary)
 /// \param field a readable vertex -> `Vector_3` map (projected to the tangent planes)
-/// \param face_indices a readable face -> integer map
+/// \param face_indices a readable face -> integer map; 0 in every face with an edge on the
+///        boundary (such a face cannot hold a singularity: see `Field_aligned_parameterizer`)
 /// \param alpha a writable vertex -> double map (output)
 /// \param np optional named parameters among:
 /// - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
