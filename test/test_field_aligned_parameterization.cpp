@@ -726,3 +726,94 @@ TEMPLATE_TEST_CASE("Bad input throws and leaves the mesh and the outputs untouch
     CHECK_THROWS_AS(run(bowtie, kb), SD::Invalid_mesh);
   }
 }
+
+TEMPLATE_TEST_CASE("Out-of-range parameters are refused with Invalid_parameter; nothing changes", "[stripes]",
+                   SD_MESH_TYPES)
+{
+  using V = typename boost::graph_traits<TestType>::vertex_descriptor;
+  using F = typename boost::graph_traits<TestType>::face_descriptor;
+  namespace P = SD::parameters;
+  const TestType mesh = make_case<TestType>("bunny_1k.off");
+  Fap<TestType, SD::Default_solver_traits> fap(mesh);
+  fap.set_field(axis_field(mesh), 1.);
+  const std::vector<double> omega = fap.target_one_form();
+  auto refused = [&](auto&& call, const std::string& parameter) {
+    try
+    {
+      call();
+      FAIL("no exception for " << parameter);
+    }
+    catch(const SD::Invalid_parameter& e)
+    {
+      INFO(e.what());
+      CHECK(e.name() == parameter);
+    }
+    REQUIRE(fap.target_one_form() == omega); // unchanged
+  };
+  refused([&] { fap.set_field(axis_field(mesh), std::nan("")); }, "stripes_per_unit_length");
+  refused([&] { fap.set_field(axis_field(mesh), -3.); }, "stripes_per_unit_length");
+  refused([&] { fap.set_field(axis_field(mesh), std::numeric_limits<double>::infinity()); }, "stripes_per_unit_length");
+  const auto zero = boost::make_function_property_map<V>([](V) { return test::Kernel::Vector_3(0., 0., 0.); });
+  refused([&] { fap.set_field(zero, 2.); }, "field");
+  const auto nan_field = boost::make_function_property_map<V>([](V) { return test::Kernel::Vector_3(std::nan(""), 0., 0.); });
+  refused([&] { fap.set_field(nan_field, 2.); }, "field");
+  std::vector<double> bad = omega;
+  bad[7] = std::numeric_limits<double>::infinity();
+  refused([&] { fap.set_target_one_form_by_edge_index(bad); }, "omega");
+  // a zero field with scale 0 is legitimate: omega = 0, constant stripes
+  fap.set_field(zero, 0.);
+  fap.solve();
+  REQUIRE(fap.energy() == 0.);
+
+  CHECK_THROWS_AS((Fap<TestType, SD::Default_solver_traits>(mesh, P::weighting(SD::Edge_weighting::mean_value))),
+                  SD::Invalid_parameter);
+  std::map<F, int> k;
+  std::map<V, double> alpha;
+  CHECK_THROWS_AS(SD::field_aligned_parameterization(mesh, axis_field(mesh), boost::make_assoc_property_map(k),
+                                                     boost::make_assoc_property_map(alpha),
+                                                     P::stripes_per_unit_length(-1.)),
+                  SD::Invalid_parameter);
+  CHECK(alpha.empty());
+}
+
+TEMPLATE_TEST_CASE("Index maps given as named parameters number the faces and loops", "[stripes]", SD_MESH_TYPES)
+{
+  using F = typename boost::graph_traits<TestType>::face_descriptor;
+  using V = typename boost::graph_traits<TestType>::vertex_descriptor;
+  namespace P = SD::parameters;
+  const TestType mesh = make_case<TestType>("staggered torus");
+  // faces numbered backwards, vertices backwards
+  std::map<F, std::size_t> face_number;
+  std::map<V, std::size_t> vertex_number;
+  std::vector<F> face_of;
+  for(auto f : faces(mesh))
+    face_of.push_back(f);
+  for(std::size_t i = 0; i < face_of.size(); ++i)
+    face_number[face_of[i]] = face_of.size() - 1 - i;
+  std::size_t nv = num_vertices(mesh), i = 0;
+  for(auto v : vertices(mesh))
+    vertex_number[v] = nv - 1 - i++;
+  const auto np = P::face_index_map(boost::make_assoc_property_map(face_number))
+                    .vertex_index_map(boost::make_assoc_property_map(vertex_number));
+  SD::Field_aligned_parameterizer<TestType, test::Vpm<TestType>, SD::Default_solver_traits> renumbered(mesh, np);
+  Fap<TestType, SD::Default_solver_traits> plain(mesh);
+  REQUIRE(renumbered.indices().face(0) == face_of.back());
+  // face number f of the user's numbering is the descriptor face_of[n - 1 - f]
+  const std::size_t n = face_of.size(), f1 = 100, f2 = 700;
+  renumbered.set_index(f1, 1);
+  renumbered.set_index(f2, -1);
+  plain.set_index(face_of[n - 1 - f1], 1);
+  plain.set_index(face_of[n - 1 - f2], -1);
+  for(auto* fap : {&renumbered, &plain})
+  {
+    fap->set_field(axis_field(mesh), resolved_frequency(mesh));
+    fap->solve();
+  }
+  // the same problem: the same energy and the same stripes, whatever the numbering
+  REQUIRE(renumbered.energy() == Approx(plain.energy()).epsilon(1e-10));
+  for(auto v : vertices(mesh))
+    REQUIRE(std::abs(SDI::wrap_angle((renumbered.alpha(v) - renumbered.alpha(*vertices(mesh).begin())) -
+                                     (plain.alpha(v) - plain.alpha(*vertices(mesh).begin())))) <= 1e-8);
+  // messages name elements in the user's numbering
+  CHECK_THROWS_WITH(renumbered.set_index(n, 1), Catch::Contains("face " + std::to_string(n) + " does not exist"));
+}
