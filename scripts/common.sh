@@ -8,7 +8,7 @@ JOBS="${JOBS:-$(nproc)}"
 
 # The library's build and test dependencies.
 BUILD_PACKAGES=(g++ make cmake libcgal-dev libeigen3-dev libboost-graph-dev catch2
-                libsuitesparse-dev libopenblas-dev libmetis-dev ccache)
+                libsuitesparse-dev libopenblas-dev libmetis-dev libtbb-dev ccache)
 
 install_packages() {
   local missing=()
