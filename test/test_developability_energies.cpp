@@ -1261,12 +1261,17 @@ TEST_CASE("Timing of the energies on a 6k-vertex noisy sphere", "[.timing]")
   const Vecs x = positions(idx);
   const SDI::Vertex_stars stars = SDI::vertex_stars(idx, true, 4);
   std::cout << "timing on " << x.size() << " vertices, " << stars.active_vertices.size() << " active stars\n";
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::global_control two_threads(tbb::global_control::max_allowed_parallelism, 2);
+  REQUIRE(tbb::this_task_arena::max_concurrency() == 2);
+#endif
   for(Developability_energy e : all_energies)
   {
     Vecs gradient;
     auto time = [&](bool parallel) {
       const int repetitions = 10;
       double best = std::numeric_limits<double>::infinity();
+      SDI::developability_energy(stars, x, e, &gradient, nullptr, parallel); // warm-up
       for(int r = 0; r < repetitions; ++r)
       {
         const auto start = std::chrono::steady_clock::now();
@@ -1277,8 +1282,6 @@ TEST_CASE("Timing of the energies on a 6k-vertex noisy sphere", "[.timing]")
     };
     const double sequential = time(false);
 #ifdef CGAL_LINKED_WITH_TBB
-    tbb::global_control two_threads(tbb::global_control::max_allowed_parallelism, 2);
-    REQUIRE(tbb::this_task_arena::max_concurrency() == 2);
     const double parallel = time(true);
 #else
     const double parallel = std::nan("");
