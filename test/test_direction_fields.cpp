@@ -718,6 +718,90 @@ TEMPLATE_TEST_CASE("Trivial connections: re-solves, the one-call function, bad s
   REQUIRE_THROWS_WITH(two.solve(), Catch::Contains("at most 1 in magnitude"));
 }
 
+TEST_CASE("Trivial connections stay exact on scanned meshes: folded stars, adjustments of pi and more",
+          "[direction_fields]")
+{
+  using Mesh = test::Surface_mesh;
+  // The vector <-> angle conversion of the frames is a bijection at every vertex, also at the 22
+  // vertices of the triceratops whose projected star folds (it was off by up to pi there).
+  const Mesh tri = test::load_mesh<Mesh>("triceratops.off");
+  {
+    const SD::Trivial_connection<Mesh> probe(tri);
+    const SDI::Vertex_frames& fr = probe.connection().frames;
+    double error = 0.;
+    for(std::size_t v = 0; v < num_vertices(tri); ++v)
+      for(int i = 0; i < 720; ++i)
+      {
+        const double a = 2. * pi * (i + 0.5) / 720.;
+        error = (std::max)(error, std::abs(SDI::wrap_angle(fr.to_angle(v, fr.to_vector(v, a)) - a)));
+      }
+    REQUIRE(error < 1e-9);
+  }
+  // The written field has exactly the prescribed singularities at every global rotation (which
+  // sweeps the direction at every vertex), where the least-norm adjustment of some edges reaches
+  // pi or more: triceratops n = 4 (up to 3.97 rad), singular boundary faces of a hemisphere (3.31).
+  struct Case
+  {
+    std::string mesh;
+    int n;
+    std::vector<std::pair<std::size_t, int>> singularities;
+  };
+  const std::vector<Case> cases = {
+    {"triceratops.off", 1, {{0, 1}, {2455, 1}}},
+    {"triceratops.off", 2, {{0, 1}, {945, 1}, {2455, 1}, {5112, 1}}},
+    {"triceratops.off", 4, {{0, 1}, {287, 1}, {945, 1}, {2047, 1}, {2319, 1}, {2455, 1}, {4098, 1}, {5112, 1}}},
+    {"hemisphere.off", 1, {{0, 1}, {2226, 1}, {3805, -1}}},
+    {"hemisphere.off", 4, {{0, 1}, {2226, 1}, {3805, -1}}},
+  };
+  for(const Case& c : cases)
+  {
+    INFO(c.mesh << ", n = " << c.n);
+    const Mesh mesh = test::load_mesh<Mesh>(c.mesh);
+    SD::Trivial_connection<Mesh> tc(mesh, SD::parameters::symmetry_order(c.n));
+    std::map<Face<Mesh>, int> prescribed;
+    for(const auto& [f, k] : c.singularities)
+    {
+      tc.set_index(f, k);
+      prescribed[tc.indices().face(f)] = k;
+    }
+    tc.solve();
+    REQUIRE(tc.largest_adjustment() <= pi - 1e-3 + 1e-12);
+    // the corrected adjustment keeps the prescribed holonomy in every face
+    const std::vector<double> x = tc.adjustment();
+    const auto& idx = tc.indices();
+    for(auto f : faces(mesh))
+    {
+      double holonomy = c.n * tc.connection().curvature[idx.index(f)];
+      for(auto h : halfedges_around_face(halfedge(f, mesh), mesh))
+        holonomy += idx.orientation_sign(h) * x[idx.edge_index(h)];
+      const auto it = prescribed.find(f);
+      REQUIRE(std::abs(holonomy - 2. * pi * (it == prescribed.end() ? 0 : it->second)) < 1e-9);
+    }
+    for(int r = 0; r < 8; ++r)
+    {
+      INFO("rotation " << r);
+      tc.set_rotation(2. * pi * r / 8.);
+      Vector_map<Mesh> field;
+      tc.field(boost::make_assoc_property_map(field));
+      const auto index = indices_of(mesh, field, c.n);
+      std::size_t wrong = 0;
+      for(auto f : faces(mesh))
+      {
+        const auto it = prescribed.find(f);
+        wrong += index.at(f) != (it == prescribed.end() ? 0. : double(it->second) / c.n);
+      }
+      REQUIRE(wrong == 0);
+    }
+  }
+  // No vertex-based cross field on the kitten is free of singularities: around the 3 faces of a
+  // spike vertex (rescaled curvature 3.149 rad) it would turn by 4.01 pi along 3 edges.
+  const Mesh kitten = test::load_mesh<Mesh>("kitten.off");
+  SD::Trivial_connection<Mesh> cross(kitten, SD::parameters::symmetry_order(4));
+  REQUIRE_THROWS_WITH(cross.solve(), Catch::Contains("no vertex-based field has these singularities") &&
+                                       Catch::Contains("the 3 faces it encloses (139 137 140)") &&
+                                       Catch::Contains("1/4, 2/4 or 3/4 there would fit"));
+}
+
 TEMPLATE_TEST_CASE("Direction fields reject bad input and leave the mesh untouched", "[direction_fields]",
                    SD_MESH_TYPES)
 {

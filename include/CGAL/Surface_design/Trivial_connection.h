@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <deque>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -31,6 +32,103 @@
 
 namespace CGAL {
 namespace Surface_design {
+
+namespace internal {
+
+/// Vertex shifts that bound the edge rotations of a vertex field, see bound_edge_rotations().
+struct Edge_rotation_bound
+{
+  std::vector<double> u;          ///< per vertex index: the shift (0 where nothing needs to move)
+  std::vector<std::size_t> cycle; ///< empty if the bound is met; else the vertex indices of a closed
+                                  ///< path of the mesh along which it cannot be
+};
+
+/// Finds vertex shifts u with |x_e + u_j - u_i| <= bound on every edge e = (i, j), i < j, or a
+/// closed path along which no shifts can achieve it. These are difference constraints,
+/// u_j - u_i <= bound - x_e and u_i - u_j <= bound + x_e: with an arc i -> j of length bound - x_e
+/// and an arc j -> i of length bound + x_e, the shortest-path lengths u_v from a virtual source
+/// joined to every vertex by an arc of length 0 satisfy all of them (Bellman-Ford, queue-based).
+/// Only the arcs of edges with |x_e| > bound are negative, so u <= 0 is nonzero only around them.
+/// Shifts exist iff there is no negative cycle: no closed path of L edges along which the oriented
+/// x_e sum to more than L * bound in magnitude. A negative cycle shows as a cycle of the
+/// predecessor graph, searched for after every |V| relaxations (O(|V|) per search).
+template <class Indices>
+Edge_rotation_bound bound_edge_rotations(const Indices& idx, const std::vector<double>& x, double bound)
+{
+  const std::size_t nv = idx.number_of_vertices(), ne = idx.number_of_edges();
+  std::vector<std::size_t> begin(nv + 1, 0); // arcs in compressed rows by tail vertex
+  for(std::size_t e = 0; e < ne; ++e)
+  {
+    const auto ij = idx.edge_vertices(e);
+    ++begin[ij.first + 1];
+    ++begin[ij.second + 1];
+  }
+  for(std::size_t v = 0; v < nv; ++v)
+    begin[v + 1] += begin[v];
+  std::vector<std::pair<std::size_t, double>> arc(2 * ne); // (head, length)
+  std::vector<std::size_t> fill(begin.begin(), begin.end() - 1);
+  for(std::size_t e = 0; e < ne; ++e)
+  {
+    const auto ij = idx.edge_vertices(e);
+    arc[fill[ij.first]++] = {ij.second, bound - x[e]};
+    arc[fill[ij.second]++] = {ij.first, bound + x[e]};
+  }
+  // a cycle of the predecessor graph (walks marked by their start), or nothing
+  std::vector<std::size_t> pred(nv, npos), mark(nv, npos);
+  auto predecessor_cycle = [&]() {
+    std::fill(mark.begin(), mark.end(), npos);
+    for(std::size_t s = 0; s < nv; ++s)
+    {
+      std::size_t v = s;
+      while(v != npos && mark[v] == npos)
+      {
+        mark[v] = s;
+        v = pred[v];
+      }
+      if(v != npos && mark[v] == s) // back on this walk: a cycle through v
+      {
+        std::vector<std::size_t> cycle{v};
+        for(std::size_t w = pred[v]; w != v; w = pred[w])
+          cycle.push_back(w);
+        std::reverse(cycle.begin(), cycle.end()); // in the direction of the arcs
+        return cycle;
+      }
+    }
+    return std::vector<std::size_t>();
+  };
+
+  Edge_rotation_bound r;
+  r.u.assign(nv, 0.);
+  std::deque<std::size_t> queue;
+  std::vector<bool> queued(nv, true);
+  for(std::size_t v = 0; v < nv; ++v)
+    queue.push_back(v);
+  std::size_t relaxations = 0;
+  while(!queue.empty())
+  {
+    const std::size_t v = queue.front();
+    queue.pop_front();
+    queued[v] = false;
+    for(std::size_t a = begin[v]; a < begin[v + 1]; ++a)
+    {
+      const std::size_t w = arc[a].first;
+      if(!(r.u[v] + arc[a].second < r.u[w]))
+        continue;
+      r.u[w] = r.u[v] + arc[a].second;
+      pred[w] = v;
+      if(!queued[w])
+      {
+        queued[w] = true;
+        queue.push_back(w);
+      }
+      if(++relaxations % nv == 0 && !(r.cycle = predecessor_cycle()).empty())
+        return r;
+    }
+  }
+  return r;
+}
+
+} // namespace internal
 
 /// \ingroup PkgDirectionFieldsRef
 ///
@@ -56,6 +154,23 @@ namespace Surface_design {
 /// The pinned graph Laplacian is factored once; changing the singularities and solving again
 /// costs O(|E|) plus one back-substitution. The loop holonomies are chosen like the stripe
 /// windings: the integers of least adjustment norm (relaxed optimum, then best rounding).
+///
+/// **Exactness of the field.** The index that `direction_field_singularities()` finds in a face
+/// sums, over its edges, the field's turn relative to the transport taken in [-pi, pi): that is
+/// x_e only while |x_e| < pi. An edge with |x_e| >= pi (least-norm adjustments reach that next to
+/// singularities where the rescaled curvature is large, mostly for n = 4, and on the boundary
+/// edge of a singular boundary face) would show as a +1/-1 pair in its two faces, or lose the
+/// singularity of its one face: no field on the vertices can turn by pi or more along one edge.
+/// So when the least-norm adjustment has an |x_e| above pi - 10^-3, `solve()` adds to x a local
+/// correction that keeps every face holonomy and loop winding, the differential u_j - u_i of
+/// vertex shifts u, which rotates the field only at vertices near those edges (see
+/// `internal::bound_edge_rotations()`; x is then no longer least-norm there); `adjustment()`,
+/// `largest_adjustment()` (then at most pi - 10^-3) and `adjustment_norm2()` describe the
+/// corrected connection. Such shifts exist unless some closed path of L edges encloses a prescribed
+/// rotation (2 pi times the indices inside, minus n times the enclosed curvature) of L pi or more
+/// in magnitude, e.g. a single face f with |2 pi k_f - n K_f| >= 3 pi: then no vertex-based field
+/// with these singularities exists on this mesh, and `solve()` throws `Invalid_constraints`
+/// naming the path.
 ///
 /// **Consistency.** On a closed component the indices must sum to its Euler characteristic
 /// (Poincaré-Hopf); on a component with boundary any sum is allowed (the boundary holonomies
@@ -158,9 +273,10 @@ public:
   /// \throws Invalid_parameter if `angle` is not finite
   void set_rotation(double angle) { m_rotation = internal::require_finite("rotation", angle); }
 
-  /// Computes the connection and the field. O(|E|) plus one back-substitution.
+  /// Computes the connection and the field. O(|E|) plus one back-substitution (plus a local
+  /// correction where an adjustment would reach pi, see "Exactness of the field").
   /// \throws Invalid_constraints if the indices of a closed component do not sum to its Euler
-  /// characteristic
+  /// characteristic, or if no vertex-based field has these singularities on this mesh
   void solve()
   {
     for(std::size_t f = 0; f < m_index.size(); ++f)
@@ -190,6 +306,7 @@ public:
     for(std::size_t f = 0; f < k.size(); ++f)
       k[f] = m_index[f] + m_offset[f];
     typename Solver::Solution s = m_solver.solve(m_omega, k, std::vector<std::optional<int>>(m_solver.number_of_loops()));
+    bound_adjustment(s);
     std::vector<double> alpha = m_solver.integrate(s.y);
     for(double& a : alpha)
       a = internal::wrap_angle(a);
@@ -229,8 +346,8 @@ public:
       x[e] -= m_omega[e];
     return x;
   }
-  /// max_e |x_e|. Below pi, every face has exactly its prescribed index; above, the field's
-  /// detected singularities may differ (singularities too close together for the mesh).
+  /// max_e |x_e|: at most pi - 10^-3 after a successful `solve()`, so that every face has exactly
+  /// its prescribed index (see "Exactness of the field").
   double largest_adjustment() const
   {
     double m = 0.;
@@ -238,7 +355,8 @@ public:
       m = (std::max)(m, std::abs(x));
     return m;
   }
-  /// The least-squares norm sum_e x_e^2 that the solve minimized.
+  /// sum_e x_e^2: the least-squares norm that the solve minimized, or that of the corrected
+  /// adjustment when an |x_e| had to be brought below pi.
   double adjustment_norm2() const
   {
     require_solved();
@@ -269,6 +387,122 @@ private:
     const std::size_t ne = idx.number_of_edges();
     return Solver(std::move(idx), std::vector<double>(ne, 1.), internal::class_solver_traits<SolverTraits>(np),
                   "pinned graph Laplacian of the trivial connection");
+  }
+
+  // Largest |x_e| of the written field; some margin below pi, so that the field's rotation along
+  // every edge is still read as x_e (not x_e -+ 2 pi) after the round trip through 3D vectors.
+  static constexpr double rotation_margin = 1e-3;
+
+  // Brings every |x_e| = |y_e - omega_e| to at most pi - rotation_margin by adding the differential
+  // of vertex shifts (same face holonomies and loop windings, so the same singularities; see
+  // "Exactness of the field"), or throws. Leaves s untouched when the bound already holds.
+  void bound_adjustment(typename Solver::Solution& s) const
+  {
+    const auto& idx = m_solver.indices();
+    const double bound = internal::pi - rotation_margin;
+    std::vector<double> x(s.y.size());
+    bool within = true;
+    for(std::size_t e = 0; e < x.size(); ++e)
+    {
+      x[e] = s.y[e] - m_omega[e];
+      within = within && std::abs(x[e]) <= bound;
+    }
+    if(within)
+      return;
+    const internal::Edge_rotation_bound r = internal::bound_edge_rotations(idx, x, bound);
+    if(!r.cycle.empty())
+      throw Invalid_constraints(obstruction(r.cycle, x, bound));
+    const std::vector<double>& w = m_solver.weights();
+    s.energy = 0.;
+    for(std::size_t e = 0; e < x.size(); ++e)
+    {
+      const auto ij = idx.edge_vertices(e);
+      s.y[e] += r.u[ij.second] - r.u[ij.first];
+      s.energy += w[e] * (s.y[e] - m_omega[e]) * (s.y[e] - m_omega[e]);
+    }
+  }
+
+  // The message for a closed path of the mesh (vertex indices `cycle`) along which the edges would
+  // have to turn by more than `bound` each: the faces it encloses (the smaller side), their index
+  // sum and curvature, and the index sums that would fit.
+  std::string obstruction(const std::vector<std::size_t>& cycle, const std::vector<double>& x, double bound) const
+  {
+    const auto& idx = m_solver.indices();
+    const auto& tm = idx.mesh();
+    const std::size_t L = cycle.size();
+    std::vector<bool> on_path(idx.number_of_edges(), false);
+    std::size_t first = internal::npos; // a halfedge of the path
+    double turn = 0.;
+    for(std::size_t i = 0; i < L; ++i)
+      for(auto h : halfedges_around_source(idx.vertex(cycle[i]), tm))
+        if(idx.target_index(h) == cycle[(i + 1) % L])
+        {
+          on_path[idx.edge_index(h)] = true;
+          turn += idx.orientation_sign(h) * x[idx.edge_index(h)];
+          first = first == internal::npos ? idx.index(h) : first;
+          break;
+        }
+    // the faces on either side of the first path edge, reached without crossing the path; the
+    // smaller side is the region the path encloses if its boundary is the path alone
+    auto side = [&](auto h) {
+      std::vector<std::size_t> faces;
+      if(idx.is_border(h))
+        return faces;
+      std::vector<bool> seen(idx.number_of_faces(), false);
+      faces.push_back(idx.index(face(h, tm)));
+      seen[faces.back()] = true;
+      for(std::size_t i = 0; i < faces.size(); ++i)
+        for(auto g : halfedges_around_face(halfedge(idx.face(faces[i]), tm), tm))
+        {
+          const auto o = opposite(g, tm);
+          if(!on_path[idx.edge_index(g)] && !idx.is_border(o) && !seen[idx.index(face(o, tm))])
+          {
+            seen[idx.index(face(o, tm))] = true;
+            faces.push_back(idx.index(face(o, tm)));
+          }
+        }
+      return faces;
+    };
+    const auto h0 = idx.halfedge(first);
+    std::vector<std::size_t> inside = side(h0), outside = side(opposite(h0, tm));
+    if(inside.empty() || (!outside.empty() && outside.size() < inside.size()))
+      std::swap(inside, outside);
+    bool enclosed = outside.empty() || std::find(inside.begin(), inside.end(), outside.front()) == inside.end();
+    for(std::size_t i = 0; enclosed && i < inside.size(); ++i)
+      for(auto g : halfedges_around_face(halfedge(idx.face(inside[i]), tm), tm))
+        enclosed = enclosed && (!idx.is_border(opposite(g, tm)) || on_path[idx.edge_index(g)]);
+    std::ostringstream m;
+    m << "no vertex-based field has these singularities on this mesh: along every edge a field on the vertices "
+         "turns by less than pi relative to the transport, but along the closed path of "
+      << L << " edges through vertices";
+    for(std::size_t i = 0; i < L && i < 12; ++i)
+      m << ' ' << cycle[i];
+    m << (L > 12 ? " ..." : "") << " it would have to turn by " << std::abs(turn) << " rad (" << std::abs(turn) / internal::pi
+      << " pi)";
+    if(!enclosed)
+    {
+      m << "; choose other singularities or refine the mesh";
+      return m.str();
+    }
+    // Stokes: that turn is 2 pi (indices inside) - n (curvature inside)
+    long k = 0;
+    double curvature = 0.;
+    for(std::size_t f : inside)
+    {
+      k += m_index[f];
+      curvature += m_connection.curvature[f];
+    }
+    m << ": the " << inside.size() << " faces it encloses (";
+    for(std::size_t i = 0; i < inside.size() && i < 12; ++i)
+      m << (i ? " " : "") << inside[i];
+    m << (inside.size() > 12 ? " ..." : "") << ") have indices summing to " << index_text(k) << " and curvature "
+      << curvature << " rad; indices summing to";
+    const long lo = long(std::floor((m_n * curvature - L * bound) / internal::two_pi)) + 1;
+    const long hi = long(std::ceil((m_n * curvature + L * bound) / internal::two_pi)) - 1;
+    for(long j = lo; j <= hi; ++j) // at least one: the interval is 3 (pi - margin) / pi > 2 wide
+      m << (j > lo ? (j < hi ? "," : " or") : "") << ' ' << index_text(j);
+    m << " there would fit (balanced elsewhere); or refine the mesh there";
+    return m.str();
   }
 
   std::size_t checked_face(face_descriptor f) const
