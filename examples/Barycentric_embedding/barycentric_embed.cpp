@@ -10,8 +10,8 @@
 #include <CGAL/Surface_design/Barycentric_embedder.h>
 #include <CGAL/Surface_design/barycentric_embedding.h>
 
-#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
-
+#include <cctype>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -40,9 +40,10 @@ const char* usage =
 
 std::vector<Mesh::Vertex_index> read_fixed(const std::string& path, const Mesh& mesh)
 {
+  std::error_code ec;
   std::ifstream in(path);
-  if(!in)
-    throw std::runtime_error("cannot read " + path);
+  if(!in || std::filesystem::is_directory(path, ec))
+    throw example::Usage_error("--fixed: cannot read " + path);
   std::vector<Mesh::Vertex_index> fixed;
   std::string line;
   for(std::size_t number = 1; std::getline(in, line); ++number)
@@ -51,12 +52,18 @@ std::vector<Mesh::Vertex_index> read_fixed(const std::string& path, const Mesh& 
     std::string word;
     while(words >> word)
     {
-      const bool digits = word.size() < 10 && word.find_first_not_of("0123456789") == std::string::npos;
-      const std::size_t i = digits ? std::size_t(std::stoul(word)) : std::size_t(-1);
+      const bool digits = word.find_first_not_of("0123456789") == std::string::npos;
+      const std::size_t first = digits ? (std::min)(word.find_first_not_of('0'), word.size() - 1) : 0; // leading zeros
+      const std::size_t i = digits && word.size() - first < 10 ? std::size_t(std::stoul(word.substr(first))) : std::size_t(-1);
       if(i >= num_vertices(mesh))
-        throw example::Usage_error(path + ":" + std::to_string(number) + ": \"" + word +
-                                    "\" is not a vertex index (the mesh has " +
-                                    std::to_string(num_vertices(mesh)) + " vertices)");
+      {
+        std::string shown; // printable characters only
+        for(char c : word.substr(0, 40))
+          shown += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+        throw example::Usage_error(path + ":" + std::to_string(number) + ": \"" + shown +
+                                   "\" is not a vertex index (the mesh has " + std::to_string(num_vertices(mesh)) +
+                                   " vertices)");
+      }
       fixed.push_back(Mesh::Vertex_index(Mesh::size_type(i)));
     }
   }
@@ -76,44 +83,58 @@ std::size_t embed(Mesh& mesh, const std::vector<Mesh::Vertex_index>& fixed, SD::
 
 int main(int argc, char** argv)
 {
+  if(argc < 2)
+  {
+    std::cerr << usage;
+    return 1;
+  }
   try
   {
-    if(argc < 2)
-    {
-      std::cerr << usage;
-      return 1;
-    }
-    std::string input = argv[1], fixed_file, output, png, up = "+Y", solver = "ldlt";
+    std::string input, fixed_file, output, png, up = "+Y", solver = "ldlt";
     SD::Edge_weighting weighting = SD::Edge_weighting::uniform;
-    for(int i = 2; i < argc; ++i)
+    example::Once once;
+    for(int i = 1; i < argc; ++i)
     {
       const std::string a = argv[i];
       auto value = [&] { return example::option_value(argc, argv, i); };
+      if(!a.empty() && a[0] == '-')
+        once.check(a);
       if(a == "--fixed")
+      {
         fixed_file = value();
+        if(fixed_file.empty())
+          throw example::Usage_error("--fixed needs a file name");
+      }
       else if(a == "--output")
-        output = value();
+        example::check_output_path(output = value(), a, {".off", ".obj", ".ply", ".stl"});
       else if(a == "--picture")
-        png = value();
+        example::check_output_path(png = value(), a, {".png"});
       else if(a == "--up")
-        up = value();
+        up = example::parse_choice(value(), a, {"+X", "-X", "+Y", "-Y", "+Z", "-Z"});
       else if(a == "--solver")
-        solver = value();
+        solver = example::parse_choice(value(), a, {"ldlt", "cholmod"});
       else if(a == "--weights")
       {
-        const std::string w = value();
-        if(w == "uniform")
-          weighting = SD::Edge_weighting::uniform;
-        else if(w == "cotangent")
-          weighting = SD::Edge_weighting::cotangent;
-        else if(w == "mean-value")
-          weighting = SD::Edge_weighting::mean_value;
-        else
-          throw example::Usage_error("--weights is uniform, cotangent or mean-value, not " + w);
+        const std::string w = example::parse_choice(value(), a, {"uniform", "cotangent", "mean-value"});
+        weighting = w == "uniform" ? SD::Edge_weighting::uniform
+                    : w == "cotangent" ? SD::Edge_weighting::cotangent
+                                       : SD::Edge_weighting::mean_value;
       }
+      else if(!a.empty() && a[0] == '-')
+        throw example::Usage_error("unknown option " + a);
+      else if(input.empty())
+        input = a;
       else
-        throw example::Usage_error("unknown option " + a + "\n" + usage);
+        throw example::Usage_error("more than one input file: " + input + " and " + a);
     }
+    if(input.empty())
+      throw example::Usage_error("no input mesh");
+    if(png.empty() && once.contains("--up"))
+      throw example::Usage_error("--up applies to --picture");
+    example::check_distinct_paths({{"INPUT", input}, {"--fixed", fixed_file}, {"--output", output}, {"--picture", png},
+                                   {"the picture's surface file", png.empty() ? "" : png + ".vtk"}});
+    if(!png.empty())
+      example::require_picture_tools();
 
     Mesh mesh = example::read_mesh(input);
     const Mesh original = mesh;
@@ -132,17 +153,16 @@ int main(int argc, char** argv)
     example::Stopwatch clock;
     const std::size_t moved = example::with_solver(
       solver, [&](auto traits) { return embed<decltype(traits)>(mesh, fixed, weighting); });
-    std::cout << input << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh) << " faces; "
-              << moved << " free vertices moved to the barycentre of their neighbours ("
-              << SD::to_string(weighting) << " weights) in " << clock.lap() << " ms; area "
-              << example::surface_area(original) << " -> " << example::surface_area(mesh) << "\n";
+    const double area_before = example::surface_area(original), area_after = example::surface_area(mesh);
+    if(!std::isfinite(area_before) || !std::isfinite(area_after))
+      throw std::runtime_error("the surface area overflows (coordinates too large for double precision)");
+    std::cout << input << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh) << " faces; " << moved
+              << " free vertices moved to the barycentre of their neighbours (" << SD::to_string(weighting)
+              << " weights) in " << clock.lap() << " ms; area " << area_before << " -> " << area_after << "\n";
 
+    example::Output_files outputs;
     if(!output.empty())
-    {
-      if(!CGAL::IO::write_polygon_mesh(output, mesh, CGAL::parameters::stream_precision(17)))
-        throw std::runtime_error("cannot write " + output);
-      std::cout << "wrote " << output << "\n";
-    }
+      example::write_mesh(output, mesh, outputs);
     if(!png.empty())
     {
       std::vector<double> moved_by;
@@ -152,11 +172,15 @@ int main(int argc, char** argv)
         moved_by.push_back(std::sqrt(CGAL::squared_distance(mesh.point(v), original.point(v))));
         largest = (std::max)(largest, moved_by.back());
       }
-      const std::string vtk = png.substr(0, png.rfind('.')) + ".vtk";
-      if(example::picture(mesh, moved_by, "displacement", 0., largest > 0. ? largest : 1., vtk, png, up))
-        std::cout << "wrote " << png << "\n";
+      example::picture(mesh, moved_by, "displacement", 0., largest > 0. ? largest : 1., png, outputs, up);
     }
+    outputs.commit();
     return 0;
+  }
+  catch(const example::Usage_error& e)
+  {
+    std::cerr << "barycentric_embed: " << e.what() << "\n(run without arguments for the usage)\n";
+    return 1;
   }
   catch(const std::exception& e)
   {

@@ -11,6 +11,7 @@
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 
 #include <cstddef>
 #include <stdexcept>
@@ -19,11 +20,11 @@
 
 namespace example {
 
-/// Writes `vtk` (faces fanned into triangles, vertex normals, the scalar `values`) and renders it
-/// to `png` with f3d, coloured over [lo, hi]. Returns false (with a message) without f3d.
-inline bool picture(const Mesh& mesh, const std::vector<double>& values, const std::string& name,
-                    double lo, double hi, const std::string& vtk, const std::string& png,
-                    const std::string& up = "+Z")
+/// Writes `png` + ".vtk" (faces fanned into triangles, vertex normals, the scalar `values`) and
+/// renders it to `png` with f3d, coloured over [lo, hi], both through `outputs` (renamed when the
+/// whole run succeeded). \throws std::runtime_error if f3d cannot render
+inline void picture(const Mesh& mesh, const std::vector<double>& values, const std::string& name, double lo, double hi,
+                    const std::string& png, Output_files& outputs, const std::string& up = "+Z")
 {
   Vtk_surface s;
   s.scalar_name = name;
@@ -43,8 +44,9 @@ inline bool picture(const Mesh& mesh, const std::vector<double>& values, const s
     for(std::size_t k = 1; k + 1 < cycle.size(); ++k)
       s.triangles.push_back({cycle[0], cycle[k], cycle[k + 1]});
   }
+  const std::string vtk = outputs.stage(png + ".vtk");
   s.write(vtk);
-  return render_png(vtk, png, name, lo, hi, up);
+  render_png(vtk, outputs.stage(png), name, lo, hi, up);
 }
 
 /// Sum of the face areas (faces fanned into triangles).
@@ -60,6 +62,13 @@ inline double surface_area(const Mesh& mesh)
       area += std::sqrt(CGAL::squared_area(p[0], p[k], p[k + 1]));
   }
   return area;
+}
+
+/// Writes a polygon mesh (format by extension) through `outputs`.
+inline void write_mesh(const std::string& path, const Mesh& mesh, Output_files& outputs)
+{
+  if(!CGAL::IO::write_polygon_mesh(outputs.stage(path), mesh, CGAL::parameters::stream_precision(17)))
+    throw std::runtime_error("cannot write " + path);
 }
 
 /// Parses the whole of `text` as an integer >= 1.

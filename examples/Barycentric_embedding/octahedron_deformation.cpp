@@ -16,6 +16,7 @@
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -27,11 +28,12 @@ using example::Point;
 namespace {
 
 const char* usage =
-  "usage: octahedron_deformation [--m M] [--radius R] [--steps N] [--step D] [--out-dir DIR]\n"
+  "usage: octahedron_deformation --out-dir DIR [--m M] [--radius R] [--steps N] [--step D]\n"
   "                              [--no-iterative]\n"
   "  Table 2 / Fig. 6 of Imafuji & Ochiai: L1 and L2 move towards each other by D per step\n"
-  "  (defaults: m 6 as in Fig. 2, R 1, 10 steps of 0.3). Writes DIR/frame_XX.off and\n"
-  "  DIR/deformation_{0,5,10}.png (default DIR: .).\n";
+  "  (defaults: m 6 as in Fig. 2 (1..100), R 1 (at most 1.5), 10 steps of 0.3; steps times step\n"
+  "  at most 3: the loops meet at z = 0). Writes DIR/frame_XX.off and DIR/deformation_{0,5,10}.png\n"
+  "  (pictures with f3d).\n";
 
 } // namespace
 
@@ -41,30 +43,45 @@ int main(int argc, char** argv)
   {
     std::size_t m = 6, steps = 10;
     double radius = 1., step = 0.3;
-    std::string dir = ".";
+    std::string dir;
     bool iterative = true;
+    example::Once once;
     for(int i = 1; i < argc; ++i)
     {
       const std::string a = argv[i];
+      once.check(a);
       auto value = [&] { return example::option_value(argc, argv, i); };
       if(a == "--m")
-        m = example::parse_count(value(), a);
+        m = example::parse_count(value(), a, 100);
       else if(a == "--radius")
         radius = example::parse_double(value(), a);
       else if(a == "--steps")
-        steps = example::parse_count(value(), a);
+        steps = example::parse_count(value(), a, 1000);
       else if(a == "--step")
-        step = example::parse_double(value(), a);
+        step = example::parse_positive(value(), a);
       else if(a == "--out-dir")
         dir = value();
       else if(a == "--no-iterative")
         iterative = false;
       else
-      {
-        std::cerr << usage;
-        return 1;
-      }
+        throw example::Usage_error("unknown option " + a);
     }
+    if(dir.empty())
+      throw example::Usage_error("--out-dir DIR (an existing, writable folder for the frames) is required");
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if(!fs::is_directory(dir, ec) || access(dir.c_str(), W_OK) != 0)
+      throw example::Usage_error("--out-dir: \"" + dir + "\" is not an existing, writable folder");
+    // Larger loops fold the surface over a moving loop in the middle frames (first seen at
+    // R = 1.6 for m = 8, 12); the loops start at z = +-3 and meet at z = 0.
+    if(!(radius >= 3e-6 && radius <= 1.5))
+      throw example::Usage_error("--radius must lie in [3e-6, 1.5] (larger loops fold the surface while they move); got " +
+                                 example::text(radius));
+    if(double(steps) * step > 3. + 1e-12)
+      throw example::Usage_error("--steps times --step must be at most 3: L1 and L2 start at z = 3 and -3 and meet at "
+                                 "z = 0; got " + example::text(double(steps) * step));
+    if(iterative && m > 30)
+      throw example::Usage_error("the iterative comparison needs m <= 30 (its steps grow like m^4): give --no-iterative");
 
     Mesh mesh;
     const auto loops = SD::make_octahedron_membrane(mesh, m, radius);
@@ -89,19 +106,20 @@ int main(int argc, char** argv)
                 std::size_t(num_faces(mesh)), factor_ms);
     std::printf("frame  0: area %.6f\n", example::surface_area(mesh));
 
+    example::Output_files outputs;
+    const bool pictures = example::on_path("f3d") && (std::getenv("DISPLAY") != nullptr || example::on_path("xvfb-run"));
+    if(!pictures)
+      std::cout << "note: no pictures (they need f3d and xvfb: apt-get install f3d xvfb xauth)\n";
     auto write_frame = [&](std::size_t k) {
       char name[64];
       std::snprintf(name, sizeof name, "/frame_%02zu.off", k);
-      if(!CGAL::IO::write_polygon_mesh(dir + name, mesh, CGAL::parameters::stream_precision(17)))
-        throw std::runtime_error("cannot write " + dir + name);
-      if(k == 0 || 2 * k == steps || k == steps)
+      example::write_mesh(dir + name, mesh, outputs);
+      if(pictures && (k == 0 || 2 * k == steps || k == steps))
       {
         std::vector<double> height;
         for(auto v : vertices(mesh))
           height.push_back(mesh.point(v).z());
-        const std::string base = dir + "/deformation_" + std::to_string(k);
-        if(example::picture(mesh, height, "z", -3., 3., base + ".vtk", base + ".png"))
-          std::cerr << "wrote " << base << ".png\n";
+        example::picture(mesh, height, "z", -3., 3., dir + "/deformation_" + std::to_string(k) + ".png", outputs);
       }
     };
     write_frame(0);
@@ -138,7 +156,13 @@ int main(int argc, char** argv)
       std::printf("iterative: %zu steps in all, %.3f ms (%.1f x the direct total); max distance "
                   "to the direct frames %.3g\n",
                   iterations, iterative_ms, iterative_ms / (factor_ms + update_ms), worst_gap);
+    outputs.commit();
     return 0;
+  }
+  catch(const example::Usage_error& e)
+  {
+    std::cerr << "octahedron_deformation: " << e.what() << "\n\n" << usage;
+    return 1;
   }
   catch(const std::exception& e)
   {

@@ -12,8 +12,6 @@
 #include <CGAL/Surface_design/mesh_generators.h>
 #include <CGAL/Surface_design/octahedron_membrane.h>
 
-#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
-
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -26,6 +24,7 @@ namespace {
 
 const char* usage =
   "usage: octahedron_membrane --m M --radius R [options]\n"
+  "  M: segments per hexagon side, 1..100; R: radius of the loops, in [3e-6, 3)\n"
   "  The octahedron surface of Imafuji & Ochiai: 6 circular loops of radius R in the planes\n"
   "  z = 3, z = -3, x = 3, y = 3, x = -3, y = -3 (centred on the axes), 8 hexagons with M\n"
   "  segments per side; the loops are fixed, the other vertices at the barycentre of their\n"
@@ -35,13 +34,18 @@ const char* usage =
   "                            octahedron's lattice points projected radially on the circle\n"
   "  --iterative               also run the paper's iterative method 2 (until the area changes\n"
   "                            by < 1e-6) from the flat starting positions; prints its steps\n"
-  "  --output OUT.off          write the surface (any format CGAL writes: .off, .ply, .obj...)\n"
+  "  --output OUT.off          write the surface (.off, .obj, .ply, .stl)\n"
   "  --picture OUT.png         picture of the surface, rendered with f3d\n";
 
 } // namespace
 
 int main(int argc, char** argv)
 {
+  if(argc < 2)
+  {
+    std::cerr << usage;
+    return 1;
+  }
   try
   {
     std::size_t m = 0;
@@ -49,36 +53,44 @@ int main(int argc, char** argv)
     bool iterative = false;
     std::string output, png;
     SD::Octahedron_loop_placement placement = SD::Octahedron_loop_placement::equal_angles;
+    example::Once once;
     for(int i = 1; i < argc; ++i)
     {
       const std::string a = argv[i];
+      once.check(a);
       auto value = [&] { return example::option_value(argc, argv, i); };
       if(a == "--m")
-        m = example::parse_count(value(), a);
+        m = example::parse_count(value(), a, 100);
       else if(a == "--radius")
         radius = example::parse_double(value(), a);
       else if(a == "--output")
-        output = value();
+        example::check_output_path(output = value(), a, {".off", ".obj", ".ply", ".stl"});
       else if(a == "--picture")
-        png = value();
+        example::check_output_path(png = value(), a, {".png"});
       else if(a == "--iterative")
         iterative = true;
       else if(a == "--placement")
-      {
-        const std::string p = value();
-        if(p != "equal" && p != "radial")
-          throw example::Usage_error("--placement is equal or radial, not " + p);
-        placement = p == "equal" ? SD::Octahedron_loop_placement::equal_angles
-                                 : SD::Octahedron_loop_placement::radial_projection;
-      }
+        placement = example::parse_choice(value(), a, {"equal", "radial"}) == "equal"
+                      ? SD::Octahedron_loop_placement::equal_angles
+                      : SD::Octahedron_loop_placement::radial_projection;
       else
         throw example::Usage_error("unknown option " + a);
     }
-    if(m == 0 || !(radius > 0.))
-    {
-      std::cerr << usage;
-      return 1;
-    }
+    if(m == 0)
+      throw example::Usage_error("--m M (segments per hexagon side, 1..100) is required");
+    if(!once.contains("--radius"))
+      throw example::Usage_error("--radius R is required");
+    // the loops lie in the planes at distance 3: two of them meet when R >= 3 (a loop leaves its
+    // face of the cube [-3, 3]^3 and cuts its neighbours), and below 1e-6 the triangles at the
+    // loops are numerically degenerate
+    if(!(radius >= 3e-6 && radius < 3.))
+      throw example::Usage_error("--radius must lie in [3e-6, 3): the loops lie in the planes at distance 3 and "
+                                 "would meet at R >= 3; got " + example::text(radius));
+    if(iterative && m > 30)
+      throw example::Usage_error("--iterative needs m <= 30 (its steps grow like m^4); got " + std::to_string(m));
+    example::check_distinct_paths({{"--output", output}, {"--picture", png}, {"the picture's surface file", png.empty() ? "" : png + ".vtk"}});
+    if(!png.empty())
+      example::require_picture_tools();
 
     Mesh mesh;
     const auto loops = SD::make_octahedron_membrane(mesh, m, radius, 3., placement);
@@ -102,22 +114,30 @@ int main(int argc, char** argv)
       double gap = 0.;
       for(auto v : vertices(mesh))
         gap = (std::max)(gap, std::sqrt(CGAL::squared_distance(mesh.point(v), flat.point(v))));
-      std::printf("iterative iterations %zu area %.6f max-distance-to-direct %.3g%s\n", r.iterations,
-                  r.area, gap, r.converged ? "" : " (not converged)");
+      // the paper's criterion (the area changes by < 1e-6 in one step) can stop the Jacobi
+      // iteration far from its limit on fine meshes: say so
+      std::printf("iterative iterations %zu area %.6f max-distance-to-direct %.3g%s\n", r.iterations, r.area, gap,
+                  !r.converged ? " (not converged)"
+                               : gap > 1e-3 * radius ? " (stopped by the area criterion far from the limit)" : "");
       std::fprintf(stderr, "iterative: %.3f ms (%.1f x the direct solve)\n", ms, ms / direct_ms);
     }
-    if(!output.empty() && !CGAL::IO::write_polygon_mesh(output, mesh, CGAL::parameters::stream_precision(17)))
-      throw std::runtime_error("cannot write " + output);
+    example::Output_files outputs;
+    if(!output.empty())
+      example::write_mesh(output, mesh, outputs);
     if(!png.empty())
     {
       std::vector<double> height;
       for(auto v : vertices(mesh))
         height.push_back(mesh.point(v).z());
-      const std::string vtk = png.substr(0, png.rfind('.')) + ".vtk";
-      if(example::picture(mesh, height, "z", -3., 3., vtk, png))
-        std::cerr << "wrote " << png << "\n";
+      example::picture(mesh, height, "z", -3., 3., png, outputs);
     }
+    outputs.commit();
     return 0;
+  }
+  catch(const example::Usage_error& e)
+  {
+    std::cerr << "octahedron_membrane: " << e.what() << "\n(run without arguments for the usage)\n";
+    return 1;
   }
   catch(const std::exception& e)
   {

@@ -12,6 +12,7 @@
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <map>
@@ -57,27 +58,21 @@ struct Options
 Options parse(int argc, char** argv)
 {
   Options o;
-  bool method_given = false, n_given = false;
+  example::Once once;
+  bool method_given = false, up_given = false;
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
     auto next = [&]() { return example::option_value(argc, argv, i); };
+    if(a != "--singularity" && !a.empty() && a[0] == '-')
+      once.check(a);
     if(a == "--method")
     {
-      const std::string m = example::parse_choice(next(), a, {"smoothest", "trivial"});
-      if(method_given && m != o.method)
-        throw example::Usage_error("--method is given twice with different values");
-      o.method = m;
+      o.method = example::parse_choice(next(), a, {"smoothest", "trivial"});
       method_given = true;
     }
     else if(a == "--n")
-    {
-      const int n = int(example::parse_integer(next(), a, 1, 64));
-      if(n_given && n != o.n)
-        throw example::Usage_error("--n is given twice with different values");
-      o.n = n;
-      n_given = true;
-    }
+      o.n = int(example::parse_integer(next(), a, 1, 64));
     else if(a == "--singularity")
     {
       const auto [f, k] = example::parse_pair(next(), "--singularity FACE:INDEX");
@@ -85,7 +80,8 @@ Options parse(int argc, char** argv)
         throw example::Usage_error("face numbers start at 0");
       if(k == 0)
         throw example::Usage_error("--singularity " + std::to_string(f) + ":0 prescribes nothing");
-      o.singularities[std::size_t(f)] += int(k);
+      if(!o.singularities.emplace(std::size_t(f), int(k)).second)
+        throw example::Usage_error("--singularity: face " + std::to_string(f) + " is given more than once");
     }
     else if(a == "--curvature-weight")
       o.curvature_weight = example::parse_double(next(), a, 0., 1e12);
@@ -98,7 +94,10 @@ Options parse(int argc, char** argv)
     else if(a == "--picture")
       example::check_output_path(o.picture = next(), a, {".png"});
     else if(a == "--up")
+    {
       o.up = example::parse_choice(next(), a, {"+X", "-X", "+Y", "-Y", "+Z", "-Z"});
+      up_given = true;
+    }
     else if(!a.empty() && a[0] == '-')
       throw example::Usage_error("unknown option " + a);
     else if(o.input.empty())
@@ -116,6 +115,12 @@ Options parse(int argc, char** argv)
     throw example::Usage_error("--singularity needs --method trivial (smoothest fields place their own)");
   if(o.method == "trivial" && (o.curvature_weight != 0. || o.boundary != "free"))
     throw example::Usage_error("--curvature-weight and --boundary apply to --method smoothest");
+  if(o.picture.empty() && up_given)
+    throw example::Usage_error("--up applies to --picture");
+  example::check_distinct_paths({{"INPUT", o.input}, {"--output", o.output}, {"--picture", o.picture},
+                                 {"the picture's surface file", o.picture.empty() ? "" : o.picture + ".vtk"}});
+  if(!o.picture.empty())
+    example::require_picture_tools();
   return o;
 }
 
@@ -129,7 +134,7 @@ SD::Direction_field_boundary boundary_condition(const std::string& b)
 // Glyphs of an n-direction field, one per face (every stride-th face on big meshes), over the
 // surface; scalar 0 surface, 1 glyphs, 2 / 3 faces of positive / negative index.
 void write_picture(const Mesh& mesh, const std::vector<Vector>& field, const std::vector<int>& index, int n,
-                   const Options& o)
+                   const Options& o, example::Output_files& outputs)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   auto eigen = [](const Vector& x) { return Eigen::Vector3d(x.x(), x.y(), x.z()); };
@@ -214,12 +219,11 @@ void write_picture(const Mesh& mesh, const std::vector<Vector>& field, const std
       }
     }
   }
-  const std::string vtk_path = o.picture + ".vtk";
+  const std::string vtk_path = outputs.stage(o.picture + ".vtk");
   vtk.write(vtk_path);
   // colours: light surface, dark glyphs, red / blue singular faces
   const std::string colormap = "0,0.93,0.9,0.84,0.333,0.12,0.16,0.3,0.667,0.85,0.15,0.1,1,0.15,0.35,0.85";
-  if(example::render_png(vtk_path, o.picture, "field", 0., 3., o.up, colormap))
-    std::cout << "wrote " << o.picture << " (surface in " << vtk_path << ")\n";
+  example::render_png(vtk_path, outputs.stage(o.picture), "field", 0., 3., o.up, colormap);
 }
 
 template <class Solver>
@@ -233,6 +237,9 @@ int run(const Options& o)
   auto field_map = CGAL::make_property_map(field);
   if(o.method == "smoothest")
   {
+    if(o.boundary != "free" && std::none_of(halfedges(mesh).begin(), halfedges(mesh).end(),
+                                            [&mesh](auto h) { return is_border(h, mesh); }))
+      std::cout << "note: --boundary " << o.boundary << " has no effect: the mesh has no boundary\n";
     const auto info = SD::smoothest_direction_field(
       mesh, field_map,
       SD::parameters::symmetry_order(
@@ -290,10 +297,11 @@ int run(const Options& o)
     numerator.values.push_back(k);
     value.values.push_back(double(k) / o.n);
   }
-  example::write_ply(o.output, mesh, {fx, fy, fz}, {value, numerator});
-  std::cout << "wrote " << o.output << '\n';
+  example::Output_files outputs;
+  example::write_ply(outputs.stage(o.output), mesh, {fx, fy, fz}, {value, numerator});
   if(!o.picture.empty())
-    write_picture(mesh, field, index, o.n, o);
+    write_picture(mesh, field, index, o.n, o, outputs);
+  outputs.commit();
   std::cout << "total " << total.lap() << " ms\n";
   return 0;
 }

@@ -13,6 +13,7 @@
 
 #include <CGAL/Heat_method_3/Surface_mesh_geodesic_distances_3.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 
 #include <cmath>
 #include <iostream>
@@ -69,10 +70,14 @@ using example::parse_pair;
 Options parse(int argc, char** argv)
 {
   Options o;
+  example::Once once;
+  bool up_given = false;
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
     auto next = [&]() { return example::option_value(argc, argv, i); };
+    if(a != "--singularity" && a != "--winding" && !a.empty() && a[0] == '-')
+      once.check(a);
     if(a == "--field")
       o.field = next();
     else if(a == "--scale")
@@ -84,6 +89,9 @@ Options parse(int argc, char** argv)
         throw example::Usage_error("face numbers start at 0");
       if(k == 0)
         throw example::Usage_error("--singularity " + std::to_string(f) + ":0 prescribes nothing");
+      for(const auto& [g, l] : o.singularities)
+        if(g == std::size_t(f))
+          throw example::Usage_error("--singularity: face " + std::to_string(f) + " is given more than once");
       o.singularities.emplace_back(std::size_t(f), int(k));
     }
     else if(a == "--winding")
@@ -91,8 +99,8 @@ Options parse(int argc, char** argv)
       const auto [l, n] = parse_pair(next(), "--winding LOOP:N");
       if(l < 0)
         throw example::Usage_error("loop numbers start at 0");
-      if(o.windings.count(std::size_t(l)) && o.windings[std::size_t(l)] != int(n))
-        throw example::Usage_error("--winding " + std::to_string(l) + " is given twice with different values");
+      if(o.windings.count(std::size_t(l)))
+        throw example::Usage_error("--winding: loop " + std::to_string(l) + " is given more than once");
       o.windings[std::size_t(l)] = int(n);
     }
     else if(a == "--solver")
@@ -106,7 +114,10 @@ Options parse(int argc, char** argv)
     else if(a == "--picture")
       example::check_output_path(o.picture = next(), a, {".png"});
     else if(a == "--up")
+    {
       o.up = example::parse_choice(next(), a, {"+X", "-X", "+Y", "-Y", "+Z", "-Z"});
+      up_given = true;
+    }
     else if(!a.empty() && a[0] == '-')
       throw example::Usage_error("unknown option " + a);
     else if(o.input.empty())
@@ -116,7 +127,30 @@ Options parse(int argc, char** argv)
   }
   if(o.input.empty())
     throw example::Usage_error("no input mesh");
+  if(o.picture.empty() && up_given)
+    throw example::Usage_error("--up applies to --picture");
+  example::check_distinct_paths({{"INPUT", o.input}, {"--output", o.output}, {"--picture", o.picture},
+                                 {"the picture's surface file", o.picture.empty() ? "" : o.picture + ".vtk"}});
+  if(!o.picture.empty())
+    example::require_picture_tools();
   return o;
+}
+
+// The items of a comma-separated list; an empty item (e.g. a trailing comma) is an error.
+std::vector<std::string> split_list(const std::string& list, const std::string& what)
+{
+  std::vector<std::string> items;
+  std::size_t start = 0;
+  while(true)
+  {
+    const std::size_t comma = list.find(',', start);
+    items.push_back(list.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if(items.back().empty())
+      throw example::Usage_error("expected " + what + " (no empty item), got '" + list + "'");
+    if(comma == std::string::npos)
+      return items;
+    start = comma + 1;
+  }
 }
 
 Eigen::Vector3d eigen(const Point& p) { return Eigen::Vector3d(p.x(), p.y(), p.z()); }
@@ -138,15 +172,16 @@ std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec)
 {
   if(spec.rfind("axis:", 0) == 0)
   {
-    std::stringstream list(spec.substr(5));
     std::vector<double> xyz;
-    for(std::string item; std::getline(list, item, ',');)
+    for(const std::string& item : split_list(spec.substr(5), "--field axis:X,Y,Z"))
       xyz.push_back(example::parse_double(item, "--field axis:X,Y,Z"));
     if(xyz.size() != 3)
       throw example::Usage_error("expected --field axis:X,Y,Z, got " + spec);
-    if(xyz[0] == 0. && xyz[1] == 0. && xyz[2] == 0.)
+    const double largest = (std::max)({std::abs(xyz[0]), std::abs(xyz[1]), std::abs(xyz[2])});
+    if(largest == 0.)
       throw example::Usage_error("--field axis:0,0,0 has no direction");
-    return std::vector<Vector>(num_vertices(mesh), Vector(xyz[0], xyz[1], xyz[2]));
+    // only the direction matters: scaled to a largest coordinate of 1, so that no square overflows
+    return std::vector<Vector>(num_vertices(mesh), Vector(xyz[0] / largest, xyz[1] / largest, xyz[2] / largest));
   }
   if(spec.rfind("heat:", 0) == 0)
   {
@@ -156,7 +191,12 @@ std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec)
                                           long(num_vertices(mesh)) - 1);
     const double degrees = colon == std::string::npos
                              ? 0.
-                             : example::parse_double(rest.substr(colon + 1), "--field heat:VERTEX:DEGREES (DEGREES)");
+                             : example::parse_double(rest.substr(colon + 1), "--field heat:VERTEX:DEGREES (DEGREES)",
+                                                     -360., 360.);
+    std::map<Mesh::Face_index, std::size_t> component;
+    if(CGAL::Polygon_mesh_processing::connected_components(mesh, boost::make_assoc_property_map(component)) > 1)
+      throw example::Usage_error("--field heat:V covers only the connected component of vertex V, and this mesh has "
+                                 "several: use --field axis, smoothest or trivial");
     const Mesh::Vertex_index source_vertex(static_cast<std::uint32_t>(v));
     // the faces where a singularity centres the rings, spokes or spiral
     // (a face with an edge on the boundary cannot hold one)
@@ -227,14 +267,16 @@ std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec)
   {
     // trivial:FACE:INDEX,FACE:INDEX,...
     SD::Trivial_connection tc(mesh);
-    std::map<std::size_t, int> indices; // repeated faces add up
-    std::stringstream list(spec.substr(8));
-    for(std::string item; std::getline(list, item, ',');)
+    std::map<std::size_t, int> indices;
+    for(const std::string& item : split_list(spec.substr(8), "--field trivial:FACE:INDEX,FACE:INDEX,..."))
     {
       const auto [f, k] = parse_pair(item, "--field trivial:FACE:INDEX,FACE:INDEX,...");
       if(f < 0)
         throw example::Usage_error("face numbers start at 0");
-      indices[std::size_t(f)] += int(k);
+      if(k == 0)
+        throw example::Usage_error("--field trivial: index 0 at face " + std::to_string(f) + " prescribes nothing");
+      if(!indices.emplace(std::size_t(f), int(k)).second)
+        throw example::Usage_error("--field trivial: face " + std::to_string(f) + " is given more than once");
     }
     for(const auto& [f, k] : indices)
       tc.set_index(f, k);
@@ -268,23 +310,46 @@ int run(const Options& o)
     box += p.bbox();
   const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
                                     CGAL::square(box.zmax() - box.zmin()));
-  const double scale = o.scale ? *o.scale : 10. / diagonal;
+  double mean_edge = 0.;
+  for(auto e : edges(mesh))
+    mean_edge += std::sqrt(CGAL::squared_distance(mesh.point(source(halfedge(e, mesh), mesh)),
+                                                  mesh.point(target(halfedge(e, mesh), mesh)))) / double(num_edges(mesh));
+  // The stripes must be resolved: alpha advances by 2 pi s l along an edge of length l, which
+  // must stay well below pi. The default is 10 stripes across the bounding box, or fewer, so
+  // that an average edge carries at most 1/10 of a stripe.
+  const double resolved = 0.5 / mean_edge; // one stripe per two average edges: the Nyquist limit
+  const double scale = o.scale ? *o.scale : (std::min)(10. / diagonal, 0.1 / mean_edge);
+  if(scale >= resolved)
+    throw example::Usage_error("--scale " + example::text(scale) + ": the mesh cannot resolve that many stripes (its "
+                               "average edge would carry " + example::text(scale * mean_edge) +
+                               " stripes; the limit is 0.5; keep below " + example::text(0.15 / mean_edge) +
+                               " for clean stripes)");
+  if(scale * diagonal < 1e-6)
+    throw example::Usage_error("--scale " + example::text(scale) + " gives no visible stripe on a mesh of diagonal " +
+                               example::text(diagonal));
   fap.set_field(CGAL::make_property_map(field), scale, o.convention);
   std::cout << "field " << o.field << ", " << scale << " stripes per unit length: " << clock.lap() << " ms\n";
 
-  std::map<std::size_t, int> indices; // repeated faces add up
   for(const auto& [f, k] : o.singularities)
-    indices[f] += k;
-  for(const auto& [f, k] : indices)
     fap.set_index(f, k);
   for(const auto& [l, n] : o.windings)
-    fap.set_loop_winding(l, n);
+  {
+    fap.set_loop_winding(l, n); // checks that the loop exists
+    const std::size_t length = fap.loop(l).size();
+    if(2 * std::size_t(std::abs(n)) >= length)
+      throw example::Usage_error("--winding " + std::to_string(l) + ":" + std::to_string(n) + ": loop " + std::to_string(l) +
+                                 " has " + std::to_string(length) + " edges, which can carry at most " +
+                                 std::to_string((length - 1) / 2) + " turns of alpha (less than pi per edge)");
+  }
   fap.solve();
   std::cout << "solve: " << clock.lap() << " ms (energy " << fap.energy() << ")\n";
   for(std::size_t l = 0; l < fap.number_of_loops(); ++l)
     std::cout << "  loop " << l << (fap.is_boundary_loop(l) ? " (boundary)" : " (generator)") << ": "
               << fap.loop(l).size() << " edges, winding " << fap.loop_winding(l)
               << (o.windings.count(l) ? " (prescribed)" : " (automatic)") << '\n';
+  if(o.field.rfind("heat:", 0) == 0 && o.field.find(':', 5) != std::string::npos && o.singularities.empty())
+    std::cout << "note: spokes and spirals turn around vertex V: without a --singularity in a face next to V "
+                 "the stripes bend around it instead\n";
 
   // detected singularities of alpha
   auto alpha = mesh.add_property_map<Mesh::Vertex_index, double>("v:alpha", 0.).first;
@@ -304,6 +369,7 @@ int run(const Options& o)
       break;
     }
 
+  example::Output_files outputs;
   if(!o.output.empty())
   {
     std::vector<std::array<std::size_t, 2>> edge_vertices;
@@ -320,8 +386,7 @@ int run(const Options& o)
       alpha_prop.values.push_back(alpha[v]);
     for(auto f : faces(mesh))
       index_prop.values.push_back(detected[f]);
-    example::write_ply(o.output, mesh, {alpha_prop}, {index_prop}, edge_vertices, {omega, dalpha});
-    std::cout << "wrote " << o.output << " (" << clock.lap() << " ms)\n";
+    example::write_ply(outputs.stage(o.output), mesh, {alpha_prop}, {index_prop}, edge_vertices, {omega, dalpha});
   }
 
   if(!o.picture.empty())
@@ -372,11 +437,11 @@ int run(const Options& o)
             vtk.triangles.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
         }
     }
-    const std::string vtk_path = o.picture + ".vtk";
+    const std::string vtk_path = outputs.stage(o.picture + ".vtk");
     vtk.write(vtk_path);
-    if(example::render_png(vtk_path, o.picture, "stripes", -1., 1., o.up))
-      std::cout << "wrote " << o.picture << " (" << clock.lap() << " ms; surface in " << vtk_path << ")\n";
+    example::render_png(vtk_path, outputs.stage(o.picture), "stripes", -1., 1., o.up);
   }
+  outputs.commit();
   std::cout << "total " << total.lap() << " ms\n";
   return 0;
 }

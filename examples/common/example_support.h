@@ -1,8 +1,9 @@
 // Copyright (c) 2026 The CGAL Surface Design authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Helpers shared by the example programs: reading a mesh in input order, writing PLY with extra
-// properties, writing a legacy VTK file, rendering it to PNG with f3d, timing.
+// Helpers shared by the example programs: strict option parsing, reading a mesh in input order,
+// writing PLY with extra properties and legacy VTK, rendering to PNG with f3d (no shell), and
+// all-or-nothing outputs (written under temporary names, renamed when everything succeeded).
 
 #ifndef CGAL_SURFACE_DESIGN_EXAMPLE_SUPPORT_H
 #define CGAL_SURFACE_DESIGN_EXAMPLE_SUPPORT_H
@@ -13,13 +14,20 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_design/solver_traits.h>
 
+#include <fcntl.h>
+#include <spawn.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <array>
-#include <cmath>
-#include <limits>
+#include <cerrno>
 #include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <regex>
+#include <set>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -54,7 +62,9 @@ inline Mesh read_mesh(const std::string& path)
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> polygons;
   if(!CGAL::IO::read_polygon_soup(path, points, polygons))
-    throw std::runtime_error("cannot read " + path + " (unknown format or unreadable file)");
+    throw std::runtime_error("cannot read " + path + ": not a readable mesh file (missing or unreadable file, unknown "
+                             "extension, non-numeric or non-finite coordinates, or a face with an invalid vertex "
+                             "index)");
   if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
     throw std::runtime_error(path + " is not a manifold, consistently oriented polygon mesh; "
                                     "repair it first (e.g. CGAL::Polygon_mesh_processing::repair_polygon_soup "
@@ -96,6 +106,15 @@ decltype(auto) with_solver(const std::string& name, F&& f)
   throw Usage_error("unknown or unavailable solver \"" + name + "\" (ldlt, or cholmod when built with CHOLMOD)");
 }
 
+/// `x` with 4 significant digits (for messages).
+inline std::string text(double x)
+{
+  std::ostringstream s;
+  s.precision(4);
+  s << x;
+  return s.str();
+}
+
 /// The value of option argv[i] (argv[i + 1]), advancing i; throws if it is missing.
 inline std::string option_value(int argc, char** argv, int& i)
 {
@@ -104,23 +123,19 @@ inline std::string option_value(int argc, char** argv, int& i)
   return argv[++i];
 }
 
-/// Parses the whole of `text` as a finite number in [lo, hi], or throws naming the option.
+/// Parses the whole of `text` as a finite decimal number in [lo, hi], or throws naming the option.
+/// Strict: no leading spaces or '+', no hexadecimal, no trailing characters.
 inline double parse_double(const std::string& text, const std::string& option,
                            double lo = -std::numeric_limits<double>::max(),
                            double hi = std::numeric_limits<double>::max())
 {
-  std::size_t used = 0;
-  double value = 0.;
-  try
-  {
-    value = std::stod(text, &used);
-  }
-  catch(const std::exception&)
-  {
-    used = 0;
-  }
-  if(used == 0 || used != text.size() || !std::isfinite(value))
-    throw Usage_error(option + " expects a finite number, not \"" + text + "\"");
+  static const std::regex decimal(R"(-?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?)");
+  if(!std::regex_match(text, decimal))
+    throw Usage_error(option + " expects a decimal number, not \"" + text + "\"");
+  errno = 0;
+  const double value = std::strtod(text.c_str(), nullptr);
+  if(errno == ERANGE || !std::isfinite(value) || (value != 0. && std::abs(value) < std::numeric_limits<double>::min()))
+    throw Usage_error(option + " " + text + " is out of the range of double-precision numbers");
   if(value < lo || value > hi)
   {
     std::ostringstream s;
@@ -139,22 +154,15 @@ inline double parse_positive(const std::string& text, const std::string& option)
   return value;
 }
 
-/// Parses the whole of `text` as an integer in [lo, hi], or throws naming the option.
+/// Parses the whole of `text` as a decimal integer in [lo, hi], or throws naming the option.
 inline long parse_integer(const std::string& text, const std::string& option, long lo, long hi)
 {
-  std::size_t used = 0;
-  long value = 0;
-  try
-  {
-    value = std::stol(text, &used);
-  }
-  catch(const std::exception&)
-  {
-    used = 0;
-  }
-  if(used == 0 || used != text.size())
+  static const std::regex integer(R"(-?[0-9]+)");
+  if(!std::regex_match(text, integer))
     throw Usage_error(option + " expects an integer, not \"" + text + "\"");
-  if(value < lo || value > hi)
+  errno = 0;
+  const long value = std::strtol(text.c_str(), nullptr, 10);
+  if(errno == ERANGE || value < lo || value > hi)
     throw Usage_error(option + " must lie in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], not " + text);
   return value;
 }
@@ -182,22 +190,40 @@ inline std::string parse_choice(const std::string& text, const std::string& opti
   throw Usage_error(option + " is one of " + list + ", not \"" + text + "\"");
 }
 
-/// Throws unless `path` can be created: its folder exists (so that a run never computes for
-/// minutes and then fails to write, and never leaves a partial set of outputs).
+/// Options that may be given once: `check(option)` throws when one comes again.
+class Once
+{
+public:
+  void check(const std::string& option)
+  {
+    if(!m_seen.insert(option).second)
+      throw Usage_error(option + " is given more than once");
+  }
+  bool contains(const std::string& option) const { return m_seen.count(option) > 0; }
+
+private:
+  std::set<std::string> m_seen;
+};
+
+/// Throws unless `path` can be created: a non-empty file name whose folder exists and is
+/// writable, with one of `extensions` (if given). Checked before any computation, so that a run
+/// never computes for minutes and then fails to write.
 inline void check_output_path(const std::string& path, const std::string& option,
                               const std::vector<std::string>& extensions = {})
 {
-  if(path.empty())
-    throw Usage_error(option + " needs a file name");
-  const auto slash = path.rfind('/');
-  const std::string folder = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
-  struct stat info;
-  if(stat(folder.c_str(), &info) != 0 || !S_ISDIR(info.st_mode) || access(folder.c_str(), W_OK) != 0)
-    throw Usage_error(option + ": the folder \"" + folder + "\" of " + path + " does not exist or is not writable");
+  namespace fs = std::filesystem;
+  const fs::path p(path);
+  if(path.empty() || !p.has_filename() || p.filename() == "." || p.filename() == "..")
+    throw Usage_error(option + " needs a file name, not \"" + path + "\"");
+  const fs::path folder = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  std::error_code ec;
+  if(!fs::is_directory(folder, ec) || access(folder.c_str(), W_OK) != 0)
+    throw Usage_error(option + ": the folder \"" + folder.string() + "\" of " + path + " does not exist or is not writable");
+  if(fs::is_directory(p, ec))
+    throw Usage_error(option + ": " + path + " is a folder");
   if(!extensions.empty())
   {
-    const auto dot = path.rfind('.');
-    const std::string ext = dot == std::string::npos ? "" : path.substr(dot);
+    const std::string ext = p.extension().string();
     bool known = false;
     for(const std::string& e : extensions)
       known = known || e == ext;
@@ -210,6 +236,67 @@ inline void check_output_path(const std::string& path, const std::string& option
     }
   }
 }
+
+/// Throws if two of the named paths (option -> path; empty paths ignored) are the same file, e.g.
+/// an output that would overwrite the input.
+inline void check_distinct_paths(const std::vector<std::pair<std::string, std::string>>& named)
+{
+  namespace fs = std::filesystem;
+  for(std::size_t i = 0; i < named.size(); ++i)
+    for(std::size_t j = i + 1; j < named.size(); ++j)
+    {
+      if(named[i].second.empty() || named[j].second.empty())
+        continue;
+      std::error_code ec;
+      const bool same = fs::weakly_canonical(named[i].second, ec) == fs::weakly_canonical(named[j].second, ec);
+      if(same)
+        throw Usage_error(named[i].first + " and " + named[j].first + " name the same file, " + named[j].second);
+    }
+}
+
+/// The outputs of one run, all or nothing: every file is written under a temporary name in its
+/// final folder (keeping the extension, which selects the format) and renamed by `commit()`
+/// once everything succeeded; without a commit (an exception) the temporary files are removed.
+class Output_files
+{
+public:
+  Output_files() = default;
+  Output_files(const Output_files&) = delete;
+  Output_files& operator=(const Output_files&) = delete;
+  ~Output_files()
+  {
+    if(!m_committed)
+      for(const auto& [final_path, temporary] : m_files)
+        std::remove(temporary.c_str());
+  }
+
+  /// The temporary name to write `final_path` to.
+  std::string stage(const std::string& final_path)
+  {
+    namespace fs = std::filesystem;
+    const fs::path p(final_path);
+    const fs::path temporary =
+      p.parent_path() / (".partial-" + std::to_string(getpid()) + "-" + p.filename().string());
+    m_files.emplace_back(final_path, temporary.string());
+    return temporary.string();
+  }
+
+  /// Renames every staged file to its final name; prints "wrote ...".
+  void commit()
+  {
+    for(const auto& [final_path, temporary] : m_files)
+    {
+      if(std::rename(temporary.c_str(), final_path.c_str()) != 0)
+        throw std::runtime_error("cannot move " + temporary + " to " + final_path);
+      std::cout << "wrote " << final_path << '\n';
+    }
+    m_committed = true;
+  }
+
+private:
+  std::vector<std::pair<std::string, std::string>> m_files;
+  bool m_committed = false;
+};
 
 /// A named per-element column of a PLY element.
 struct Ply_property
@@ -274,6 +361,9 @@ inline void write_ply(const std::string& path, const Mesh& mesh, const std::vect
       value(prop, e);
     out << '\n';
   }
+  out.flush();
+  if(!out)
+    throw std::runtime_error("writing " + path + " failed (disk full?)");
 }
 
 /// A triangle soup with per-point scalars and normals, written as legacy VTK (POLYDATA).
@@ -309,45 +399,86 @@ struct Vtk_surface
       for(const auto& n : normals)
         out << n[0] << ' ' << n[1] << ' ' << n[2] << '\n';
     }
+    out.flush();
+    if(!out)
+      throw std::runtime_error("writing " + path + " failed (disk full?)");
   }
 };
 
+/// Whether `program` is an executable file in one of the folders of PATH.
+inline bool on_path(const std::string& program)
+{
+  const char* path = std::getenv("PATH");
+  std::stringstream folders(path ? path : "");
+  for(std::string folder; std::getline(folders, folder, ':');)
+    if(!folder.empty() && access((folder + "/" + program).c_str(), X_OK) == 0)
+      return true;
+  return false;
+}
+
+/// Throws unless the programs a picture needs are installed: f3d, and xvfb-run when there is no
+/// display. Called while the options are parsed, before anything is computed.
+inline void require_picture_tools()
+{
+  const bool has_display = std::getenv("DISPLAY") != nullptr;
+  if(!on_path("f3d") || (!has_display && !on_path("xvfb-run")))
+    throw Usage_error("--picture needs f3d" + std::string(has_display ? "" : " and xvfb-run") +
+                      " (Debian: apt-get install f3d xvfb xauth)");
+}
+
+/// Runs a program with arguments (no shell: nothing in the arguments is interpreted), its
+/// output discarded; returns its exit status (-1 if it could not be started).
+inline int run_program(const std::vector<std::string>& arguments)
+{
+  std::vector<char*> argv;
+  for(const std::string& a : arguments)
+    argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  const int spawned = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if(spawned != 0)
+    return -1;
+  int status = 0;
+  if(waitpid(pid, &status, 0) != pid)
+    return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
 /// Renders a VTK file to PNG headlessly with f3d (Debian package `f3d`, run under `xvfb-run`
 /// when there is no display; f3d 1.3 has no offscreen mode of its own). Colours by the point
-/// scalar `scalar` in [lo, hi] with a two-colour map when `scalar` is not empty; `--dry-run`
-/// ignores any user configuration of f3d. f3d's exit code does not tell whether it rendered, so
-/// success is judged by the PNG file. Returns false, with a message, if f3d is unavailable or fails.
-inline bool render_png(const std::string& vtk, const std::string& png, const std::string& scalar = "",
+/// scalar `scalar` in [lo, hi] with `colormap` when `scalar` is not empty; `--dry-run` ignores
+/// any user configuration of f3d. The programs are started without a shell. f3d's exit code does
+/// not tell whether it rendered, so success is judged by the PNG file.
+/// \throws std::runtime_error if f3d cannot render (call `require_picture_tools()` first)
+inline void render_png(const std::string& vtk, const std::string& png, const std::string& scalar = "",
                        double lo = -1., double hi = 1., const std::string& up = "+Y",
                        const std::string& colormap =
                          "0,0.1,0.18,0.42,0.4,0.1,0.18,0.42,0.6,0.96,0.9,0.78,1,0.96,0.9,0.78")
 {
-  const bool has_display = std::getenv("DISPLAY") != nullptr;
-  if(std::system("command -v f3d >/dev/null 2>&1") != 0 ||
-     (!has_display && std::system("command -v xvfb-run >/dev/null 2>&1") != 0))
-  {
-    std::cerr << "note: the picture needs f3d and xvfb (Debian: apt-get install f3d xvfb xauth); "
-              << "the surface is in " << vtk << "\n";
-    return false;
-  }
-  std::ostringstream cmd;
-  cmd << (has_display ? "" : "xvfb-run -a ") << "f3d '" << vtk << "' --output='" << png
-      << "' --dry-run --quiet --resolution=1200,900 --bg-color=1,1,1 --camera-view-angle=20"
-      << " --roughness=0.8 --up=" << up << " -a";
+  std::vector<std::string> command;
+  if(std::getenv("DISPLAY") == nullptr)
+    command = {"xvfb-run", "-a"};
+  std::ostringstream range;
+  range << lo << ',' << hi;
+  for(const std::string& a : {std::string("f3d"), vtk, "--output=" + png, std::string("--dry-run"), std::string("--quiet"),
+                              std::string("--resolution=1200,900"), std::string("--bg-color=1,1,1"),
+                              std::string("--camera-view-angle=20"), std::string("--roughness=0.8"), "--up=" + up,
+                              std::string("-a")})
+    command.push_back(a);
   if(!scalar.empty())
-    cmd << " --scalars=" << scalar << " --range=" << lo << ',' << hi
-        << " --colormap=" << colormap;
-  cmd << " >/dev/null 2>&1";
+    for(const std::string& a : {"--scalars=" + scalar, "--range=" + range.str(), "--colormap=" + colormap})
+      command.push_back(a);
   std::remove(png.c_str());
   // xvfb-run can lose a race for a display number: try once more before giving up
   for(int attempt = 0; attempt < 2 && !std::ifstream(png).good(); ++attempt)
-    (void)std::system(cmd.str().c_str());
+    (void)run_program(command);
   if(!std::ifstream(png).good())
-  {
-    std::cerr << "warning: f3d could not render " << png << " (command: " << cmd.str() << ")\n";
-    return false;
-  }
-  return true;
+    throw std::runtime_error("f3d could not render " + png);
 }
 
 } // namespace example

@@ -20,7 +20,7 @@ enum class Mesh_defect
 {
   empty,                  ///< the mesh has no face
   invalid_index_map,      ///< an index map is not a bijection onto `[0, n)` (e.g. a `Surface_mesh` with removed elements: call `collect_garbage()`)
-  non_finite_coordinates, ///< a vertex has a NaN or infinite coordinate
+  non_finite_coordinates, ///< a vertex has a NaN or infinite coordinate, or one beyond 1e150 in magnitude (squares overflow)
   isolated_vertex,        ///< a vertex has no incident face
   not_triangle,           ///< a face is not a triangle
   non_manifold_vertex,    ///< the faces around a vertex form more than one fan

@@ -52,16 +52,23 @@ enum class Octahedron_loop_placement
 /// their final positions.
 ///
 /// \returns the six loops as vertex descriptors, L1 first
-/// \pre `m >= 1`, `0 < radius`, `0 < center_distance`
+/// \pre `m >= 1`, `0 < radius < center_distance` (larger loops meet their neighbours)
+/// \throws Invalid_parameter otherwise
 template <class PolygonMesh>
 std::array<std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>, 6>
 make_octahedron_membrane(PolygonMesh& mesh, std::size_t m, double radius = 1.,
                          double center_distance = 3.,
                          Octahedron_loop_placement placement = Octahedron_loop_placement::equal_angles)
 {
-  if(m < 1 || !(radius > 0.) || !(center_distance > 0.))
-    throw std::invalid_argument("make_octahedron_membrane: needs m >= 1, radius > 0 and "
-                                "center_distance > 0");
+  if(m < 1)
+    throw Invalid_parameter("m", "must be at least 1, got 0");
+  if(!(center_distance > 0.) || !std::isfinite(center_distance))
+    throw Invalid_parameter("center_distance", "must be a finite number > 0");
+  // Loops L1 (plane z = d) and L3 (plane x = d) meet at (d, +-sqrt(R^2 - d^2), d) when R >= d:
+  // the loops are disjoint, each inside its face of the cube [-d, d]^3, exactly when R < d.
+  if(!(radius > 0. && radius < center_distance))
+    throw Invalid_parameter("radius", "must lie in (0, center_distance) = (0, " + std::to_string(center_distance) +
+                                        "): loops of radius >= center_distance meet their neighbours");
   const long M = long(m);
   using Key = std::array<long, 3>; // lattice point: d / (3m) times this is its flat position
   // the loops: axis and side of L1..L6 (paper, sec. 3.2)

@@ -68,10 +68,12 @@ void validate_mesh(const Indices& idx, const VertexPointMap& vpm,
   for(std::size_t v = 0; v < idx.number_of_vertices(); ++v)
   {
     const Eigen::Vector3d p = position(vpm, idx.vertex(v));
-    if(!p.allFinite())
+    // coordinates beyond 1e150 overflow the squared lengths every algorithm computes
+    if(!p.allFinite() || p.cwiseAbs().maxCoeff() > 1e150)
     {
       std::ostringstream s;
-      s << "vertex " << v << " has coordinates (" << p.x() << ", " << p.y() << ", " << p.z() << ")";
+      s << "vertex " << v << " has coordinates (" << p.x() << ", " << p.y() << ", " << p.z() << ")"
+        << (p.allFinite() ? ", too large for double precision (at most 1e150: squared lengths overflow)" : "");
       throw Invalid_mesh(Mesh_defect::non_finite_coordinates, v, s.str());
     }
   }
