@@ -27,6 +27,17 @@ enum curvature_alignment_weight_t { curvature_alignment_weight };
 enum field_boundary_condition_t { field_boundary_condition };
 enum normalize_field_t { normalize_field };
 enum eigen_tolerance_t { eigen_tolerance };
+enum developability_energy_t { developability_energy };
+enum number_of_subdivisions_t { number_of_subdivisions };
+enum gradient_tolerance_t { gradient_tolerance };
+enum energy_tolerance_t { energy_tolerance };
+enum minimum_angle_t { minimum_angle };
+enum omit_valence_three_vertices_t { omit_valence_three_vertices };
+enum include_boundary_vertices_t { include_boundary_vertices };
+enum parallel_evaluation_t { parallel_evaluation };
+enum descent_method_t { descent_method };
+enum vertex_energy_map_t { vertex_energy_map };
+enum vertex_gradient_map_t { vertex_gradient_map };
 } // namespace internal_np
 
 /// \ingroup PkgSurfaceDesignRef
@@ -67,6 +78,17 @@ CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(curvature_alignment_weight)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(field_boundary_condition)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(normalize_field)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(eigen_tolerance)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(developability_energy)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(number_of_subdivisions)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(gradient_tolerance)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(energy_tolerance)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(minimum_angle)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(omit_valence_three_vertices)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(include_boundary_vertices)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(parallel_evaluation)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(descent_method)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(vertex_energy_map)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(vertex_gradient_map)
 
 #undef CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER
 

@@ -1,0 +1,286 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// developable: drives a triangle mesh towards a piecewise-developable shape (Stein, Grinspun &
+// Crane 2018) and prints the figures of the result. Run without arguments for the usage.
+
+#include "../common/example_support.h"
+
+#include <CGAL/Surface_design/developability.h>
+
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace SD = CGAL::Surface_design;
+namespace P = CGAL::Surface_design::parameters;
+using example::Mesh;
+using example::Point;
+
+namespace {
+
+const char* usage =
+  "usage: developable INPUT --output OUT.off [options]\n"
+  "  Moves the vertices of a triangle mesh (any number of components, with or without boundary)\n"
+  "  to make every vertex star a hinge, except along a sparse set of seam curves: a piecewise\n"
+  "  developable design that bends from flat sheets. Between levels the mesh is subdivided 4-1.\n"
+  "options:\n"
+  "  --energy E            intrinsic (default), covariance, max-covariance, intrinsic-width,\n"
+  "                        combinatorial, combinatorial-max, angle-defect (the crumpling baseline)\n"
+  "  --subdivisions N      4-1 subdivisions, 0..4 (default 2: for a coarse mesh of about 1k faces)\n"
+  "  --iterations N        largest number of descent iterations per level (default 1000)\n"
+  "  --descent lbfgs|gradient   L-BFGS with the Lewis-Overton line search (default) or gradient descent\n"
+  "  --minimum-angle DEG   corner angles below this are removed by flips and collapses after\n"
+  "                        every step (default 0.573 = 0.01 rad; 0 turns it off)\n"
+  "  --keep-valence-3      let valence-3 vertices carry energy too (default: omitted, triple points)\n"
+  "  --progress N          a progress line every N iterations (default 100; 0: none)\n"
+  "  --output OUT.off      the design (.off, .obj, .ply, .stl); required\n"
+  "  --picture OUT.png     faces flat-shaded, edges darker the more they bend, seam vertices red\n"
+  "  --up +Y|+Z|...        up direction of the picture (default +Y)\n";
+
+struct Options
+{
+  std::string input, output, picture, up = "+Y";
+  SD::Developability_energy energy = SD::Developability_energy::intrinsic;
+  std::size_t subdivisions = 2, iterations = 1000, progress = 100;
+  SD::Developability_descent descent = SD::Developability_descent::lbfgs;
+  double minimum_angle = 0.01;
+  bool keep_valence_3 = false;
+};
+
+Options parse(int argc, char** argv)
+{
+  Options o;
+  example::Once once;
+  const std::map<std::string, SD::Developability_energy> energies{
+    {"intrinsic", SD::Developability_energy::intrinsic},
+    {"covariance", SD::Developability_energy::covariance},
+    {"max-covariance", SD::Developability_energy::covariance_max},
+    {"intrinsic-width", SD::Developability_energy::intrinsic_width},
+    {"combinatorial", SD::Developability_energy::combinatorial},
+    {"combinatorial-max", SD::Developability_energy::combinatorial_max},
+    {"angle-defect", SD::Developability_energy::squared_angle_defect}};
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    auto next = [&]() { return example::option_value(argc, argv, i); };
+    if(!a.empty() && a[0] == '-')
+      once.check(a);
+    if(a == "--energy")
+    {
+      std::vector<std::string> names;
+      for(const auto& [name, e] : energies)
+        names.push_back(name);
+      o.energy = energies.at(example::parse_choice(next(), a, names));
+    }
+    else if(a == "--subdivisions")
+      o.subdivisions = std::size_t(example::parse_integer(next(), a, 0, 4));
+    else if(a == "--iterations")
+      o.iterations = std::size_t(example::parse_integer(next(), a, 0, 10000000));
+    else if(a == "--descent")
+      o.descent = example::parse_choice(next(), a, {"lbfgs", "gradient"}) == "lbfgs"
+                    ? SD::Developability_descent::lbfgs
+                    : SD::Developability_descent::gradient_descent;
+    else if(a == "--minimum-angle")
+      o.minimum_angle = example::parse_double(next(), a, 0., 30.) * CGAL_PI / 180.;
+    else if(a == "--keep-valence-3")
+      o.keep_valence_3 = true;
+    else if(a == "--progress")
+      o.progress = std::size_t(example::parse_integer(next(), a, 0, 100000000));
+    else if(a == "--output")
+      example::check_output_path(o.output = next(), a, {".off", ".obj", ".ply", ".stl"});
+    else if(a == "--picture")
+      example::check_output_path(o.picture = next(), a, {".png"});
+    else if(a == "--up")
+      o.up = example::parse_choice(next(), a, {"+X", "-X", "+Y", "-Y", "+Z", "-Z"});
+    else if(!a.empty() && a[0] == '-')
+      throw example::Usage_error("unknown option " + a);
+    else if(o.input.empty())
+      o.input = a;
+    else
+      throw example::Usage_error("more than one input file");
+  }
+  if(o.input.empty())
+    throw example::Usage_error("no input mesh");
+  if(o.output.empty())
+    throw example::Usage_error("--output OUT.off is required");
+  if(o.picture.empty() && once.contains("--up"))
+    throw example::Usage_error("--up applies to --picture");
+  example::check_distinct_paths({{"INPUT", o.input}, {"--output", o.output}, {"--picture", o.picture},
+                                 {"the picture's surface file", o.picture.empty() ? "" : o.picture + ".vtk"}});
+  if(!o.picture.empty())
+    example::require_picture_tools();
+  return o;
+}
+
+Eigen::Vector3d eigen(const Point& p) { return Eigen::Vector3d(p.x(), p.y(), p.z()); }
+
+// Faces flat-shaded (scalar 0..1 from the face normal: pieces of one developable surface shade
+// smoothly, seams show as jumps), every edge a thin dark ribbon whose darkness grows with its
+// dihedral angle (scalar 1..2: rulings faint, seams dark, as in the paper's Fig. 26), seam
+// vertices as small red triangles (scalar 3).
+void write_picture(const Mesh& mesh, const std::vector<double>& lambda, const Options& o, example::Output_files& outputs)
+{
+  example::Vtk_surface vtk;
+  vtk.scalar_name = "shade";
+  auto add = [&](const Eigen::Vector3d& p, const Eigen::Vector3d& n, double s) {
+    vtk.points.push_back({p.x(), p.y(), p.z()});
+    vtk.normals.push_back({n.x(), n.y(), n.z()});
+    vtk.scalars.push_back(s);
+    return vtk.points.size() - 1;
+  };
+  const Eigen::Vector3d light = Eigen::Vector3d(0.3, 0.6, 0.75).normalized();
+  std::map<Mesh::Face_index, Eigen::Vector3d> normal;
+  double mean_edge = 0.;
+  for(auto e : edges(mesh))
+    mean_edge += std::sqrt(CGAL::to_double(CGAL::squared_distance(mesh.point(source(halfedge(e, mesh), mesh)),
+                                                                   mesh.point(target(halfedge(e, mesh), mesh))))) /
+                 double(num_edges(mesh));
+  for(auto f : faces(mesh))
+  {
+    std::vector<Eigen::Vector3d> p;
+    for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+      p.push_back(eigen(mesh.point(v)));
+    const Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]).normalized();
+    normal[f] = n;
+    const double shade = 0.5 + 0.5 * n.dot(light);
+    vtk.triangles.push_back({add(p[0], n, shade), add(p[1], n, shade), add(p[2], n, shade)});
+  }
+  const double width = 0.06 * mean_edge;
+  for(auto e : edges(mesh))
+  {
+    const auto h = halfedge(e, mesh);
+    if(is_border_edge(h, mesh))
+      continue;
+    const Eigen::Vector3d n1 = normal[face(h, mesh)], n2 = normal[face(opposite(h, mesh), mesh)];
+    const double dihedral = std::atan2(n1.cross(n2).norm(), n1.dot(n2));
+    if(dihedral < 0.5 * CGAL_PI / 180.)
+      continue; // flat: no line
+    const Eigen::Vector3d a = eigen(mesh.point(source(h, mesh))), b = eigen(mesh.point(target(h, mesh)));
+    const Eigen::Vector3d n = (n1 + n2).normalized(), side = n.cross(b - a).normalized() * width;
+    const double s = 1. + (std::min)(1., dihedral / (15. * CGAL_PI / 180.)); // 15 degrees: darkest
+    const Eigen::Vector3d lift = n * (0.02 * mean_edge);
+    const std::size_t i0 = add(a - side + lift, n, s), i1 = add(b - side + lift, n, s), i2 = add(b + side + lift, n, s),
+                      i3 = add(a + side + lift, n, s);
+    vtk.triangles.push_back({i0, i1, i2});
+    vtk.triangles.push_back({i0, i2, i3});
+  }
+  for(auto v : vertices(mesh))
+  {
+    if(lambda[std::size_t(v)] < 2. * CGAL_PI * 1e-3 || is_border(v, mesh))
+      continue;
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    for(auto f : faces_around_target(halfedge(v, mesh), mesh))
+      if(f != Mesh::null_face())
+        n += normal[f];
+    n.normalize();
+    const Eigen::Vector3d c = eigen(mesh.point(v)) + n * (0.05 * mean_edge);
+    const Eigen::Vector3d u = n.unitOrthogonal() * (0.35 * mean_edge), w = n.cross(u);
+    vtk.triangles.push_back({add(c + u, n, 3.), add(c - 0.5 * u + 0.87 * w, n, 3.), add(c - 0.5 * u - 0.87 * w, n, 3.)});
+  }
+  const std::string vtk_path = outputs.stage(o.picture + ".vtk");
+  vtk.write(vtk_path);
+  // 0..1 grey to white (faces), 1..2 light to dark grey (edges), 3 red (seam vertices)
+  const std::string colormap = "0,0.55,0.58,0.62,0.333,0.97,0.97,0.96,0.334,0.72,0.72,0.72,0.666,0.08,0.08,0.1,1,0.85,0.1,0.1";
+  example::render_png(vtk_path, outputs.stage(o.picture), "shade", 0., 3., o.up, colormap);
+}
+
+void print_metrics(const SD::Developability_metrics& m)
+{
+  std::printf("result: %zu vertices, %zu faces; energy %.6g\n", m.vertices, m.faces, m.energy);
+  std::printf("  lambda (covariance, eq. 3) over %zu measured vertices: max %.3g mean %.3g p95 %.3g\n",
+              m.measured_vertices, m.lambda_max, m.lambda_mean, m.lambda_p95);
+  std::printf("  hinges: %.1f%% (lambda < 2pi 1e-4), %.1f%% (< 2pi 1e-3)\n", 100. * m.hinge_share_1e4,
+              100. * m.hinge_share_1e3);
+  std::printf("  angle defect |Omega|: max %.3g mean %.3g rad; %zu seam vertices carry %.1f%% of it\n",
+              m.angle_defect_max, m.angle_defect_mean, m.seam_vertices, 100. * m.seam_curvature_share);
+  std::printf("  seams: %zu curves, length %.4g; smallest angle %.3g deg\n", m.seam_curves, m.seam_length,
+              m.minimum_angle * 180. / CGAL_PI);
+  std::printf("  distance to the input / bbox diagonal: Hausdorff %.4f, mean %.5f\n", m.hausdorff_distance,
+              m.mean_distance);
+}
+
+int run(const Options& o)
+{
+  example::Stopwatch clock;
+  Mesh mesh = example::read_mesh(o.input);
+  const Mesh input = mesh;
+  std::cout << "read " << o.input << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh) << " faces\n";
+  const long euler = long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh));
+
+  const SD::Developability_flow_result r = SD::make_piecewise_developable(
+    mesh, P::developability_energy(
+            o.energy, P::number_of_subdivisions(
+                        o.subdivisions, P::minimum_angle(
+                                          o.minimum_angle, P::descent_method(
+                                                             o.descent, P::omit_valence_three_vertices(!o.keep_valence_3)))))
+            .number_of_iterations(o.iterations)
+            .visitor([&o](const SD::Developability_iteration& it) {
+              if(o.progress > 0 && (it.level_iteration % o.progress == 0 || it.level_iteration == 1))
+                std::printf("level %zu iteration %5zu: energy %.6g, gradient %.3g, step %.3g, %zu faces%s\n", it.level,
+                            it.level_iteration, it.energy, it.gradient_norm, it.step, it.faces,
+                            it.flips + it.collapses > 0 ? " (small angles removed)" : "");
+              std::fflush(stdout);
+              return true;
+            }));
+  for(std::size_t l = 0; l < r.levels.size(); ++l)
+    std::printf("level %zu: %zu iterations, energy %.6g -> %.6g, %zu faces: %s\n", l, r.levels[l].iterations,
+                r.levels[l].initial_energy, r.levels[l].final_energy, r.levels[l].faces, r.levels[l].end.c_str());
+  std::printf("%zu iterations, %zu evaluations, %zu flips, %zu collapses, %zu subdivisions; %.2f s (evaluation %.2f, "
+              "small angles %.2f, subdivision %.2f)\n",
+              r.iterations, r.evaluations, r.flips, r.collapses, r.subdivisions, r.seconds_total, r.seconds_evaluation,
+              r.seconds_remeshing, r.seconds_subdivision);
+  const long euler_after = long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh));
+  if(euler_after != euler)
+    throw std::logic_error("the Euler characteristic changed from " + std::to_string(euler) + " to " +
+                           std::to_string(euler_after));
+
+  print_metrics(SD::developability_metrics(mesh, input, P::developability_energy(o.energy)));
+  example::Output_files outputs;
+  if(!CGAL::IO::write_polygon_mesh(outputs.stage(o.output), mesh, CGAL::parameters::stream_precision(17)))
+    throw std::runtime_error("cannot write " + o.output);
+  if(!o.picture.empty())
+  {
+    std::map<Mesh::Vertex_index, double> lambda;
+    SD::developability_energy(mesh, P::developability_energy(SD::Developability_energy::covariance,
+                                                             P::omit_valence_three_vertices(false,
+                                                               P::vertex_energy_map(boost::make_assoc_property_map(lambda)))));
+    std::vector<double> values(num_vertices(mesh), 0.);
+    for(const auto& [v, l] : lambda)
+      values[std::size_t(v)] = l;
+    write_picture(mesh, values, o, outputs);
+  }
+  outputs.commit();
+  std::cout << "total " << clock.lap() / 1000. << " s\n";
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  if(argc < 2)
+  {
+    std::cerr << usage;
+    return 1;
+  }
+  try
+  {
+    return run(parse(argc, argv));
+  }
+  catch(const example::Usage_error& e)
+  {
+    std::cerr << "developable: " << e.what() << "\n(run without arguments for the usage)\n";
+    return 1;
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "developable: " << e.what() << '\n';
+    return 1;
+  }
+}

@@ -1,0 +1,498 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Developability of triangle meshes (Stein, Grinspun & Crane 2018): the energies of vertex stars
+// and the flow that drives a mesh towards a piecewise-developable shape.
+
+#ifndef CGAL_SURFACE_DESIGN_DEVELOPABILITY_H
+#define CGAL_SURFACE_DESIGN_DEVELOPABILITY_H
+
+#include <CGAL/Surface_design/developability_energy.h>
+#include <CGAL/Surface_design/exceptions.h>
+#include <CGAL/Surface_design/internal/Core/Lbfgs_minimizer.h>
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/named_parameters.h>
+#include <CGAL/Surface_design/internal/Core/validation.h>
+#include <CGAL/Surface_design/internal/Developability/flow.h>
+#include <CGAL/Surface_design/internal/Developability/metrics.h>
+#include <CGAL/Surface_design/internal/Developability/remeshing.h>
+#include <CGAL/Surface_design/internal/Developability/star_energies.h>
+#include <CGAL/Surface_design/internal/Developability/vertex_stars.h>
+#include <CGAL/Surface_design/parameters.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <numeric>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_design {
+
+/// \ingroup PkgDevelopabilityRef
+/// The descent method of the developability flow.
+enum class Developability_descent
+{
+  lbfgs,           ///< L-BFGS (memory 8) with the Lewis-Overton weak-Wolfe line search (the paper's choice, sec. 4.3)
+  gradient_descent ///< gradient descent with Armijo backtracking
+};
+
+/// \ingroup PkgDevelopabilityRef
+/// What the visitor of `make_piecewise_developable()` receives after every descent iteration.
+struct Developability_iteration
+{
+  std::size_t level = 0;           ///< 0 before the first subdivision, then 1, 2, ...
+  std::size_t iteration = 0;       ///< iterations so far, all levels together (1 for the first)
+  std::size_t level_iteration = 0; ///< iterations so far in this level
+  double energy = 0.;              ///< the energy after the iteration
+  double gradient_norm = 0.;       ///< RMS of the gradient's coordinates times the mean edge length (dimensionless)
+  double step = 0.;                ///< the accepted step length (0 if the line search failed)
+  bool line_search_failed = false; ///< the iteration made no progress
+  std::size_t flips = 0, collapses = 0; ///< small-angle operations after this iteration
+  std::size_t vertices = 0, faces = 0;  ///< size of the mesh after the iteration
+};
+
+/// \ingroup PkgDevelopabilityRef
+/// What `make_piecewise_developable()` did, per level and in total.
+struct Developability_flow_result
+{
+  struct Level
+  {
+    std::size_t iterations = 0;
+    double initial_energy = 0., final_energy = 0., final_gradient_norm = 0.;
+    std::string end; ///< why the level ended (iteration limit, gradient below tolerance, ...)
+    std::size_t vertices = 0, faces = 0;
+  };
+  std::vector<Level> levels;
+  std::size_t iterations = 0, evaluations = 0, flips = 0, collapses = 0, subdivisions = 0;
+  bool stopped_by_visitor = false;
+  /// Wall-clock seconds: energy and gradient evaluations (line searches included), small-angle
+  /// handling, subdivisions, and everything together.
+  double seconds_evaluation = 0., seconds_remeshing = 0., seconds_subdivision = 0., seconds_total = 0.;
+};
+
+namespace developability_detail {
+
+template <class NamedParameters>
+internal::Developability_flow_options flow_options(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  internal::Developability_flow_options o;
+  o.energy = choose_parameter(get_parameter(np, internal_np::developability_energy), Developability_energy::covariance);
+  o.subdivisions = choose_parameter(get_parameter(np, internal_np::number_of_subdivisions), std::size_t(0));
+  o.iterations_per_level = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(1000));
+  o.gradient_tolerance = choose_parameter(get_parameter(np, internal_np::gradient_tolerance), o.gradient_tolerance);
+  o.energy_tolerance = choose_parameter(get_parameter(np, internal_np::energy_tolerance), o.energy_tolerance);
+  o.minimum_angle = choose_parameter(get_parameter(np, internal_np::minimum_angle), o.minimum_angle);
+  o.omit_valence_three = choose_parameter(get_parameter(np, internal_np::omit_valence_three_vertices), true);
+  o.include_boundary = choose_parameter(get_parameter(np, internal_np::include_boundary_vertices), false);
+  o.parallel = choose_parameter(get_parameter(np, internal_np::parallel_evaluation), true);
+  const Developability_descent d =
+    choose_parameter(get_parameter(np, internal_np::descent_method), Developability_descent::lbfgs);
+
+  switch(o.energy)
+  {
+    case Developability_energy::combinatorial: case Developability_energy::combinatorial_max:
+    case Developability_energy::covariance: case Developability_energy::covariance_max:
+    case Developability_energy::intrinsic: case Developability_energy::intrinsic_width:
+    case Developability_energy::squared_angle_defect: break;
+    default: throw Invalid_parameter("developability_energy", "not a Developability_energy enumerator");
+  }
+  if(d != Developability_descent::lbfgs && d != Developability_descent::gradient_descent)
+    throw Invalid_parameter("descent_method", "not a Developability_descent enumerator");
+  o.method = d == Developability_descent::lbfgs ? internal::Descent_method::lbfgs : internal::Descent_method::gradient_descent;
+  if(o.subdivisions > 6)
+    throw Invalid_parameter("number_of_subdivisions", "must be at most 6 (each multiplies the faces by 4), got " +
+                                                        std::to_string(o.subdivisions));
+  internal::require_nonnegative("gradient_tolerance", o.gradient_tolerance);
+  internal::require_nonnegative("energy_tolerance", o.energy_tolerance);
+  internal::require_in_range("minimum_angle", o.minimum_angle, 0., internal::pi / 6.);
+  return o;
+}
+
+} // namespace developability_detail
+
+/// \ingroup PkgDevelopabilityRef
+///
+/// The developability energy of a triangle mesh: the sum over the vertex stars that carry energy
+/// of the measure chosen by `developability_energy` (see `Developability_energy`), with, on
+/// request, its value and its (sub)gradient per vertex.
+///
+/// \param tm a triangle mesh (validated)
+/// \param np optional named parameters among:
+/// - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
+/// - `developability_energy` (`Developability_energy`): default `covariance` (E^lambda, eq. 3-4)
+/// - `omit_valence_three_vertices` (bool): default true (the paper's triple points, sec. 4.1.4)
+/// - `include_boundary_vertices` (bool): default false (as the paper and its reference code)
+/// - `vertex_energy_map` (writable vertex -> double): each star's energy (0 where it carries none)
+/// - `vertex_gradient_map` (writable vertex -> `Vector_3`): the gradient of the total with
+///   respect to each vertex position
+/// - `parallel_evaluation` (bool): default true; with TBB (CGAL_LINKED_WITH_TBB) the stars are
+///   evaluated in parallel, with results bitwise identical to the sequential ones
+///
+/// \returns the total energy
+/// \throws Invalid_mesh, Invalid_parameter; nothing is written then
+///
+/// Complexity: O(sum over stars of the star's cost): linear for the covariance energies, O(d^3)
+/// per star of valence d for `combinatorial`, O(d^4) for `covariance_max`.
+template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+double developability_energy(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const internal::Developability_flow_options o = developability_detail::flow_options(np);
+  const auto vpm = internal::const_vertex_point_map(tm, np);
+  const internal::Mesh_indices<TriangleMesh> idx(tm, np);
+  internal::validate_mesh(idx, vpm);
+  const internal::Vertex_stars stars = internal::vertex_stars(idx, o.include_boundary, o.omit_valence_three ? 4 : 0);
+  std::vector<Eigen::Vector3d> x(idx.number_of_vertices()), gradient;
+  for(std::size_t v = 0; v < x.size(); ++v)
+    x[v] = internal::position(vpm, idx.vertex(v));
+  std::vector<double> per_vertex;
+  const double total = internal::developability_energy(stars, x, o.energy, &gradient, &per_vertex, o.parallel);
+  internal::if_given(np, internal_np::vertex_energy_map, [&](const auto& map) {
+    for(std::size_t v = 0; v < x.size(); ++v)
+      put(map, idx.vertex(v), per_vertex[v]);
+  });
+  internal::if_given(np, internal_np::vertex_gradient_map, [&](const auto& map) {
+    using Vector = typename boost::property_traits<std::decay_t<decltype(map)>>::value_type;
+    for(std::size_t v = 0; v < x.size(); ++v)
+      put(map, idx.vertex(v), Vector(gradient[v].x(), gradient[v].y(), gradient[v].z()));
+  });
+  return total;
+}
+
+/// \ingroup PkgDevelopabilityRef
+///
+/// Drives a triangle mesh towards a piecewise-developable shape (Stein, Grinspun & Crane 2018,
+/// sec. 4): descends the chosen developability energy, with the vertex positions as unknowns,
+/// removing small corner angles after every step, in levels separated by regular 4-1
+/// subdivisions (sec. 4.2: start coarse, then refine to sharpen the seams). Curvature
+/// concentrates on a sparse set of seam curves; elsewhere the vertex stars become hinges.
+///
+/// **A level** runs the descent until `number_of_iterations` iterations were made, or the scaled
+/// gradient norm (RMS of the gradient's coordinates times the mean edge length, dimensionless) is
+/// below `gradient_tolerance`, or the energy fell by less than `energy_tolerance` (relative) over
+/// the last 100 iterations, or the line search failed twice in a row (at a kink the descent
+/// cannot pass). Then the mesh is subdivided (if subdivisions remain) and the next level starts
+/// from a reset optimizer.
+///
+/// **Small angles** (sec. 4.3, Fig. 18): after every step, a triangle with two corner angles
+/// below `minimum_angle` has its longest edge flipped, a triangle with one has its shortest edge
+/// collapsed (CGAL Euler operations; flips keep orientation, collapses respect the link
+/// condition, keep boundary vertices and valences >= 3). The optimizer restarts after any change.
+///
+/// The mesh is modified in place: positions, and connectivity by subdivisions, flips and
+/// collapses (a `Surface_mesh` has its garbage collected, so its indices are renumbered; property
+/// maps of the input are not carried over to new elements). On an exception the mesh is untouched.
+///
+/// \param tm a triangle mesh, a model of `MutableFaceGraph` (validated: manifold, no degenerate
+///        face, finite coordinates)
+/// \param np optional named parameters among:
+/// - `vertex_point_map`: writable; default `get(CGAL::vertex_point, tm)`
+/// - `developability_energy` (`Developability_energy`): default `covariance` (E^lambda)
+/// - `number_of_subdivisions` (std::size_t, at most 6): default 0 (the paper uses 2 or 3 on a
+///   mesh of about 1k faces)
+/// - `number_of_iterations` (std::size_t): the largest number of descent iterations per level;
+///   default 1000
+/// - `gradient_tolerance` (double >= 0): default 1e-6
+/// - `energy_tolerance` (double >= 0): default 1e-5
+/// - `minimum_angle` (double in [0, pi/6], radians): default 0.01 (the reference code's); 0
+///   turns the small-angle handling off
+/// - `omit_valence_three_vertices` (bool): default true; `include_boundary_vertices` (bool):
+///   default false
+/// - `descent_method` (`Developability_descent`): default `lbfgs`
+/// - `parallel_evaluation` (bool): default true (with TBB)
+/// - `visitor`: a callable `bool(const Developability_iteration&)` called after every iteration;
+///   returning false stops the flow (the mesh keeps the current positions)
+///
+/// \returns per level: iterations, energies, why it ended; in total: iterations, evaluations,
+///          flips, collapses, subdivisions, and seconds per phase
+/// \throws Invalid_mesh, Invalid_parameter (before anything is modified)
+template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Developability_flow_result make_piecewise_developable(TriangleMesh& tm,
+                                                      const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using Vpm = typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::type;
+  const Vpm vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                   get_property_map(CGAL::vertex_point, tm));
+  const internal::Developability_flow_options o = developability_detail::flow_options(np);
+  {
+    const internal::Mesh_indices<TriangleMesh> idx(tm, np);
+    internal::validate_mesh(idx, vpm);
+  }
+  auto visitor = [&np](const Developability_iteration& it) {
+    bool go_on = true;
+    internal::if_given(np, CGAL::internal_np::visitor, [&](const auto& v) { go_on = bool(v(it)); });
+    return go_on;
+  };
+
+  Developability_flow_result result;
+  const internal::Phase_clock total;
+  internal::Developability_state<TriangleMesh, Vpm> state(tm, vpm, o);
+  internal::Lbfgs_options lo;
+  lo.method = o.method;
+  lo.unit_first_trial = true; // try the quasi-Newton step first: about half the evaluations
+  for(std::size_t level = 0; level <= o.subdivisions && !result.stopped_by_visitor; ++level)
+  {
+    if(level > 0)
+    {
+      const internal::Phase_clock clock;
+      internal::midpoint_subdivision(tm, vpm);
+      state.rebuild();
+      ++result.subdivisions;
+      result.seconds_subdivision += clock.seconds();
+    }
+    internal::Lbfgs_minimizer minimizer(lo);
+    Developability_flow_result::Level report;
+    std::vector<double> history; // energy after each iteration of the level
+    std::size_t failures_in_a_row = 0;
+    report.end = to_string(internal::Developability_level_end::iteration_limit);
+    for(std::size_t it = 0; it < o.iterations_per_level; ++it)
+    {
+      const internal::Phase_clock clock;
+      const internal::Lbfgs_step_result s = minimizer.step(state, state.coordinates());
+      result.seconds_evaluation += clock.seconds();
+      if(it == 0)
+        report.initial_energy = s.energy_before;
+      const bool accepted = s.status == internal::Lbfgs_step_status::accepted;
+      failures_in_a_row = accepted ? 0 : failures_in_a_row + 1;
+
+      Developability_iteration info;
+      info.level = level;
+      info.iteration = ++result.iterations;
+      info.level_iteration = ++report.iterations;
+      info.energy = accepted ? s.energy : s.energy_before;
+      info.gradient_norm = minimizer.gradient_norm() * state.mean_edge_length();
+      info.step = accepted ? s.step_length : 0.;
+      info.line_search_failed = !accepted;
+
+      if(accepted)
+      {
+        state.write_positions();
+        if(o.minimum_angle > 0.)
+        {
+          const internal::Phase_clock remesh;
+          const internal::Small_angle_report r = internal::remove_small_angles(tm, vpm, o.minimum_angle);
+          if(r.flips + r.collapses > 0)
+          {
+            state.rebuild();
+            minimizer.reset();
+            info.flips = r.flips;
+            info.collapses = r.collapses;
+            result.flips += r.flips;
+            result.collapses += r.collapses;
+          }
+          result.seconds_remeshing += remesh.seconds();
+        }
+      }
+      info.vertices = num_vertices(tm);
+      info.faces = num_faces(tm);
+      report.final_energy = info.energy;
+      report.final_gradient_norm = info.gradient_norm;
+      history.push_back(info.energy);
+
+      if(!visitor(info))
+      {
+        result.stopped_by_visitor = true;
+        report.end = to_string(internal::Developability_level_end::visitor);
+        break;
+      }
+      if(accepted && info.gradient_norm <= o.gradient_tolerance)
+      {
+        report.end = to_string(internal::Developability_level_end::gradient_small);
+        break;
+      }
+      if(failures_in_a_row >= 2) // the failed step reset the optimizer; its retry failed too
+      {
+        report.end = to_string(internal::Developability_level_end::line_search_failed);
+        break;
+      }
+      const std::size_t w = 100;
+      if(history.size() > w && info.flips + info.collapses == 0)
+      {
+        const double before = history[history.size() - 1 - w], now = history.back();
+        if(before - now <= o.energy_tolerance * (std::max)(std::abs(before), std::abs(now)))
+        {
+          report.end = to_string(internal::Developability_level_end::energy_stalled);
+          break;
+        }
+      }
+    }
+    report.vertices = num_vertices(tm);
+    report.faces = num_faces(tm);
+    result.levels.push_back(report);
+  }
+  result.evaluations = state.evaluations();
+  result.seconds_total = total.seconds();
+  return result;
+}
+
+/// \ingroup PkgDevelopabilityRef
+/// The figures of a (piecewise-)developable design, as the field reports them (Stein et al. 2018;
+/// Binninger et al. 2021), so that runs and methods can be compared. The per-vertex measure is
+/// the covariance lambda_i (eq. 3) whatever energy was optimized; it equals 0 on hinges and flat
+/// stars and is at most 2 pi / 3 (lambda_i <= trace / 3 = sum of the angles / 3).
+/// *Measured* vertices are the interior vertices of valence >= 4 (those the energies act on).
+struct Developability_metrics
+{
+  std::size_t vertices = 0, faces = 0, measured_vertices = 0;
+  double energy = 0.;          ///< total of the energy named by `developability_energy` (default covariance)
+  double lambda_max = 0., lambda_mean = 0., lambda_p95 = 0.; ///< lambda_i over the measured vertices
+  /// share of the measured vertices that are hinges: lambda_i < 2 pi 1e-4 (1e-3)
+  double hinge_share_1e4 = 0., hinge_share_1e3 = 0.;
+  double angle_defect_max = 0., angle_defect_mean = 0.; ///< |Omega_i| over the interior vertices (radians)
+  /// Seam vertices: interior vertices with lambda_i >= 2 pi 1e-3 (valence 3 included: triple
+  /// points). The share of sum |Omega_i| (interior vertices) that they carry: 1 when all the
+  /// curvature sits on seams.
+  double seam_curvature_share = 0.;
+  std::size_t seam_vertices = 0;
+  /// Seam edges join two seam vertices; seam curves are the connected components of those edges.
+  std::size_t seam_curves = 0;
+  double seam_length = 0.;     ///< total length of the seam edges
+  double minimum_angle = 0.;   ///< smallest corner angle, radians
+  /// With a reference mesh: symmetric Hausdorff and mean distance between the two surfaces
+  /// (sampled), divided by the reference's bounding-box diagonal; NaN without one.
+  double hausdorff_distance = std::numeric_limits<double>::quiet_NaN();
+  double mean_distance = std::numeric_limits<double>::quiet_NaN();
+};
+
+namespace developability_detail {
+
+template <class TriangleMesh, class VertexPointMap, class NamedParameters>
+Developability_metrics metrics(const TriangleMesh& tm, const VertexPointMap& vpm, const TriangleMesh* reference,
+                               const NamedParameters& np)
+{
+  const internal::Developability_flow_options o = flow_options(np);
+  const internal::Mesh_indices<TriangleMesh> idx(tm, np);
+  internal::validate_mesh(idx, vpm);
+  Developability_metrics m;
+  m.vertices = idx.number_of_vertices();
+  m.faces = idx.number_of_faces();
+  m.energy = developability_energy(tm, np);
+  const internal::Developability_per_vertex d = internal::developability_per_vertex(idx, vpm, o.parallel);
+  std::vector<double> measured;
+  for(std::size_t v = 0; v < d.lambda.size(); ++v)
+    if(d.measured[v])
+      measured.push_back(d.lambda[v]);
+  m.measured_vertices = measured.size();
+  if(!measured.empty())
+  {
+    const double tau4 = internal::two_pi * 1e-4, tau3 = internal::two_pi * 1e-3;
+    m.lambda_max = *std::max_element(measured.begin(), measured.end());
+    m.lambda_mean = std::accumulate(measured.begin(), measured.end(), 0.) / double(measured.size());
+    std::vector<double> sorted = measured;
+    std::sort(sorted.begin(), sorted.end());
+    m.lambda_p95 = sorted[std::min(sorted.size() - 1, std::size_t(std::ceil(0.95 * double(sorted.size()))) - 1)];
+    m.hinge_share_1e4 = double(std::count_if(measured.begin(), measured.end(), [&](double l) { return l < tau4; })) /
+                        double(measured.size());
+    m.hinge_share_1e3 = double(std::count_if(measured.begin(), measured.end(), [&](double l) { return l < tau3; })) /
+                        double(measured.size());
+  }
+  // angle defects, seams
+  const std::vector<double> corner = internal::corner_angles(idx, vpm);
+  const std::vector<double> angle_sum = internal::vertex_angle_sums(idx, corner);
+  std::vector<bool> seam(idx.number_of_vertices(), false);
+  double defect_sum = 0., seam_defect = 0.;
+  std::size_t interior = 0;
+  for(std::size_t v = 0; v < seam.size(); ++v)
+  {
+    if(!d.interior[v])
+      continue;
+    const double omega = std::abs(internal::two_pi - angle_sum[v]);
+    ++interior;
+    defect_sum += omega;
+    m.angle_defect_max = (std::max)(m.angle_defect_max, omega);
+    seam[v] = d.lambda[v] >= internal::two_pi * 1e-3;
+    if(seam[v])
+    {
+      ++m.seam_vertices;
+      seam_defect += omega;
+    }
+  }
+  m.angle_defect_mean = interior > 0 ? defect_sum / double(interior) : 0.;
+  m.seam_curvature_share = defect_sum > 0. ? seam_defect / defect_sum : 1.;
+  std::vector<std::size_t> parent(seam.size());
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  auto find = [&parent](std::size_t x) {
+    while(parent[x] != x)
+      x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  std::vector<bool> on_seam_edge(seam.size(), false);
+  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+  {
+    const auto ij = idx.edge_vertices(e);
+    if(!seam[ij.first] || !seam[ij.second])
+      continue;
+    m.seam_length += (internal::position(vpm, idx.vertex(ij.first)) - internal::position(vpm, idx.vertex(ij.second))).norm();
+    on_seam_edge[ij.first] = on_seam_edge[ij.second] = true;
+    parent[find(ij.first)] = find(ij.second);
+  }
+  for(std::size_t v = 0; v < seam.size(); ++v)
+    m.seam_curves += on_seam_edge[v] && find(v) == v;
+  m.minimum_angle = internal::pi;
+  for(std::size_t h = 0; h < corner.size(); ++h)
+    if(!idx.is_border(idx.halfedge(h)))
+      m.minimum_angle = (std::min)(m.minimum_angle, corner[h]);
+  if(reference)
+  {
+    const auto ref_vpm = get(CGAL::vertex_point, *reference);
+    using Ref_vpm = std::decay_t<decltype(ref_vpm)>;
+    if constexpr(std::is_same<Ref_vpm, VertexPointMap>::value)
+    {
+      CGAL::Bbox_3 box;
+      for(auto v : vertices(*reference))
+        box += get(ref_vpm, v).bbox();
+      const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                        CGAL::square(box.zmax() - box.zmin()));
+      const auto dist = internal::surface_distances(tm, vpm, *reference, ref_vpm, 4 * (m.faces + num_faces(*reference)));
+      m.hausdorff_distance = dist.first / diagonal;
+      m.mean_distance = dist.second / diagonal;
+    }
+  }
+  return m;
+}
+
+} // namespace developability_detail
+
+/// \ingroup PkgDevelopabilityRef
+///
+/// The metrics of a design (see `Developability_metrics`).
+/// \param np as `developability_energy()` (the energy whose total is reported, the point map,
+///        the index maps)
+/// \throws Invalid_mesh, Invalid_parameter
+/// Complexity: linear in the mesh size (plus the star costs of the chosen energy).
+template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Developability_metrics developability_metrics(const TriangleMesh& tm,
+                                              const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return developability_detail::metrics(tm, internal::const_vertex_point_map(tm, np), static_cast<const TriangleMesh*>(nullptr), np);
+}
+
+/// \ingroup PkgDevelopabilityRef
+/// Same, with the distances to `reference` (e.g. the input of the flow; read with its own vertex
+/// point map), relative to the reference's bounding-box diagonal.
+template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Developability_metrics developability_metrics(const TriangleMesh& tm, const TriangleMesh& reference,
+                                              const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return developability_detail::metrics(tm, get(CGAL::vertex_point, tm), &reference, np);
+}
+
+} // namespace Surface_design
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_DESIGN_DEVELOPABILITY_H

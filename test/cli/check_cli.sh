@@ -1,0 +1,133 @@
+#!/usr/bin/env bash
+# Every command-line program refuses bad options and bad input: exit status 1, a message on
+# stderr, and no output file at all (not even a partial one or a picture's side file).
+#   usage: check_cli.sh EXAMPLES_DIR DATA_DIR
+set -u
+BIN="$1"
+DATA="$2"
+WORK="$(mktemp -d)"
+trap 'rm -rf "$WORK"' EXIT
+failures=0
+checked=0
+
+# refuse PROGRAM ARGS...: must exit 1, say something on stderr, and leave $WORK/out empty
+refuse() {
+  rm -rf "$WORK/out" && mkdir -p "$WORK/out"
+  local status
+  (cd "$WORK/out" && "$BIN/$1" "${@:2}" >"$WORK/stdout" 2>"$WORK/stderr")
+  status=$?
+  checked=$((checked + 1))
+  local left
+  left="$(ls -A "$WORK/out")"
+  if [ "$status" -ne 1 ] || [ ! -s "$WORK/stderr" ] || [ -n "$left" ]; then
+    echo "FAILED: $* -> exit $status, stderr: $(head -c 200 "$WORK/stderr"), files left: $left"
+    failures=$((failures + 1))
+  fi
+}
+
+# accept PROGRAM ARGS...: must exit 0
+accept() {
+  rm -rf "$WORK/out" && mkdir -p "$WORK/out"
+  local status
+  (cd "$WORK/out" && "$BIN/$1" "${@:2}" >"$WORK/stdout" 2>"$WORK/stderr")
+  status=$?
+  checked=$((checked + 1))
+  if [ "$status" -ne 0 ]; then
+    echo "FAILED (should succeed): $* -> exit $status, stderr: $(head -c 300 "$WORK/stderr")"
+    failures=$((failures + 1))
+  fi
+}
+
+B1K="$DATA/bunny_1k.off"
+O="$WORK/out"
+cp "$B1K" "$WORK/input.off"
+printf 'OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n' > "$WORK/quad.off"
+printf 'OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n' > "$WORK/nan.off"
+printf 'OFF\n3 1 0\n0 0 0\n1e200 0 0\n0 1e200 0\n3 0 1 2\n' > "$WORK/huge.off"
+
+# --- stripes
+for args in "--scale nan" "--scale -3" "--scale 0" "--scale inf" "--scale 1e300" "--scale 1e-300" "--scale 3abc" \
+            "--scale +3" "--scale 0x10" "--scale 1e-320" "--scale 1 --scale 2" "--field axis:0,0,0" "--field axis:1,2" \
+            "--field axis:1,2,3," "--field axis:1,x,3" "--field heat:-1" "--field heat:100000" "--field heat:5:1e300" \
+            "--field heat:5:90x" "--field trivial:5:0" "--field trivial:5:1,5:1" "--field trivial:5:1," "--field bogus" \
+            "--field axis:1,0,0 --field axis:0,1,0" "--singularity 5" "--singularity 5:0" "--singularity -1:1" \
+            "--singularity 5:1 --singularity 5:-1" "--singularity 999999:1" "--singularity 5:1.5" "--winding 0:1" \
+            "--winding x:1" "--solver magic" "--solver ldlt --solver ldlt" "--convention other" "--up +Y" \
+            "--picture $O/p.png --up sideways" \
+            "--output $O/a.txt" "--output /nonexistent/a.ply" "--output $O" "--picture $O/a.jpg" "--output" \
+            "--bogus" "$B1K"; do
+  # shellcheck disable=SC2086
+  refuse stripes "$B1K" $args --output "$O/s.ply"
+done
+refuse stripes "$WORK/input.off" --output "$WORK/input.off"
+refuse stripes "$DATA/elephant-with-holes.off" --singularity 100:1 --output "$O/e.ply"
+refuse stripes "$DATA/torus.off" --winding 0:100000 --output "$O/t.ply"
+refuse stripes "$DATA/bones.off" --field heat:0 --output "$O/b.ply"
+refuse stripes "$WORK/quad.off" --output "$O/q.ply"
+refuse stripes "$WORK/nan.off" --output "$O/n.ply"
+refuse stripes "$WORK/huge.off" --output "$O/h.ply"
+refuse stripes "$WORK/missing.off" --output "$O/m.ply"
+refuse stripes
+accept stripes "$B1K" --singularity 100:1 --singularity 400:-1 --output "$O/ok.ply"
+
+# --- direction_field
+for args in "--method smoothest --n 0" "--method smoothest --n 2.5" "--method smoothest --n 99999999999999999999" \
+            "--method magic" "--method smoothest --method trivial" "--method smoothest --singularity 5:1" \
+            "--method trivial --boundary tangent" "--method smoothest --curvature-weight -1" \
+            "--method smoothest --curvature-weight nan" "--method smoothest --curvature-weight 1" \
+            "--method smoothest --boundary sideways" "--method trivial --singularity 5:1 --singularity 5:1" \
+            "--method trivial --singularity 5:1" "--method smoothest --up +Z" "--method smoothest --solver x" \
+            "--method smoothest --bogus"; do
+  # shellcheck disable=SC2086
+  refuse direction_field "$B1K" $args --output "$O/f.ply"
+done
+refuse direction_field "$B1K" --method smoothest
+refuse direction_field "$B1K" --method trivial --singularity 5:1 --singularity 400:1 --output "$WORK/input.off"
+accept direction_field "$B1K" --method trivial --singularity 5:1 --singularity 400:1 --output "$O/ok.ply"
+
+# --- octahedron_membrane
+for args in "--m 4 --radius 50" "--m 4 --radius 3" "--m 4 --radius 0" "--m 4 --radius -1" "--m 4 --radius 1e-300" \
+            "--m 0 --radius 1" "--m 4x --radius 1" "--m 1000000000 --radius 1" "--m 60 --radius 1 --iterative" \
+            "--radius 1" "--m 4" "--m 4 --m 5 --radius 1" "--m 4 --radius 1 --placement odd" \
+            "--m 4 --radius 1 --output $O/o.xyz" "--m 4 --radius 1 --output $O/o.off --picture $O/o.off" \
+            "--m 4 --radius 1 --picture $O/p.jpg" "--m 4 --radius 1 --output /nonexistent/o.off" "--m 4 --radius 1 --bogus"; do
+  # shellcheck disable=SC2086
+  refuse octahedron_membrane $args
+done
+accept octahedron_membrane --m 4 --radius 1 --output "$O/ok.off"
+
+# --- octahedron_deformation
+refuse octahedron_deformation
+for args in "--radius 3" "--radius 2" "--step 0" "--step -0.3" "--steps 11" "--steps 1000000" "--m 300" \
+            "--out-dir /nonexistent" "--bogus" "extra" "--m 40" "--steps 2 --steps 3"; do
+  # shellcheck disable=SC2086
+  refuse octahedron_deformation --out-dir "$O" $args
+done
+accept octahedron_deformation --out-dir "$O" --m 2 --steps 2 --step 0.3 --no-iterative
+
+# --- barycentric_embed
+printf '0 1 2\n' > "$WORK/fixed.txt"
+for args in "--weights magic" "--weights uniform --weights cotangent" "--fixed" "--fixed $WORK" \
+            "--fixed $WORK/nothing.txt" "--up x" "--up +Z" "--solver x" "--output $O/o.xyz" \
+            "--output $O/o.off --output $O/p.off" "--picture $O/p" "--bogus"; do
+  # shellcheck disable=SC2086
+  refuse barycentric_embed "$DATA/hemisphere.off" $args
+done
+refuse barycentric_embed "$WORK/input.off" --fixed "$WORK/fixed.txt" --output "$WORK/input.off"
+refuse barycentric_embed "$WORK/huge.off" --fixed "$WORK/fixed.txt" --output "$O/h.off"
+accept barycentric_embed "$DATA/hemisphere.off" --output "$O/ok.off"
+
+# --- developable
+for args in "--energy magic" "--subdivisions 5" "--subdivisions -1" "--iterations -1" "--iterations x" \
+            "--minimum-angle 45" "--minimum-angle nan" "--descent newton" "--progress -1" "--output $O/d.xyz" \
+            "--energy intrinsic --energy covariance" "--up +Z" "--bogus"; do
+  # shellcheck disable=SC2086
+  refuse developable "$B1K" $args --output "$O/d.off"
+done
+refuse developable "$B1K"
+refuse developable "$WORK/quad.off" --output "$O/d.off"
+refuse developable "$WORK/input.off" --output "$WORK/input.off"
+accept developable "$B1K" --subdivisions 0 --iterations 20 --output "$O/ok.off"
+
+echo "$checked runs checked, $failures failures"
+[ "$failures" -eq 0 ]
