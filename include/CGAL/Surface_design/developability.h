@@ -183,9 +183,9 @@ double developability_energy(const TriangleMesh& tm, const NamedParameters& np =
 /// **A level** runs the descent until `number_of_iterations` iterations were made, or the scaled
 /// gradient norm (RMS of the gradient's coordinates times the mean edge length, dimensionless) is
 /// below `gradient_tolerance`, or the energy fell by less than `energy_tolerance` (relative) over
-/// the last 100 iterations, or the line search failed twice in a row (at a kink the descent
-/// cannot pass). Then the mesh is subdivided (if subdivisions remain) and the next level starts
-/// from a reset optimizer.
+/// the last 100 iterations (counted since the last flip or collapse, which may raise it), or the
+/// line search failed twice in a row (at a kink the descent cannot pass). Then the mesh is
+/// subdivided (if subdivisions remain) and the next level starts from a reset optimizer.
 ///
 /// **Small angles** (sec. 4.3, Fig. 18): after every step, a triangle with two corner angles
 /// below `minimum_angle` has its longest edge flipped, a triangle with one has its shortest edge
@@ -302,7 +302,10 @@ Developability_flow_result make_piecewise_developable(TriangleMesh& tm,
       info.faces = num_faces(tm);
       report.final_energy = info.energy;
       report.final_gradient_norm = info.gradient_norm;
-      history.push_back(info.energy);
+      if(info.flips + info.collapses > 0)
+        history.clear(); // a flip or collapse may raise the energy: measure progress from here
+      else
+        history.push_back(info.energy);
 
       if(!visitor(info))
       {
@@ -321,7 +324,7 @@ Developability_flow_result make_piecewise_developable(TriangleMesh& tm,
         break;
       }
       const std::size_t w = 100;
-      if(history.size() > w && info.flips + info.collapses == 0)
+      if(history.size() > w)
       {
         const double before = history[history.size() - 1 - w], now = history.back();
         if(before - now <= o.energy_tolerance * (std::max)(std::abs(before), std::abs(now)))
@@ -354,9 +357,12 @@ struct Developability_metrics
   /// share of the measured vertices that are hinges: lambda_i < 2 pi 1e-4 (1e-3)
   double hinge_share_1e4 = 0., hinge_share_1e3 = 0.;
   double angle_defect_max = 0., angle_defect_mean = 0.; ///< |Omega_i| over the interior vertices (radians)
-  /// Seam vertices: interior vertices with lambda_i >= 2 pi 1e-3 (valence 3 included: triple
-  /// points). The share of sum |Omega_i| (interior vertices) that they carry: 1 when all the
-  /// curvature sits on seams.
+  /// Seam vertices: the interior vertices that are not hinges, lambda_i >= 2 pi 1e-4 (valence 3
+  /// included: triple points and cone points). Every measured vertex is a hinge or on a seam.
+  /// The share of sum |Omega_i| (interior vertices) that the seam vertices carry: 1 when all the
+  /// curvature sits on seams, about their share of the vertices when it is spread evenly. (The
+  /// hinge threshold, not a larger one: on a refined mesh the stars along a curved seam bend
+  /// less and less, and a larger threshold would lose the seams after subdivisions.)
   double seam_curvature_share = 0.;
   std::size_t seam_vertices = 0;
   /// Seam edges join two seam vertices; seam curves are the connected components of those edges.
@@ -415,7 +421,7 @@ Developability_metrics metrics(const TriangleMesh& tm, const VertexPointMap& vpm
     ++interior;
     defect_sum += omega;
     m.angle_defect_max = (std::max)(m.angle_defect_max, omega);
-    seam[v] = d.lambda[v] >= internal::two_pi * 1e-3;
+    seam[v] = d.lambda[v] >= internal::two_pi * 1e-4;
     if(seam[v])
     {
       ++m.seam_vertices;

@@ -144,7 +144,7 @@ Small_angle_report remove_small_angles(Mesh& tm, const VertexPointMap& vpm, doub
       int small = 0;
       for(int i = 0; i < 3; ++i)
       {
-        angle[i] = corner(hs[i]); // at target(hs[i]), opposite the edge of next(hs[i])
+        angle[i] = corner(hs[i]); // at target(hs[i]); the opposite edge is prev(hs[i]) = next(next(hs[i]))
         small += angle[i] < minimum_angle;
       }
       if(small == 0)
@@ -156,7 +156,7 @@ Small_angle_report remove_small_angles(Mesh& tm, const VertexPointMap& vpm, doub
         for(int i = 1; i < 3; ++i)
           if(angle[i] > angle[big])
             big = i;
-        const halfedge_descriptor e = next(hs[big], tm); // opposite target(hs[big])
+        const halfedge_descriptor e = next(next(hs[big], tm), tm); // opposite target(hs[big])
         const halfedge_descriptor o = opposite(e, tm);
         if(is_border(o, tm))
           continue;
@@ -180,7 +180,7 @@ Small_angle_report remove_small_angles(Mesh& tm, const VertexPointMap& vpm, doub
         for(int i = 1; i < 3; ++i)
           if(angle[i] < angle[tiny])
             tiny = i;
-        const halfedge_descriptor e = next(hs[tiny], tm);
+        const halfedge_descriptor e = next(next(hs[tiny], tm), tm); // opposite the small angle
         const halfedge_descriptor o = opposite(e, tm);
         if(is_border(o, tm) || !interior_vertex(source(e, tm)) || !interior_vertex(target(e, tm)))
           continue;

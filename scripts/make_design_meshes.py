@@ -1,0 +1,77 @@
+#!/usr/bin/env python3
+# Copyright (c) 2026 The CGAL Surface Design authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Writes the two generated design meshes of data/ (standard library only, deterministic):
+
+- egg_1k.off: an icosphere (icosahedron, 4-1 subdivided 3 times: 642 vertices, 1280 faces)
+  stretched along z by 1.35, its sections widened by (1 + 0.18 z): an egg, blunt end up.
+- pebble_1k.off: the same icosphere as an ellipsoid of half-axes 1.2, 0.8, 0.5 twisted about
+  its long (x) axis by 0.9 rad per unit length: a twisted pebble.
+
+Usage: python3 scripts/make_design_meshes.py [OUTPUT_FOLDER]   (default: data/)
+"""
+import math
+import os
+import sys
+
+
+def icosphere(levels):
+    g = (1.0 + math.sqrt(5.0)) / 2.0
+    points = [(-1, g, 0), (1, g, 0), (-1, -g, 0), (1, -g, 0), (0, -1, g), (0, 1, g),
+              (0, -1, -g), (0, 1, -g), (g, 0, -1), (g, 0, 1), (-g, 0, -1), (-g, 0, 1)]
+    points = [tuple(c / math.sqrt(sum(x * x for x in p)) for c in p) for p in points]
+    faces = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4),
+             (11, 10, 2), (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8),
+             (3, 8, 9), (4, 9, 5), (2, 4, 11), (6, 2, 10), (8, 6, 7), (9, 8, 1)]
+    for _ in range(levels):
+        midpoint = {}
+
+        def mid(a, b):
+            key = (min(a, b), max(a, b))
+            if key not in midpoint:
+                p = [(x + y) / 2.0 for x, y in zip(points[a], points[b])]
+                n = math.sqrt(sum(x * x for x in p))
+                points.append(tuple(x / n for x in p))
+                midpoint[key] = len(points) - 1
+            return midpoint[key]
+
+        refined = []
+        for a, b, c in faces:
+            ab, bc, ca = mid(a, b), mid(b, c), mid(c, a)
+            refined += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
+        faces = refined
+    return points, faces
+
+
+def egg(p):
+    x, y, z = p
+    w = 1.0 + 0.18 * z
+    return (w * x, w * y, 1.35 * z)
+
+
+def pebble(p):
+    x, y, z = 1.2 * p[0], 0.8 * p[1], 0.5 * p[2]
+    a = 0.9 * x
+    return (x, math.cos(a) * y - math.sin(a) * z, math.sin(a) * y + math.cos(a) * z)
+
+
+def write_off(path, points, faces, comment):
+    with open(path, "w") as f:
+        f.write("OFF\n# %s\n%d %d 0\n" % (comment, len(points), len(faces)))
+        for p in points:
+            f.write("%.9f %.9f %.9f\n" % p)
+        for t in faces:
+            f.write("3 %d %d %d\n" % t)
+
+
+def main():
+    out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "data")
+    points, faces = icosphere(3)
+    write_off(os.path.join(out, "egg_1k.off"), [egg(p) for p in points], faces,
+              "egg: icosphere (3 levels) stretched 1.35 along z, sections widened by 1 + 0.18 z")
+    write_off(os.path.join(out, "pebble_1k.off"), [pebble(p) for p in points], faces,
+              "twisted pebble: icosphere (3 levels), ellipsoid 1.2 x 0.8 x 0.5 twisted 0.9 rad per unit about x")
+
+
+if __name__ == "__main__":
+    main()
