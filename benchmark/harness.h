@@ -152,6 +152,9 @@ struct Workload
   /// name of the reference, on the same mesh with the same solver:
   /// ratio = reference median / this workload's median.
   const char* reference = nullptr;
+  /// Long runs (a whole flow of minutes on a large mesh) run only when named by --workload or by
+  /// a preset; "all workloads" leaves them out.
+  bool on_request_only = false;
 };
 
 // --- solvers

@@ -99,6 +99,15 @@ inline const std::vector<Preset>& presets()
                "the iteration and PMP::fair",
      {"octahedron:4", "octahedron:8", "octahedron:12"},
      {"deformation", "deformation_iterative", "deformation_vs_fair", "deformation_fair"}},
+    // developability (Stein et al.): coarse inputs of about 1k faces, as the paper and the
+    // reference code's sphere (642 vertices) and bunny; the flow subdivides them twice
+    {"developability", "the developability flow on ~1k-2k-face inputs (egg, twisted pebble, bunny, sphere, spot), 2 subdivisions",
+     {"bundled:egg_1k.off", "bundled:pebble_1k.off", "bundled:bunny_1k.off", "sphere:1200", "bundled:spot_2k.off"},
+     {"developable_flow_intrinsic", "developable_flow_covariance", "developable_flow_intrinsic_width",
+      "developable_flow_covariance_max", "developable_flow_combinatorial"}},
+    {"developability_evaluation", "energy + gradient evaluations on ~8k to ~250k faces",
+     {"bundled:bunny_8k.off", "sphere:63000", "sphere:250000"},
+     {"developability_evaluation"}},
     {"embedding_sizes", "barycentric embedding scaling: octahedra of ~62k, 241k and 1M vertices",
      {"octahedron:50", "octahedron:100", "octahedron:204"},
      {"embedding", "deformation"}},

@@ -12,6 +12,7 @@
 #include "workload_stripes.h"
 #include "workload_direction_fields.h"
 #include "workload_embedding.h"
+#include "workload_developability.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -62,6 +63,21 @@ const std::vector<Workload>& workloads()
      "the 10 deformation steps by PMP::fair (continuity 0, uniform weights, refactors each call); "
      "phase full",
      &deformation_fair_workload},
+    {"developability_evaluation",
+     "one energy + gradient evaluation per developability energy, sequential and with TBB (2 threads); "
+     "a phase per energy",
+     &developability_evaluation_workload, Solver_use::none},
+    {"developable_flow_intrinsic",
+     "make_piecewise_developable, intrinsic energy, 2 subdivisions; phases flow, metrics",
+     &developable_flow_workload<CGAL::Surface_design::Developability_energy::intrinsic>, Solver_use::none, nullptr, true},
+    {"developable_flow_covariance", "the same with the covariance energy (E^lambda)",
+     &developable_flow_workload<CGAL::Surface_design::Developability_energy::covariance>, Solver_use::none, nullptr, true},
+    {"developable_flow_intrinsic_width", "the same with the intrinsic width energy (B.5.1; the CLI's default)",
+     &developable_flow_workload<CGAL::Surface_design::Developability_energy::intrinsic_width>, Solver_use::none, nullptr, true},
+    {"developable_flow_covariance_max", "the same with the max covariance energy (eq. 6)",
+     &developable_flow_workload<CGAL::Surface_design::Developability_energy::covariance_max>, Solver_use::none, nullptr, true},
+    {"developable_flow_combinatorial", "the same with the combinatorial energy (E^P)",
+     &developable_flow_workload<CGAL::Surface_design::Developability_energy::combinatorial>, Solver_use::none, nullptr, true},
   };
   return table;
 }
@@ -291,11 +307,13 @@ int parse_options(int argc, char** argv, Options& options)
     }
   }
 
-  if(options.workloads.empty() && preset_given && !preset_wants_all)
+  if(options.workloads.empty() && preset_given)
     options.workloads = preset_workloads;
-  if(options.workloads.empty())
+  if(options.workloads.empty() || (preset_given && preset_wants_all))
     for(const Workload& w : workloads())
-      options.workloads.push_back(&w);
+      if(!w.on_request_only && std::find(options.workloads.begin(), options.workloads.end(), &w) ==
+                                  options.workloads.end())
+        options.workloads.push_back(&w);
   if(options.meshes.empty())
     for(const char* spec : find_preset("quick")->sources)
     {

@@ -1,0 +1,126 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Workloads of the developability package (Stein, Grinspun & Crane 2018):
+// `developability_evaluation` (one energy + gradient evaluation per energy, sequential and with
+// TBB: evaluations per second and the parallel speed-up) and `developable_flow_<energy>` (the
+// whole flow with two 4-1 subdivisions, as the CLI runs it by default: time, iterations, the
+// time to reach 90% hinges, and the metrics of the result).
+
+#ifndef CGAL_SURFACE_DESIGN_BENCHMARK_WORKLOAD_DEVELOPABILITY_H
+#define CGAL_SURFACE_DESIGN_BENCHMARK_WORKLOAD_DEVELOPABILITY_H
+
+#include "harness.h"
+
+#include <CGAL/Surface_design/developability.h>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#if defined(CGAL_LINKED_WITH_TBB)
+#include <tbb/global_control.h>
+#endif
+
+namespace benchmark {
+
+namespace developability_detail {
+
+namespace SD = CGAL::Surface_design;
+namespace SDI = CGAL::Surface_design::internal;
+
+/// The energies the flow workloads and the evaluation workload cover.
+inline const std::vector<SD::Developability_energy>& energies()
+{
+  static const std::vector<SD::Developability_energy> e{
+    SD::Developability_energy::intrinsic,     SD::Developability_energy::covariance,
+    SD::Developability_energy::intrinsic_width, SD::Developability_energy::covariance_max,
+    SD::Developability_energy::combinatorial, SD::Developability_energy::squared_angle_defect};
+  return e;
+}
+
+/// Share of the interior vertices of valence >= 4 whose covariance lambda is below 2 pi 1e-4.
+inline double hinge_share(const Mesh& mesh)
+{
+  return SD::developability_metrics(mesh, SD::parameters::developability_energy(SD::Developability_energy::covariance))
+    .hinge_share_1e4;
+}
+
+} // namespace developability_detail
+
+/// One evaluation of every energy and its gradient on the mesh (all interior stars of valence
+/// >= 4), sequential (phase `<energy>`) and with TBB on 2 threads (phase `<energy>_tbb`, when TBB
+/// is linked). 1000 / ms is the number of evaluations per second.
+inline void developability_evaluation_workload(const Mesh& mesh, const std::string&, Run& run)
+{
+  using namespace developability_detail;
+  const SDI::Mesh_indices<Mesh> idx(mesh);
+  SDI::validate_mesh(idx, mesh.points());
+  const SDI::Vertex_stars stars = SDI::vertex_stars(idx, false, 4);
+  std::vector<Eigen::Vector3d> x(idx.number_of_vertices()), gradient;
+  for(std::size_t v = 0; v < x.size(); ++v)
+    x[v] = SDI::position(mesh.points(), idx.vertex(v));
+  // untimed: sizes the gradient and warms the caches, so that the first timed phase is not the
+  // only one to pay for them
+  SDI::developability_energy(stars, x, energies().front(), &gradient, nullptr, false);
+  for(SD::Developability_energy e : energies())
+  {
+    double sequential = 0., parallel = 0.;
+    run.phase(SD::to_string(e), [&] { sequential = SDI::developability_energy(stars, x, e, &gradient, nullptr, false); });
+#if defined(CGAL_LINKED_WITH_TBB)
+    {
+      tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 2);
+      run.phase(std::string(SD::to_string(e)) + "_tbb",
+                [&] { parallel = SDI::developability_energy(stars, x, e, &gradient, nullptr, true); });
+    }
+    run.check(std::string(SD::to_string(e)) + ": |parallel - sequential| (bitwise identical)",
+              std::abs(parallel - sequential), 1e-300);
+#else
+    (void)parallel;
+#endif
+  }
+}
+
+/// The flow of the CLI's default run (two 4-1 subdivisions, at most 1000 iterations per level)
+/// with one energy. Phases: `flow`, `metrics`. Checks: hinge share of the result (as 1 - share
+/// < 0.2: at least 80% hinges), Hausdorff distance to the input / bbox diagonal, iterations,
+/// evaluations, and the flow time at which 90% of the measured vertices first were hinges in the
+/// last level (looked at after every iteration when checks are on; the time spent looking is
+/// subtracted; infinite if never).
+template <CGAL::Surface_design::Developability_energy energy>
+void developable_flow_workload(const Mesh& input, const std::string&, Run& run)
+{
+  using namespace developability_detail;
+  Mesh mesh = input;
+  SD::Developability_flow_result result;
+  double reached_90 = std::numeric_limits<double>::infinity(), looking = 0.;
+  const auto start = Clock::now();
+  run.phase("flow", [&] {
+    result = SD::make_piecewise_developable(
+      mesh, SD::parameters::developability_energy(energy, SD::parameters::number_of_subdivisions(std::size_t(2)))
+              .visitor([&](const SD::Developability_iteration& it) {
+                if(run.checks_enabled() && it.level == 2 && reached_90 == std::numeric_limits<double>::infinity())
+                {
+                  const auto look = Clock::now();
+                  if(hinge_share(mesh) >= 0.9)
+                    reached_90 = std::chrono::duration<double, std::milli>(look - start).count() - looking;
+                  looking += std::chrono::duration<double, std::milli>(Clock::now() - look).count();
+                }
+                return true;
+              }));
+  });
+  SD::Developability_metrics m;
+  run.phase("metrics", [&] { m = SD::developability_metrics(mesh, input); });
+  run.check("1 - hinge share (lambda < 2 pi 1e-4)", 1. - m.hinge_share_1e4, 0.2);
+  run.check("Hausdorff distance / bbox diagonal", m.hausdorff_distance, 0.06);
+  run.check("iterations", double(result.iterations), 3001.);
+  run.check("evaluations", double(result.evaluations), 1e9);
+  run.check("ms of flow to 90% hinges (last level)", reached_90, 30000.);
+  run.check("seam curvature share (informative)", m.seam_curvature_share, 2.);
+}
+
+} // namespace benchmark
+
+#endif // CGAL_SURFACE_DESIGN_BENCHMARK_WORKLOAD_DEVELOPABILITY_H
