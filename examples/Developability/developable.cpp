@@ -30,8 +30,9 @@ const char* usage =
   "  to make every vertex star a hinge, except along a sparse set of seam curves: a piecewise\n"
   "  developable design that bends from flat sheets. Between levels the mesh is subdivided 4-1.\n"
   "options:\n"
-  "  --energy E            intrinsic (default), covariance, max-covariance, intrinsic-width,\n"
-  "                        combinatorial, combinatorial-max, angle-defect (the crumpling baseline)\n"
+  "  --energy E            intrinsic-width (default: of all energies the one that moves the\n"
+  "                        shape least), intrinsic, covariance, max-covariance, combinatorial,\n"
+  "                        combinatorial-max, angle-defect (the crumpling baseline)\n"
   "  --subdivisions N      4-1 subdivisions, 0..4 (default 2: for a coarse mesh of about 1k faces)\n"
   "  --iterations N        largest number of descent iterations per level (default 1000)\n"
   "  --descent lbfgs|gradient   L-BFGS with the Lewis-Overton line search (default) or gradient descent\n"
@@ -46,7 +47,7 @@ const char* usage =
 struct Options
 {
   std::string input, output, picture, up = "+Y";
-  SD::Developability_energy energy = SD::Developability_energy::intrinsic;
+  SD::Developability_energy energy = SD::Developability_energy::intrinsic_width;
   std::size_t subdivisions = 2, iterations = 1000, progress = 100;
   SD::Developability_descent descent = SD::Developability_descent::lbfgs;
   double minimum_angle = 0.01;
@@ -172,7 +173,7 @@ void write_picture(const Mesh& mesh, const std::vector<double>& lambda, const Op
   }
   for(auto v : vertices(mesh))
   {
-    if(lambda[std::size_t(v)] < 2. * CGAL_PI * 1e-3 || is_border(v, mesh))
+    if(lambda[std::size_t(v)] < 2. * CGAL_PI * 1e-4 || is_border(v, mesh))
       continue;
     Eigen::Vector3d n = Eigen::Vector3d::Zero();
     for(auto f : faces_around_target(halfedge(v, mesh), mesh))
