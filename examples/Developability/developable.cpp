@@ -41,7 +41,8 @@ const char* usage =
   "  --keep-valence-3      let valence-3 vertices carry energy too (default: omitted, triple points)\n"
   "  --progress N          a progress line every N iterations (default 100; 0: none)\n"
   "  --output OUT.off      the design (.off, .obj, .ply, .stl); required\n"
-  "  --picture OUT.png     faces flat-shaded, edges darker the more they bend, seam vertices red\n"
+  "  --picture OUT.png     faces flat-shaded, edges darker the more they bend, vertices far from\n"
+  "                        hinges (lambda >= 2pi 1e-3) red\n"
   "  --up +Y|+Z|...        up direction of the picture (default +Y)\n";
 
 struct Options
@@ -173,7 +174,7 @@ void write_picture(const Mesh& mesh, const std::vector<double>& lambda, const Op
   }
   for(auto v : vertices(mesh))
   {
-    if(lambda[std::size_t(v)] < 2. * CGAL_PI * 1e-4 || is_border(v, mesh))
+    if(lambda[std::size_t(v)] < 2. * CGAL_PI * 1e-3 || is_border(v, mesh))
       continue;
     Eigen::Vector3d n = Eigen::Vector3d::Zero();
     for(auto f : faces_around_target(halfedge(v, mesh), mesh))
@@ -186,7 +187,7 @@ void write_picture(const Mesh& mesh, const std::vector<double>& lambda, const Op
   }
   const std::string vtk_path = outputs.stage(o.picture + ".vtk");
   vtk.write(vtk_path);
-  // 0..1 grey to white (faces), 1..2 light to dark grey (edges), 3 red (seam vertices)
+  // 0..1 grey to white (faces), 1..2 light to dark grey (edges), 3 red (vertices far from hinges)
   const std::string colormap = "0,0.55,0.58,0.62,0.333,0.97,0.97,0.96,0.334,0.72,0.72,0.72,0.666,0.08,0.08,0.1,1,0.85,0.1,0.1";
   example::render_png(vtk_path, outputs.stage(o.picture), "shade", 0., 3., o.up, colormap);
 }
