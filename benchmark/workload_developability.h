@@ -48,6 +48,16 @@ inline double hinge_share(const Mesh& mesh)
     .hinge_share_1e4;
 }
 
+/// Bounding-box diagonal of a mesh.
+inline double diagonal(const Mesh& mesh)
+{
+  CGAL::Bbox_3 box;
+  for(auto v : vertices(mesh))
+    box += mesh.point(v).bbox();
+  return std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                   CGAL::square(box.zmax() - box.zmin()));
+}
+
 } // namespace developability_detail
 
 /// One evaluation of every energy and its gradient on the mesh (all interior stars of valence
@@ -119,6 +129,20 @@ void developable_flow_workload(const Mesh& input, const std::string&, Run& run)
   run.check("evaluations", double(result.evaluations), 1e9);
   run.check("ms of flow to 90% hinges (last level)", reached_90, 30000.);
   run.check("seam curvature share (informative)", m.seam_curvature_share, 2.);
+  // the other figures of developability_metrics(), informative (bounds that always hold)
+  run.check("lambda max (informative)", m.lambda_max, 3.);
+  run.check("lambda mean (informative)", m.lambda_mean, 3.);
+  run.check("lambda p95 (informative)", m.lambda_p95, 3.);
+  run.check("angle defect max (informative)", m.angle_defect_max, 7.);
+  run.check("angle defect mean (informative)", m.angle_defect_mean, 7.);
+  run.check("seam curves (informative)", double(m.seam_curves), 1e9);
+  run.check("seam length / bbox diagonal of the input (informative)", m.seam_length / diagonal(input), 1e9);
+  run.check("smallest angle, degrees (informative)", m.minimum_angle * 180. / SDI::pi, 61.);
+  run.check("flips (informative)", double(result.flips), 1e9);
+  run.check("collapses (informative)", double(result.collapses), 1e9);
+  run.check("seconds: evaluation (informative)", result.seconds_evaluation, 1e9);
+  run.check("seconds: small angles (informative)", result.seconds_remeshing, 1e9);
+  run.check("seconds: subdivision (informative)", result.seconds_subdivision, 1e9);
 }
 
 } // namespace benchmark
