@@ -266,23 +266,7 @@ int run(const Options& o)
 
 int main(int argc, char** argv)
 {
-  if(argc < 2)
-  {
-    std::cerr << usage;
-    return 1;
-  }
-  try
-  {
+  return example::run_main("developable", usage, argc, [&] {
     return run(parse(argc, argv));
-  }
-  catch(const example::Usage_error& e)
-  {
-    std::cerr << "developable: " << e.what() << "\n(run without arguments for the usage)\n";
-    return 1;
-  }
-  catch(const std::exception& e)
-  {
-    std::cerr << "developable: " << e.what() << '\n';
-    return 1;
-  }
+  });
 }

@@ -310,24 +310,8 @@ int run(const Options& o)
 
 int main(int argc, char** argv)
 {
-  if(argc < 2)
-  {
-    std::cerr << usage;
-    return 1;
-  }
-  try
-  {
+  return example::run_main("direction_field", usage, argc, [&] {
     const Options o = parse(argc, argv);
     return example::with_solver(o.solver, [&o](auto traits) { return run<decltype(traits)>(o); });
-  }
-  catch(const example::Usage_error& e)
-  {
-    std::cerr << "direction_field: " << e.what() << "\n(run without arguments for the usage)\n";
-    return 1;
-  }
-  catch(const std::exception& e)
-  {
-    std::cerr << "direction_field: " << e.what() << '\n';
-    return 1;
-  }
+  });
 }

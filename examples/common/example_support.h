@@ -52,6 +52,32 @@ struct Usage_error : std::invalid_argument
   using std::invalid_argument::invalid_argument;
 };
 
+/// The `main` of a command-line program: the usage when there are no arguments, else `body()`'s
+/// exit status; a Usage_error or any other exception ends the program with status 1 and
+/// "NAME: message" on stderr.
+template <class Body>
+int run_main(const char* name, const char* usage, int argc, Body&& body)
+{
+  if(argc < 2)
+  {
+    std::cerr << usage;
+    return 1;
+  }
+  try
+  {
+    return body();
+  }
+  catch(const Usage_error& e)
+  {
+    std::cerr << name << ": " << e.what() << "\n(run without arguments for the usage)\n";
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << name << ": " << e.what() << '\n';
+  }
+  return 1;
+}
+
 
 /// Reads OFF, OBJ, PLY, STL... into a Surface_mesh whose vertices and faces keep the file's order
 /// (vertex i and face i of the file are Mesh::Vertex_index(i) and Mesh::Face_index(i)).
