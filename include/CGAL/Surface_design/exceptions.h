@@ -24,7 +24,8 @@ enum class Mesh_defect
   isolated_vertex,        ///< a vertex has no incident face
   not_triangle,           ///< a face is not a triangle
   non_manifold_vertex,    ///< the faces around a vertex form more than one fan
-  degenerate_face         ///< a face has (numerically) zero area
+  degenerate_face,        ///< a face has (numerically) zero area
+  not_a_disk              ///< a connected component is not a topological disk (flattening needs one boundary loop and Euler characteristic 1)
 };
 
 /// \ingroup PkgSurfaceDesignRef
@@ -40,6 +41,7 @@ inline const char* to_string(Mesh_defect d)
     case Mesh_defect::not_triangle: return "not a triangle mesh";
     case Mesh_defect::non_manifold_vertex: return "non-manifold vertex";
     case Mesh_defect::degenerate_face: return "degenerate face";
+    case Mesh_defect::not_a_disk: return "not a topological disk";
   }
   return "unknown defect";
 }

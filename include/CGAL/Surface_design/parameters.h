@@ -38,6 +38,17 @@ enum parallel_evaluation_t { parallel_evaluation };
 enum descent_method_t { descent_method };
 enum vertex_energy_map_t { vertex_energy_map };
 enum vertex_gradient_map_t { vertex_gradient_map };
+enum cut_tolerance_t { cut_tolerance };
+enum ruling_alignment_weight_t { ruling_alignment_weight };
+enum boundary_scale_factor_map_t { boundary_scale_factor_map };
+enum boundary_turning_angle_map_t { boundary_turning_angle_map };
+enum face_log_area_scale_map_t { face_log_area_scale_map };
+enum sheet_size_t { sheet_size };
+enum pattern_scale_t { pattern_scale };
+enum sheet_margin_t { sheet_margin };
+enum piece_spacing_t { piece_spacing };
+enum seam_vertex_index_map_t { seam_vertex_index_map };
+enum fold_angle_t { fold_angle };
 } // namespace internal_np
 
 /// \ingroup PkgSurfaceDesignRef
@@ -89,6 +100,17 @@ CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(parallel_evaluation)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(descent_method)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(vertex_energy_map)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(vertex_gradient_map)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(cut_tolerance)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(ruling_alignment_weight)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(boundary_scale_factor_map)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(boundary_turning_angle_map)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(face_log_area_scale_map)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(sheet_size)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(pattern_scale)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(sheet_margin)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(piece_spacing)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(seam_vertex_index_map)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(fold_angle)
 
 #undef CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER
 

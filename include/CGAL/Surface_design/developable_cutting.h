@@ -1,0 +1,202 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Cutting a (piecewise-)developable design into disks that flatten with little distortion
+// (Stein, Grinspun & Crane 2018, sec. 4.4), and cutting any triangle mesh along edges.
+
+#ifndef CGAL_SURFACE_DESIGN_DEVELOPABLE_CUTTING_H
+#define CGAL_SURFACE_DESIGN_DEVELOPABLE_CUTTING_H
+
+#include <CGAL/Surface_design/exceptions.h>
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/cut_mesh.h>
+#include <CGAL/Surface_design/internal/Core/named_parameters.h>
+#include <CGAL/Surface_design/internal/Core/validation.h>
+#include <CGAL/Surface_design/internal/Developability/cut_graph.h>
+#include <CGAL/Surface_design/parameters.h>
+
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_design {
+
+/// \ingroup PkgDevelopabilityRef
+/// What `compute_developable_cut()` found.
+struct Developable_cut_report
+{
+  std::size_t terminals = 0;       ///< interior vertices with lambda_i > epsilon
+  std::size_t boundary_loops = 0;  ///< boundary loops of the input (each joined to the cut)
+  std::size_t generator_loops = 0; ///< loops added because of genus (2g per component of genus g)
+  std::size_t cut_edges = 0;       ///< edges of the cut
+  double cut_length = 0.;          ///< total length of the cut edges
+  std::size_t pieces = 0;          ///< disks the cut leaves
+  double lambda_max = 0.;          ///< largest lambda_i over the interior vertices
+};
+
+/// \ingroup PkgDevelopabilityRef
+///
+/// Computes a cut along which a (piecewise-)developable design opens into topological disks that
+/// flatten with little distortion (Stein, Grinspun & Crane 2018, sec. 4.4).
+///
+/// **What is cut.** The *terminals* are the interior vertices whose covariance measure lambda_i
+/// (eq. 3: the smallest eigenvalue of the angle-weighted covariance of the face normals of the
+/// star; 0 on hinges and flat stars) exceeds `cut_tolerance` epsilon: the vertices a stiff sheet
+/// cannot follow without cutting. The cut is a short tree through all of them, joined to every
+/// boundary loop (a Steiner tree by Mehlhorn's metric-closure minimum spanning tree, each
+/// boundary loop one zero-cost super-terminal), plus 2g generator loops on a component of genus
+/// g (greedy system of loops through the shortest paths from the tree), plus, on a closed
+/// component whose tree has fewer than two edges, its cheapest edges at its terminal (a sphere
+/// opens into a disk only along two edges or more). Edge cost: |e| (1 + w (|u_a x e^| +
+/// |u_b x e^|) / 2), u the unit eigenvector of lambda at each end (the ruling direction), so that
+/// cuts follow rulings (paper: length times alignment). Every piece is checked to be a disk
+/// (one boundary loop, Euler characteristic 1). Smaller epsilon: more cuts, less distortion.
+///
+/// \param tm a triangle mesh (validated: manifold, no degenerate face, finite coordinates), any
+///        genus, boundaries and number of components
+/// \param cut_edges output iterator receiving the `edge_descriptor`s of the cut
+/// \param np optional named parameters among:
+/// - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
+/// - `cut_tolerance` (double >= 0): epsilon; default 1e-3 (the paper's Fig. 20 uses .01 to .001)
+/// - `ruling_alignment_weight` (double >= 0): w; default 1 (0: shortest cuts)
+/// - `vertex_energy_map` (writable vertex -> double): receives lambda_i of every vertex
+/// - `parallel_evaluation` (bool): default true (TBB)
+/// - index maps (`vertex_index_map`, ...)
+///
+/// \returns what was cut
+/// \throws Invalid_mesh, Invalid_parameter (nothing written then)
+/// Complexity: O(|E| log |V|) (two Dijkstra searches and two Kruskal passes).
+template <class TriangleMesh, class EdgeOutputIterator,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Developable_cut_report compute_developable_cut(const TriangleMesh& tm, EdgeOutputIterator cut_edges,
+                                               const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  internal::Cut_graph_options o;
+  o.tolerance = internal::require_nonnegative(
+    "cut_tolerance", choose_parameter(get_parameter(np, internal_np::cut_tolerance), o.tolerance));
+  o.alignment_weight = internal::require_nonnegative(
+    "ruling_alignment_weight", choose_parameter(get_parameter(np, internal_np::ruling_alignment_weight), 1.));
+  o.parallel = choose_parameter(get_parameter(np, internal_np::parallel_evaluation), true);
+  const auto vpm = internal::const_vertex_point_map(tm, np);
+  const internal::Mesh_indices<TriangleMesh> idx(tm, np);
+  internal::validate_mesh(idx, vpm);
+
+  const internal::Cut_graph g = internal::developable_cut_graph(idx, vpm, o);
+  Developable_cut_report r;
+  r.terminals = g.terminals.size();
+  r.boundary_loops = g.boundary_loops;
+  r.generator_loops = g.generator_loops;
+  r.pieces = g.topology.pieces.size();
+  for(std::size_t v = 0; v < idx.number_of_vertices(); ++v)
+    if(!is_border(idx.vertex(v), tm))
+      r.lambda_max = (std::max)(r.lambda_max, g.lambda[v]);
+  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+    if(g.edge_is_cut[e])
+    {
+      ++r.cut_edges;
+      const auto ab = idx.edge_vertices(e);
+      r.cut_length += (internal::position(vpm, idx.vertex(ab.first)) - internal::position(vpm, idx.vertex(ab.second))).norm();
+    }
+  internal::if_given(np, internal_np::vertex_energy_map, [&](auto map) {
+    for(std::size_t v = 0; v < idx.number_of_vertices(); ++v)
+      put(map, idx.vertex(v), g.lambda[v]);
+  });
+  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+    if(g.edge_is_cut[e])
+      *cut_edges++ = idx.edge(e);
+  return r;
+}
+
+/// \ingroup PkgDevelopabilityRef
+///
+/// Copies `tm` into `out` cut open along `edges`: every vertex becomes one vertex per fan of its
+/// faces between cut or border edges, so each cut edge becomes two boundary edges. An uncut mesh
+/// is copied with the same vertex and face order. Edges on the border are already open and are
+/// ignored.
+///
+/// \param tm a triangle mesh (validated: manifold, no degenerate face)
+/// \param edges a range of `edge_descriptor`s of `tm`
+/// \param out the mesh that receives the cut copy (a `MutableFaceGraph`; normally empty: the
+///        copy is added to what it holds)
+/// \param np_in optional named parameters of `tm`:
+/// - `vertex_point_map`
+/// - `vertex_to_vertex_output_iterator`: receives a `std::pair` (vertex of `tm`, vertex of
+///   `out`) for every vertex of `out` (several per cut vertex of `tm`)
+/// - `face_to_face_output_iterator`: receives (face of `tm`, face of `out`) for every face
+/// \param np_out optional named parameters of `out`: `vertex_point_map`
+///
+/// \returns the number of connected components (pieces) of the cut mesh
+/// \throws Invalid_mesh (`tm`), Invalid_constraints (an edge is not an edge of `tm`); `out` is
+///         not modified then
+template <class TriangleMesh, class EdgeRange, class OutputMesh,
+          class NamedParametersIn = CGAL::parameters::Default_named_parameters,
+          class NamedParametersOut = CGAL::parameters::Default_named_parameters>
+std::size_t cut_mesh_along_edges(const TriangleMesh& tm, const EdgeRange& edges, OutputMesh& out,
+                                 const NamedParametersIn& np_in = CGAL::parameters::default_values(),
+                                 const NamedParametersOut& np_out = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const auto vpm = internal::const_vertex_point_map(tm, np_in);
+  const internal::Mesh_indices<TriangleMesh> idx(tm, np_in);
+  internal::validate_mesh(idx, vpm);
+  std::vector<bool> edge_is_cut(idx.number_of_edges(), false);
+  for(const auto& e : edges)
+  {
+    const auto h = CGAL::halfedge(e, tm);
+    const auto s = source(h, tm), t = target(h, tm);
+    const auto found = idx.find(s) != internal::npos && idx.find(t) != internal::npos
+                         ? CGAL::halfedge(s, t, tm)
+                         : std::make_pair(h, false);
+    if(!found.second)
+      throw Invalid_constraints("an edge to cut is not an edge of the mesh");
+    edge_is_cut[idx.edge_index(found.first)] = true;
+  }
+  const internal::Cut_corners corners = internal::cut_corners(idx, edge_is_cut);
+  const internal::Cut_topology topology = internal::cut_topology(idx, edge_is_cut, corners);
+  const std::vector<std::array<std::size_t, 3>> faces = internal::cut_faces(idx, corners);
+
+  using Out_vertex = typename boost::graph_traits<OutputMesh>::vertex_descriptor;
+  auto out_vpm = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point),
+                                  get_property_map(CGAL::vertex_point, out));
+  std::vector<Out_vertex> copies(corners.number_of_copies());
+  auto vertex_pairs = get_parameter(np_in, CGAL::internal_np::vertex_to_vertex_output_iterator);
+  auto face_pairs = get_parameter(np_in, CGAL::internal_np::face_to_face_output_iterator);
+  constexpr bool output_vertices =
+    !std::is_same<std::decay_t<decltype(vertex_pairs)>, CGAL::internal_np::Param_not_found>::value;
+  constexpr bool output_faces =
+    !std::is_same<std::decay_t<decltype(face_pairs)>, CGAL::internal_np::Param_not_found>::value;
+  for(std::size_t c = 0; c < copies.size(); ++c)
+  {
+    copies[c] = add_vertex(out);
+    const auto v = idx.vertex(corners.original_vertex[c]);
+    put(out_vpm, copies[c], get(vpm, v));
+    if constexpr(output_vertices)
+      *vertex_pairs++ = std::make_pair(v, copies[c]);
+  }
+  for(std::size_t f = 0; f < faces.size(); ++f)
+  {
+    const std::array<Out_vertex, 3> triangle = {copies[faces[f][0]], copies[faces[f][1]], copies[faces[f][2]]};
+    const auto new_face = CGAL::Euler::add_face(triangle, out);
+    if constexpr(output_faces)
+      *face_pairs++ = std::make_pair(idx.face(f), new_face);
+    else
+      (void)new_face;
+  }
+  return topology.pieces.size();
+}
+
+} // namespace Surface_design
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_DESIGN_DEVELOPABLE_CUTTING_H

@@ -1,0 +1,201 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Fabrication patterns: flattened pieces laid out without overlap on sheets, written as SVG with
+// cut lines, fold lines, matching seam labels and a scale bar.
+
+#ifndef CGAL_SURFACE_DESIGN_FABRICATION_PATTERN_H
+#define CGAL_SURFACE_DESIGN_FABRICATION_PATTERN_H
+
+#include <CGAL/Surface_design/exceptions.h>
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/named_parameters.h>
+#include <CGAL/Surface_design/internal/Core/topology.h>
+#include <CGAL/Surface_design/internal/Flattening/pattern_layout.h>
+#include <CGAL/Surface_design/parameters.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_design {
+
+/// \ingroup PkgFlatteningRef
+/// Where `lay_out_flattened_pieces()` put every piece. Lengths on the sheet are in millimetres.
+struct Fabrication_layout
+{
+  double sheet_width = 210., sheet_height = 297.; ///< mm
+  double margin = 10., spacing = 5.;              ///< mm
+  double scale = 1.;     ///< mm on the sheet per unit of the model
+  double sheet_gap = 20.; ///< mm between two sheets placed side by side in the plane of `uv`
+  std::size_t sheets = 0;
+  struct Piece
+  {
+    std::size_t sheet = 0;
+    double x = 0., y = 0., width = 0., height = 0.; ///< bounding box on its sheet, mm from the sheet's lower left corner
+    double rotation = 0.; ///< radians the piece was turned by
+    std::size_t faces = 0;
+  };
+  std::vector<Piece> pieces; ///< per connected component, in the order of their smallest vertex index
+};
+
+/// \ingroup PkgFlatteningRef
+///
+/// Moves every flattened piece (connected component) of `tm` rigidly in the plane so that the
+/// pieces lie without overlap on sheets of a given size: each piece turned to its smallest
+/// bounding rectangle (then by 90 degrees if only that fits), then packed in shelves, tallest
+/// first, on as many sheets as needed. Rigid motions change no distortion. Sheet k occupies
+/// [k (W + G), k (W + G) + W] x [0, H] / scale in the coordinates of `uv` (model units, y up).
+///
+/// \param tm a triangle mesh (its faces' connectivity defines the pieces)
+/// \param uv a readable and writable vertex -> `Point_2` map (the flattening; overwritten)
+/// \param np optional named parameters among:
+/// - `sheet_size` (`std::pair<double, double>`): width and height in mm; default A4 (210, 297)
+/// - `pattern_scale` (double >= 0): mm per model unit; default 0: the largest "round" scale
+///   (1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8 times a power of ten) at which every piece fits
+/// - `sheet_margin` (double >= 0, mm): default 10; `piece_spacing` (double >= 0, mm): default 5
+///
+/// \throws Invalid_parameter a size is not finite or out of range, or a piece does not fit on a
+///         sheet at the given scale; `uv` is not written then
+template <class TriangleMesh, class UVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Fabrication_layout lay_out_flattened_pieces(const TriangleMesh& tm, UVMap uv,
+                                            const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Fabrication_layout layout;
+  const std::pair<double, double> size =
+    choose_parameter(get_parameter(np, internal_np::sheet_size), std::pair<double, double>(210., 297.));
+  layout.sheet_width = internal::require_in_range("sheet_size", size.first, 1., 1e6);
+  layout.sheet_height = internal::require_in_range("sheet_size", size.second, 1., 1e6);
+  layout.margin = internal::require_nonnegative("sheet_margin",
+                                                choose_parameter(get_parameter(np, internal_np::sheet_margin), 10.));
+  layout.spacing = internal::require_nonnegative("piece_spacing",
+                                                 choose_parameter(get_parameter(np, internal_np::piece_spacing), 5.));
+  const double scale = internal::require_nonnegative("pattern_scale",
+                                                     choose_parameter(get_parameter(np, internal_np::pattern_scale), 0.));
+  if(!(2. * layout.margin < (std::min)(layout.sheet_width, layout.sheet_height)))
+    throw Invalid_parameter("sheet_margin", "margins of " + internal::to_text(layout.margin) +
+                                              " mm leave no room on a sheet of " + internal::to_text(layout.sheet_width) +
+                                              " x " + internal::to_text(layout.sheet_height) + " mm");
+  layout.sheet_gap = 20.;
+
+  const internal::Mesh_indices<TriangleMesh> idx(tm, np);
+  const internal::Boundary_loops loops = internal::boundary_loops(idx);
+  const internal::Components comps = internal::connected_components(idx, loops);
+  std::vector<Eigen::Vector2d> p(idx.number_of_vertices());
+  for(std::size_t v = 0; v < p.size(); ++v)
+  {
+    const auto& q = get(uv, idx.vertex(v));
+    p[v] = Eigen::Vector2d(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
+    if(!p[v].allFinite())
+      throw Invalid_parameter("uv", "the 2-D coordinates of vertex " + std::to_string(v) + " are not finite");
+  }
+  internal::Pattern_packing packing;
+  packing.sheet_width = layout.sheet_width;
+  packing.sheet_height = layout.sheet_height;
+  packing.margin = layout.margin;
+  packing.spacing = layout.spacing;
+  packing.sheet_gap = layout.sheet_gap;
+  const std::vector<Eigen::Vector2d> moved = internal::pack_pieces(p, comps.vertex_component, comps.size(), scale, packing);
+  layout.scale = packing.scale;
+  layout.sheets = packing.sheets;
+  for(const internal::Packed_piece& piece : packing.pieces)
+  {
+    Fabrication_layout::Piece out;
+    out.sheet = piece.sheet;
+    out.x = piece.x;
+    out.y = piece.y;
+    out.width = piece.width;
+    out.height = piece.height;
+    out.rotation = piece.rotation;
+    layout.pieces.push_back(out);
+  }
+  for(std::size_t f = 0; f < idx.number_of_faces(); ++f)
+    ++layout.pieces[comps.face_component[f]].faces;
+  using Point_2 = typename boost::property_traits<UVMap>::value_type;
+  for(std::size_t v = 0; v < p.size(); ++v)
+    put(uv, idx.vertex(v), Point_2(moved[v].x(), moved[v].y()));
+  return layout;
+}
+
+/// \ingroup PkgFlatteningRef
+///
+/// Writes the cutting pattern of laid-out pieces (`lay_out_flattened_pieces()`) as SVG, in
+/// millimetres (one drawing, the sheets side by side, each outlined in grey): every piece's
+/// boundary as a solid black cut line, its number at its centre; interior edges whose dihedral
+/// angle in space exceeds `fold_angle` as fold lines (blue dashes: mountain folds, red dash-dots:
+/// valley folds, seen from the side the faces' orientation points to); the two sides of every
+/// seam curve labelled with the same number; and a scale bar on every sheet.
+///
+/// \param os the stream
+/// \param tm the flattened mesh (its pieces are the sides of the seams)
+/// \param uv a readable vertex -> `Point_2` map, laid out
+/// \param layout the layout that placed them
+/// \param np optional named parameters among:
+/// - `vertex_point_map`, index maps
+/// - `seam_vertex_index_map` (readable vertex -> integer): the vertex of the uncut mesh that a
+///   vertex copies (e.g. from `cut_mesh_along_edges()`'s `vertex_to_vertex_output_iterator`);
+///   two boundary edges joining copies of the same two vertices are the two sides of a seam.
+///   Without it no seam is labelled.
+/// - `fold_angle` (double in [0, pi], radians): default 5 degrees; pi draws no fold line
+///
+/// \throws Invalid_parameter (`fold_angle`); std::ios_base::failure is not thrown, check `os`
+template <class TriangleMesh, class UVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+void write_fabrication_pattern_svg(std::ostream& os, const TriangleMesh& tm, const UVMap& uv,
+                                   const Fabrication_layout& layout,
+                                   const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const double fold_angle = internal::require_in_range(
+    "fold_angle", choose_parameter(get_parameter(np, internal_np::fold_angle), 5. * internal::pi / 180.), 0., internal::pi);
+  const auto vpm = internal::const_vertex_point_map(tm, np);
+  const internal::Mesh_indices<TriangleMesh> idx(tm, np);
+  internal::Pattern_drawing drawing;
+  drawing.layout.sheet_width = layout.sheet_width;
+  drawing.layout.sheet_height = layout.sheet_height;
+  drawing.layout.margin = layout.margin;
+  drawing.layout.sheet_gap = layout.sheet_gap;
+  drawing.layout.scale = layout.scale;
+  drawing.layout.sheets = layout.sheets;
+  drawing.fold_angle = fold_angle;
+  const std::size_t nv = idx.number_of_vertices();
+  drawing.uv.resize(nv);
+  drawing.position.resize(nv);
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    const auto& q = get(uv, idx.vertex(v));
+    drawing.uv[v] = Eigen::Vector2d(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
+    drawing.position[v] = internal::position(vpm, idx.vertex(v));
+  }
+  const auto seam_map = get_parameter(np, internal_np::seam_vertex_index_map);
+  if constexpr(!std::is_same<std::decay_t<decltype(seam_map)>, CGAL::internal_np::Param_not_found>::value)
+  {
+    drawing.original.resize(nv);
+    for(std::size_t v = 0; v < nv; ++v)
+      drawing.original[v] = std::size_t(get(seam_map, idx.vertex(v)));
+  }
+  const auto& mesh = idx.mesh();
+  drawing.faces.resize(idx.number_of_faces());
+  for(std::size_t f = 0; f < drawing.faces.size(); ++f)
+  {
+    auto h = halfedge(idx.face(f), mesh);
+    for(std::size_t k = 0; k < 3; ++k, h = next(h, mesh))
+      drawing.faces[f][k] = idx.target_index(h);
+  }
+  internal::write_pattern_svg(os, drawing);
+}
+
+} // namespace Surface_design
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_DESIGN_FABRICATION_PATTERN_H

@@ -1,0 +1,481 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Layout of flattened pieces on sheets (smallest bounding rectangles, shelf packing) and the SVG
+// drawing of a pattern, on plain arrays.
+
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_FLATTENING_PATTERN_LAYOUT_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_FLATTENING_PATTERN_LAYOUT_H
+
+#include <CGAL/Surface_design/exceptions.h>
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/angles.h>
+#include <CGAL/Surface_design/internal/Core/named_parameters.h>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <iomanip>
+#include <numeric>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_design {
+namespace internal {
+
+/// Convex hull (counter-clockwise, no collinear points) by Andrew's monotone chain.
+inline std::vector<Eigen::Vector2d> convex_hull(std::vector<Eigen::Vector2d> points)
+{
+  std::sort(points.begin(), points.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  if(points.size() < 3)
+    return points;
+  auto cross = [](const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
+  };
+  std::vector<Eigen::Vector2d> hull(2 * points.size());
+  std::size_t k = 0;
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    while(k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.)
+      --k;
+    hull[k++] = points[i];
+  }
+  for(std::size_t i = points.size() - 1, t = k + 1; i-- > 0;)
+  {
+    while(k >= t && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.)
+      --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+/// The rotation angle that gives the points their smallest-area axis-aligned bounding box (a
+/// side of the smallest rectangle lies on a hull edge), the box made wider than tall.
+inline double smallest_box_rotation(const std::vector<Eigen::Vector2d>& points)
+{
+  const std::vector<Eigen::Vector2d> hull = convex_hull(points);
+  double best_angle = 0., best_area = std::numeric_limits<double>::infinity();
+  auto extent = [&](double angle) {
+    const Eigen::Rotation2Dd r(angle);
+    Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for(const Eigen::Vector2d& q : hull)
+    {
+      const Eigen::Vector2d t = r * q;
+      lo = lo.cwiseMin(t);
+      hi = hi.cwiseMax(t);
+    }
+    return Eigen::Vector2d(hi - lo);
+  };
+  for(std::size_t i = 0; i < hull.size(); ++i)
+  {
+    const Eigen::Vector2d e = hull[(i + 1) % hull.size()] - hull[i];
+    const double angle = -std::atan2(e.y(), e.x());
+    const Eigen::Vector2d size = extent(angle);
+    if(size.x() * size.y() < best_area * (1. - 1e-12))
+    {
+      best_area = size.x() * size.y();
+      best_angle = angle;
+    }
+  }
+  const Eigen::Vector2d size = extent(best_angle);
+  if(size.y() > size.x())
+    best_angle += 0.5 * pi;
+  return best_angle;
+}
+
+/// The largest "round" number (1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8 times a power of ten) <= x.
+inline double round_down(double x)
+{
+  const double decade = std::pow(10., std::floor(std::log10(x)));
+  double best = decade;
+  for(double m : {1., 1.2, 1.5, 2., 2.5, 3., 4., 5., 6., 8., 10.})
+    if(m * decade <= x * (1. + 1e-12))
+      best = m * decade;
+  return best;
+}
+
+struct Packed_piece
+{
+  std::size_t sheet = 0;
+  double x = 0., y = 0., width = 0., height = 0., rotation = 0.;
+};
+
+struct Pattern_packing
+{
+  double sheet_width = 210., sheet_height = 297., margin = 10., spacing = 5., sheet_gap = 20.;
+  double scale = 0.;      ///< output: mm per model unit
+  std::size_t sheets = 0; ///< output
+  std::vector<Packed_piece> pieces;
+};
+
+/// Turns, scales (for the test of fit only) and packs the pieces; returns the new positions in
+/// model units, sheet k starting at x = k (W + G) / scale.
+inline std::vector<Eigen::Vector2d> pack_pieces(const std::vector<Eigen::Vector2d>& p,
+                                                const std::vector<std::size_t>& piece_of_vertex, std::size_t n_pieces,
+                                                double given_scale, Pattern_packing& packing)
+{
+  std::vector<std::vector<std::size_t>> members(n_pieces);
+  for(std::size_t v = 0; v < p.size(); ++v)
+    members[piece_of_vertex[v]].push_back(v);
+  std::vector<Eigen::Vector2d> q(p.size());
+  std::vector<Eigen::Vector2d> size(n_pieces), corner(n_pieces);
+  packing.pieces.assign(n_pieces, Packed_piece());
+  for(std::size_t k = 0; k < n_pieces; ++k)
+  {
+    std::vector<Eigen::Vector2d> points;
+    for(std::size_t v : members[k])
+      points.push_back(p[v]);
+    const double angle = smallest_box_rotation(points);
+    const Eigen::Rotation2Dd r(angle);
+    Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for(std::size_t v : members[k])
+    {
+      q[v] = r * p[v];
+      lo = lo.cwiseMin(q[v]);
+      hi = hi.cwiseMax(q[v]);
+    }
+    for(std::size_t v : members[k])
+      q[v] -= lo;
+    size[k] = hi - lo;
+    packing.pieces[k].rotation = angle;
+  }
+  const double W = packing.sheet_width - 2. * packing.margin, H = packing.sheet_height - 2. * packing.margin;
+  // the scale at which piece k fits (turned by 90 degrees if that fits better)
+  auto fit = [&](std::size_t k) {
+    const double w = (std::max)(size[k].x(), 1e-300), h = (std::max)(size[k].y(), 1e-300);
+    return (std::max)((std::min)(W / w, H / h), (std::min)(W / h, H / w));
+  };
+  double scale = given_scale;
+  if(scale == 0.)
+  {
+    scale = std::numeric_limits<double>::infinity();
+    for(std::size_t k = 0; k < n_pieces; ++k)
+      scale = (std::min)(scale, fit(k));
+    scale = round_down(scale);
+  }
+  else
+    for(std::size_t k = 0; k < n_pieces; ++k)
+      if(fit(k) < scale * (1. - 1e-12))
+      {
+        std::ostringstream s;
+        s << "at " << scale << " mm per unit, piece " << k << " measures " << size[k].x() * scale << " x "
+          << size[k].y() * scale << " mm, more than the " << W << " x " << H
+          << " mm inside the margins of a sheet (the largest scale at which it fits is " << fit(k) << ")";
+        throw Invalid_parameter("pattern_scale", s.str());
+      }
+  packing.scale = scale;
+  // turn the pieces that only fit upright
+  for(std::size_t k = 0; k < n_pieces; ++k)
+    if(size[k].x() * scale > W * (1. + 1e-12))
+    {
+      for(std::size_t v : members[k])
+        q[v] = Eigen::Vector2d(size[k].y() - q[v].y(), q[v].x());
+      size[k] = Eigen::Vector2d(size[k].y(), size[k].x());
+      packing.pieces[k].rotation += 0.5 * pi;
+    }
+  // shelves, tallest pieces first; first fit over the open shelves of all sheets
+  std::vector<std::size_t> order(n_pieces);
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return size[a].y() > size[b].y(); });
+  struct Shelf
+  {
+    std::size_t sheet;
+    double y, height, used;
+  };
+  std::vector<Shelf> shelves;
+  std::vector<double> sheet_used; // height used per sheet
+  const double gap = packing.spacing;
+  for(std::size_t k : order)
+  {
+    const double w = size[k].x() * scale, h = size[k].y() * scale;
+    Shelf* target = nullptr;
+    for(Shelf& s : shelves)
+      if(h <= s.height * (1. + 1e-12) && s.used + w <= W * (1. + 1e-12))
+      {
+        target = &s;
+        break;
+      }
+    if(!target)
+    {
+      std::size_t sheet = 0;
+      while(sheet < sheet_used.size() && sheet_used[sheet] + h > H * (1. + 1e-12))
+        ++sheet;
+      if(sheet == sheet_used.size())
+        sheet_used.push_back(0.);
+      shelves.push_back(Shelf{sheet, sheet_used[sheet], h, 0.});
+      sheet_used[sheet] += h + gap;
+      target = &shelves.back();
+    }
+    Packed_piece& piece = packing.pieces[k];
+    piece.sheet = target->sheet;
+    piece.x = packing.margin + target->used;
+    // shelves fill the sheet from the top down (y up: the first shelf is highest)
+    piece.y = packing.sheet_height - packing.margin - target->y - h;
+    piece.width = w;
+    piece.height = h;
+    target->used += w + gap;
+  }
+  packing.sheets = sheet_used.size();
+  for(std::size_t k = 0; k < n_pieces; ++k)
+  {
+    const Packed_piece& piece = packing.pieces[k];
+    const Eigen::Vector2d offset(
+      (double(piece.sheet) * (packing.sheet_width + packing.sheet_gap) + piece.x) / scale, piece.y / scale);
+    for(std::size_t v : members[k])
+      q[v] += offset;
+  }
+  return q;
+}
+
+/// Everything the SVG drawing needs, by index.
+struct Pattern_drawing
+{
+  Pattern_packing layout;
+  std::vector<Eigen::Vector2d> uv;             ///< laid out, model units
+  std::vector<Eigen::Vector3d> position;       ///< in space (for fold angles)
+  std::vector<std::size_t> original;           ///< per vertex: the uncut vertex (empty: no seam labels)
+  std::vector<std::array<std::size_t, 3>> faces;
+  double fold_angle = 0.;
+};
+
+inline void write_pattern_svg(std::ostream& os, const Pattern_drawing& d)
+{
+  const double s = d.layout.scale, H = d.layout.sheet_height;
+  const std::size_t nv = d.uv.size(), nf = d.faces.size();
+  auto X = [&](std::size_t v) { return d.uv[v].x() * s; };
+  auto Y = [&](std::size_t v) { return H - d.uv[v].y() * s; };
+  // directed edges -> (face, corner)
+  std::unordered_map<unsigned long long, std::pair<std::size_t, std::size_t>> directed;
+  directed.reserve(3 * nf);
+  auto key = [nv](std::size_t a, std::size_t b) { return (unsigned long long)a * nv + b; };
+  for(std::size_t f = 0; f < nf; ++f)
+    for(std::size_t k = 0; k < 3; ++k)
+      directed[key(d.faces[f][k], d.faces[f][(k + 1) % 3])] = {f, k};
+  // pieces: union of faces through interior edges
+  std::vector<std::size_t> parent(nf);
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  auto find = [&parent](std::size_t x) {
+    while(parent[x] != x)
+      x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  std::vector<std::size_t> boundary_next(nv, npos); // boundary edge a -> b, faces on the left
+  for(std::size_t f = 0; f < nf; ++f)
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      const std::size_t a = d.faces[f][k], b = d.faces[f][(k + 1) % 3];
+      const auto it = directed.find(key(b, a));
+      if(it == directed.end())
+        boundary_next[a] = b;
+      else
+      {
+        const std::size_t x = find(f), y = find(it->second.first);
+        if(x != y)
+          parent[(std::max)(x, y)] = (std::min)(x, y);
+      }
+    }
+
+  const double W_total =
+    double(d.layout.sheets) * (d.layout.sheet_width + d.layout.sheet_gap) - d.layout.sheet_gap;
+  os << std::fixed << std::setprecision(3);
+  os << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+     << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W_total << "mm\" height=\"" << H << "mm\" viewBox=\"0 0 "
+     << W_total << ' ' << H << "\">\n"
+     << "<title>Cutting pattern: " << d.layout.sheets << " sheet(s) of " << d.layout.sheet_width << " x " << H
+     << " mm, scale " << std::setprecision(6) << s << std::setprecision(3) << " mm per model unit</title>\n";
+  // sheets
+  os << "<g id=\"sheets\" fill=\"none\" stroke=\"#bbbbbb\" stroke-width=\"0.2\">\n";
+  for(std::size_t k = 0; k < d.layout.sheets; ++k)
+    os << "<rect x=\"" << double(k) * (d.layout.sheet_width + d.layout.sheet_gap) << "\" y=\"0\" width=\""
+       << d.layout.sheet_width << "\" height=\"" << H << "\"/>\n";
+  os << "</g>\n";
+
+  // pieces: filled outlines = cut lines
+  os << "<g id=\"cuts\" fill=\"#f4efe6\" stroke=\"#000000\" stroke-width=\"0.25\" stroke-linejoin=\"round\">\n";
+  std::vector<bool> done(nv, false);
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    if(boundary_next[v] == npos || done[v])
+      continue;
+    os << "<path d=\"";
+    std::size_t x = v;
+    bool first = true;
+    while(x != npos && !done[x])
+    {
+      done[x] = true;
+      os << (first ? "M" : " L") << X(x) << ',' << Y(x);
+      first = false;
+      x = boundary_next[x];
+    }
+    os << " Z\"/>\n";
+  }
+  os << "</g>\n";
+
+  // fold lines
+  std::ostringstream mountain, valley;
+  mountain << std::fixed << std::setprecision(3);
+  valley << std::fixed << std::setprecision(3);
+  std::size_t folds = 0;
+  for(std::size_t f = 0; f < nf; ++f)
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      const std::size_t a = d.faces[f][k], b = d.faces[f][(k + 1) % 3], c = d.faces[f][(k + 2) % 3];
+      const auto it = directed.find(key(b, a));
+      if(it == directed.end() || a > b)
+        continue;
+      const std::size_t g = it->second.first;
+      const std::size_t c2 = d.faces[g][(it->second.second + 2) % 3];
+      const Eigen::Vector3d n1 = (d.position[b] - d.position[a]).cross(d.position[c] - d.position[a]).normalized();
+      const Eigen::Vector3d n2 = (d.position[a] - d.position[b]).cross(d.position[c2] - d.position[b]).normalized();
+      const double dihedral = std::atan2(n1.cross(n2).norm(), n1.dot(n2));
+      if(!(dihedral > d.fold_angle))
+        continue;
+      ++folds;
+      std::ostringstream& out = (d.position[c2] - d.position[a]).dot(n1) < 0. ? mountain : valley;
+      out << "M" << X(a) << ',' << Y(a) << " L" << X(b) << ',' << Y(b) << ' ';
+    }
+  if(folds > 0)
+  {
+    os << "<g id=\"folds\" fill=\"none\" stroke-width=\"0.2\">\n";
+    if(!mountain.str().empty())
+      os << "<path stroke=\"#1f4fbf\" stroke-dasharray=\"2,1\" d=\"" << mountain.str() << "\"/>\n";
+    if(!valley.str().empty())
+      os << "<path stroke=\"#c0392b\" stroke-dasharray=\"2,1,0.5,1\" d=\"" << valley.str() << "\"/>\n";
+    os << "</g>\n";
+  }
+
+  // piece numbers at their area centroids
+  std::vector<std::size_t> piece_of_root(nf, npos);
+  std::vector<Eigen::Vector3d> centroid; // x, y, area
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    const std::size_t r = find(f);
+    if(piece_of_root[r] == npos)
+    {
+      piece_of_root[r] = centroid.size();
+      centroid.emplace_back(Eigen::Vector3d::Zero());
+    }
+    const Eigen::Vector2d a = d.uv[d.faces[f][0]], b = d.uv[d.faces[f][1]], c = d.uv[d.faces[f][2]];
+    const double area = std::abs(0.5 * ((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x()));
+    const Eigen::Vector2d m = (a + b + c) / 3.;
+    centroid[piece_of_root[r]] += Eigen::Vector3d(m.x() * area, m.y() * area, area);
+  }
+  os << "<g id=\"pieces\" font-family=\"sans-serif\" font-size=\"5\" font-weight=\"bold\" fill=\"#777777\" "
+        "text-anchor=\"middle\" dominant-baseline=\"middle\">\n";
+  for(std::size_t k = 0; k < centroid.size(); ++k)
+    if(centroid[k].z() > 0.)
+      os << "<text x=\"" << centroid[k].x() / centroid[k].z() * s << "\" y=\"" << H - centroid[k].y() / centroid[k].z() * s
+         << "\">P" << k + 1 << "</text>\n";
+  os << "</g>\n";
+
+  // seam labels: boundary edges joining copies of the same two uncut vertices
+  if(!d.original.empty())
+  {
+    std::unordered_map<unsigned long long, std::vector<std::pair<std::size_t, std::size_t>>> sides; // -> (a, b) edges
+    std::size_t n_original = 0;
+    for(std::size_t o : d.original)
+      n_original = (std::max)(n_original, o + 1);
+    auto seam_key = [n_original](std::size_t a, std::size_t b) {
+      return (unsigned long long)(std::min)(a, b) * n_original + (std::max)(a, b);
+    };
+    for(std::size_t a = 0; a < nv; ++a)
+      if(boundary_next[a] != npos)
+        sides[seam_key(d.original[a], d.original[boundary_next[a]])].emplace_back(a, boundary_next[a]);
+    // the seam graph on uncut vertices, walked into chains between vertices of degree != 2
+    std::unordered_map<std::size_t, std::vector<unsigned long long>> incident;
+    for(const auto& [k, list] : sides)
+      if(list.size() == 2)
+      {
+        incident[k / n_original].push_back(k);
+        incident[k % n_original].push_back(k);
+      }
+    std::unordered_map<unsigned long long, bool> visited;
+    std::vector<std::vector<unsigned long long>> chains;
+    auto walk = [&](std::size_t start, unsigned long long first) {
+      std::vector<unsigned long long> chain;
+      std::size_t at = start;
+      unsigned long long e = first;
+      while(!visited[e])
+      {
+        visited[e] = true;
+        chain.push_back(e);
+        at = (e / n_original == at) ? std::size_t(e % n_original) : std::size_t(e / n_original);
+        const auto& next = incident[at];
+        if(next.size() != 2)
+          break;
+        e = next[0] == e ? next[1] : next[0];
+      }
+      chains.push_back(std::move(chain));
+    };
+    std::vector<std::size_t> ends;
+    for(const auto& [v, list] : incident)
+      if(list.size() != 2)
+        ends.push_back(v);
+    std::sort(ends.begin(), ends.end());
+    for(std::size_t v : ends)
+      for(unsigned long long e : incident[v])
+        if(!visited[e])
+          walk(v, e);
+    std::vector<unsigned long long> rest;
+    for(const auto& [k, list] : sides)
+      if(list.size() == 2 && !visited[k])
+        rest.push_back(k);
+    std::sort(rest.begin(), rest.end());
+    for(unsigned long long e : rest)
+      if(!visited[e])
+        walk(std::size_t(e / n_original), e);
+    os << "<g id=\"seams\" font-family=\"sans-serif\" font-size=\"2.5\" fill=\"#1f4fbf\" text-anchor=\"middle\" "
+          "dominant-baseline=\"middle\">\n";
+    for(std::size_t c = 0; c < chains.size(); ++c)
+    {
+      const unsigned long long middle = chains[c][chains[c].size() / 2];
+      for(const auto& [a, b] : sides[middle])
+      {
+        // inwards: the faces lie left of a -> b
+        const Eigen::Vector2d pa(X(a), Y(a)), pb(X(b), Y(b));
+        Eigen::Vector2d t = pb - pa;
+        const double length = t.norm();
+        if(length > 0.)
+          t /= length;
+        const Eigen::Vector2d inward(t.y(), -t.x()); // left of a -> b with y pointing down
+        const Eigen::Vector2d at = 0.5 * (pa + pb) + 2. * inward;
+        os << "<text x=\"" << at.x() << "\" y=\"" << at.y() << "\">" << c + 1 << "</text>\n";
+      }
+    }
+    os << "</g>\n";
+  }
+
+  // scale bars
+  const double bar_units = round_down(40. / s);
+  os << "<g id=\"scale\" font-family=\"sans-serif\" font-size=\"3\" fill=\"#000000\">\n";
+  for(std::size_t k = 0; k < d.layout.sheets; ++k)
+  {
+    const double x0 = double(k) * (d.layout.sheet_width + d.layout.sheet_gap) + (std::max)(d.layout.margin, 2.);
+    const double y0 = H - 0.5 * (std::max)(d.layout.margin, 4.);
+    os << "<path stroke=\"#000000\" stroke-width=\"0.4\" fill=\"none\" d=\"M" << x0 << ',' << y0 - 1 << " V" << y0
+       << " H" << x0 + bar_units * s << " V" << y0 - 1 << "\"/>\n"
+       << "<text x=\"" << x0 + bar_units * s + 2 << "\" y=\"" << y0 << "\">" << std::setprecision(6)
+       << std::defaultfloat << bar_units << " model units = " << bar_units * s << " mm; sheet " << k + 1 << " of "
+       << d.layout.sheets << std::fixed << std::setprecision(3) << "</text>\n";
+  }
+  os << "</g>\n</svg>\n";
+}
+
+} // namespace internal
+} // namespace Surface_design
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_FLATTENING_PATTERN_LAYOUT_H
