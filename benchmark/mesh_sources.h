@@ -108,6 +108,10 @@ inline const std::vector<Preset>& presets()
     {"developability_evaluation", "energy + gradient evaluations on ~8k to ~250k faces",
      {"bundled:bunny_8k.off", "sphere:63000", "sphere:250000"},
      {"developability_evaluation"}},
+    {"flattening", "cutting and BFF: the octahedron membrane (6 boundary loops joined into one disk), ~1k to "
+     "~1M faces, and a developable design",
+     {"octahedron:8", "octahedron:50", "octahedron:100", "octahedron:144", "bundled:pebble_design.off"},
+     {"flatten"}},
     {"embedding_sizes", "barycentric embedding scaling: octahedra of ~62k, 241k and 1M vertices",
      {"octahedron:50", "octahedron:100", "octahedron:204"},
      {"embedding", "deformation"}},

@@ -13,6 +13,7 @@
 #include "workload_direction_fields.h"
 #include "workload_embedding.h"
 #include "workload_developability.h"
+#include "workload_flattening.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -67,6 +68,10 @@ const std::vector<Workload>& workloads()
      "one energy + gradient evaluation per developability energy, sequential and with TBB (2 threads); "
      "a phase per energy",
      &developability_evaluation_workload, Solver_use::none},
+    {"flatten",
+     "developable cut (epsilon 1e-3) + Boundary First Flattening (u_B = 0); phases cut, factor, flatten, "
+     "full = factor + flatten",
+     &flatten_workload},
     {"developable_flow_intrinsic",
      "make_piecewise_developable, intrinsic energy, 2 subdivisions; phases flow, metrics",
      &developable_flow_workload<CGAL::Surface_design::Developability_energy::intrinsic>, Solver_use::none, nullptr, true},

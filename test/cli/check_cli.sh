@@ -129,5 +129,23 @@ refuse developable "$WORK/quad.off" --output "$O/d.off"
 refuse developable "$WORK/input.off" --output "$WORK/input.off"
 accept developable "$B1K" --subdivisions 0 --iterations 20 --output "$O/ok.off"
 
+# --- flatten
+D="$DATA/pebble_design.off"
+for args in "--epsilon -1" "--epsilon nan" "--epsilon 1x" "--alignment -2" "--sheet 210" "--sheet 210x" "--sheet x297" \
+            "--sheet 5x5" "--sheet 210x297x3" "--scale 0" "--scale -1" "--scale nan" "--margin 200" "--margin -1" \
+            "--fold-angle 200" "--fold-angle nan" "--solver magic" "--no-cut --epsilon 0.01" "--up +Z" \
+            "--epsilon 0.1 --epsilon 0.2" "--output $O/p.off" "--pattern $O/p.pdf" "--picture $O/p.jpg" "--bogus" \
+            "--scale 1e6"; do
+  # shellcheck disable=SC2086
+  refuse flatten "$D" $args --output "$O/p.obj" --pattern "$O/p.svg"
+done
+refuse flatten "$D" --output "$O/p.obj"
+refuse flatten "$D" --pattern "$O/p.svg"
+refuse flatten "$D" --output "$O/p.obj" --pattern "$O/p.obj"
+refuse flatten "$WORK/quad.off" --output "$O/p.obj" --pattern "$O/p.svg"
+refuse flatten "$B1K" --no-cut --output "$O/p.obj" --pattern "$O/p.svg"
+accept flatten "$D" --output "$O/ok.obj" --pattern "$O/ok.svg"
+accept flatten "$DATA/hemisphere.off" --no-cut --output "$O/ok.obj" --pattern "$O/ok.svg"
+
 echo "$checked runs checked, $failures failures"
 [ "$failures" -eq 0 ]
