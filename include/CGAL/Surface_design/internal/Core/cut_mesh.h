@@ -102,29 +102,21 @@ Cut_topology cut_topology(const Indices& idx, const std::vector<bool>& edge_is_c
 {
   const auto& tm = idx.mesh();
   const std::size_t nf = idx.number_of_faces();
-  std::vector<std::size_t> parent(nf);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto find = [&parent](std::size_t x) {
-    while(parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  Union_find pieces(nf);
   for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
   {
     const auto h = halfedge(idx.edge(e), tm);
     const auto o = opposite(h, tm);
     if(edge_is_cut[e] || idx.is_border(h) || idx.is_border(o))
       continue;
-    const std::size_t a = find(idx.index(face(h, tm))), b = find(idx.index(face(o, tm)));
-    if(a != b)
-      parent[(std::max)(a, b)] = (std::min)(a, b);
+    pieces.unite(idx.index(face(h, tm)), idx.index(face(o, tm)));
   }
   Cut_topology t;
   t.face_piece.assign(nf, npos);
   std::vector<std::size_t> piece_of_root(nf, npos);
   for(std::size_t f = 0; f < nf; ++f)
   {
-    const std::size_t r = find(f);
+    const std::size_t r = pieces.find(f);
     if(piece_of_root[r] == npos)
     {
       piece_of_root[r] = t.pieces.size();

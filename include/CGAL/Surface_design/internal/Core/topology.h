@@ -19,6 +19,30 @@ namespace CGAL {
 namespace Surface_design {
 namespace internal {
 
+/// Union-find over [0, n) with path halving; a union keeps the smaller root (so roots are the
+/// smallest elements of their sets).
+struct Union_find
+{
+  std::vector<std::size_t> parent;
+  explicit Union_find(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), std::size_t(0)); }
+  std::size_t find(std::size_t x)
+  {
+    while(parent[x] != x)
+      x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  /// Joins the sets of a and b; false if they were one already.
+  bool unite(std::size_t a, std::size_t b)
+  {
+    a = find(a);
+    b = find(b);
+    if(a == b)
+      return false;
+    parent[(std::max)(a, b)] = (std::min)(a, b);
+    return true;
+  }
+};
+
 /// Counts of one connected component.
 struct Component_info
 {
@@ -81,20 +105,11 @@ template <class Indices>
 Components connected_components(const Indices& idx, const Boundary_loops& loops)
 {
   const std::size_t nv = idx.number_of_vertices();
-  // union-find with path halving, union by smaller root index (keeps roots = smallest index)
-  std::vector<std::size_t> parent(nv);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto find = [&parent](std::size_t x) {
-    while(parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  Union_find sets(nv); // roots = smallest vertex index of each set
   for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
   {
     const auto ij = idx.edge_vertices(e);
-    std::size_t a = find(ij.first), b = find(ij.second);
-    if(a != b)
-      parent[(std::max)(a, b)] = (std::min)(a, b);
+    sets.unite(ij.first, ij.second);
   }
 
   Components c;
@@ -102,7 +117,7 @@ Components connected_components(const Indices& idx, const Boundary_loops& loops)
   std::vector<std::size_t> component_of_root(nv, npos);
   for(std::size_t v = 0; v < nv; ++v)
   {
-    const std::size_t r = find(v);
+    const std::size_t r = sets.find(v);
     if(component_of_root[r] == npos)
     {
       component_of_root[r] = c.info.size();

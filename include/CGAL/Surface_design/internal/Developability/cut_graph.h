@@ -117,26 +117,6 @@ void cut_path_to_source(const Indices& idx, const Shortest_paths& p, std::size_t
   }
 }
 
-struct Union_find
-{
-  std::vector<std::size_t> parent;
-  explicit Union_find(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), std::size_t(0)); }
-  std::size_t find(std::size_t x)
-  {
-    while(parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  bool unite(std::size_t a, std::size_t b)
-  {
-    a = find(a);
-    b = find(b);
-    if(a == b)
-      return false;
-    parent[(std::max)(a, b)] = (std::min)(a, b);
-    return true;
-  }
-};
 
 } // namespace cut_graph_detail
 
