@@ -48,18 +48,9 @@ constexpr bool sanitized = true; // the flows are ~20x slower there: lighter mes
 constexpr bool sanitized = false;
 #endif
 
-using Soup_points = std::vector<std::array<double, 3>>;
-using Soup_triangles = std::vector<std::array<std::size_t, 3>>;
-
-template <class Mesh>
-Mesh from_soup(const Soup_points& points, const Soup_triangles& triangles)
-{
-  Mesh mesh;
-  SD::generators_detail::soup_to_mesh(points, triangles, mesh);
-  REQUIRE(CGAL::is_valid_polygon_mesh(mesh));
-  REQUIRE(num_faces(mesh) == triangles.size());
-  return mesh;
-}
+using test::Soup_points;
+using test::Soup_triangles;
+using test::from_soup;
 
 /// Open tube around the z axis: `around` x `along` quads, radius r0 at z = 0 and r1 at z = h,
 /// each quad split along alternating diagonals; radial noise of up to `noise` times the ring

@@ -50,17 +50,9 @@ namespace P = CGAL::Surface_design::parameters;
 namespace {
 
 using Point_2 = test::Kernel::Point_2;
-using Soup_points = std::vector<std::array<double, 3>>;
-using Soup_triangles = std::vector<std::array<std::size_t, 3>>;
-
-template <class Mesh>
-Mesh from_soup(const Soup_points& points, const Soup_triangles& triangles)
-{
-  Mesh mesh;
-  SD::generators_detail::soup_to_mesh(points, triangles, mesh);
-  REQUIRE(CGAL::is_valid_polygon_mesh(mesh));
-  return mesh;
-}
+using test::Soup_points;
+using test::Soup_triangles;
+using test::from_soup;
 
 template <class Mesh>
 using Vertex = typename boost::graph_traits<Mesh>::vertex_descriptor;

@@ -13,10 +13,12 @@
 #include <CGAL/Polyhedron_items_with_id_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Surface_design/mesh_generators.h>
 #include <CGAL/Surface_design/solver_traits.h>
 
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cstdlib>
 #include <cstring>
 #include <map>
@@ -103,6 +105,20 @@ private:
     else                                                                                           \
       WARN("CHOLMOD is not available: skipped " << what);                                          \
   } while(false)
+
+using Soup_points = std::vector<std::array<double, 3>>;
+using Soup_triangles = std::vector<std::array<std::size_t, 3>>;
+
+/// A triangle mesh of any type from a soup (checked: a valid polygon mesh with every triangle).
+template <class Mesh>
+Mesh from_soup(const Soup_points& points, const Soup_triangles& triangles)
+{
+  Mesh mesh;
+  CGAL::Surface_design::generators_detail::soup_to_mesh(points, triangles, mesh);
+  REQUIRE(CGAL::is_valid_polygon_mesh(mesh));
+  REQUIRE(num_faces(mesh) == triangles.size());
+  return mesh;
+}
 
 /// The mesh's own (read-only) vertex point map type.
 template <class Mesh>
