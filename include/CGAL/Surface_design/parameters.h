@@ -49,6 +49,13 @@ enum sheet_margin_t { sheet_margin };
 enum piece_spacing_t { piece_spacing };
 enum seam_vertex_index_map_t { seam_vertex_index_map };
 enum fold_angle_t { fold_angle };
+enum harmonic_constraints_t { harmonic_constraints };
+enum harmonic_weights_t { harmonic_weights };
+enum protrusion_maxima_t { protrusion_maxima };
+enum target_edge_length_t { target_edge_length };
+enum quad_poles_t { quad_poles };
+enum use_spectacles_t { use_spectacles };
+enum hausdorff_error_bound_t { hausdorff_error_bound };
 } // namespace internal_np
 
 /// \ingroup PkgSurfaceDesignRef
@@ -111,6 +118,13 @@ CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(sheet_margin)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(piece_spacing)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(seam_vertex_index_map)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(fold_angle)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(harmonic_constraints)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(harmonic_weights)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(protrusion_maxima)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(target_edge_length)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(quad_poles)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(use_spectacles)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(hausdorff_error_bound)
 
 #undef CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER
 

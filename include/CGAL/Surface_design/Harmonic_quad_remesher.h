@@ -1,0 +1,385 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Quad-dominant remeshing with the isolines and gradient lines of a harmonic function.
+
+#ifndef CGAL_SURFACE_DESIGN_HARMONIC_QUAD_REMESHER_H
+#define CGAL_SURFACE_DESIGN_HARMONIC_QUAD_REMESHER_H
+
+#include <CGAL/Surface_design/exceptions.h>
+#include <CGAL/Surface_design/internal/Core/intrinsic_delaunay.h>
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/named_parameters.h>
+#include <CGAL/Surface_design/internal/Core/validation.h>
+#include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/harmonic_function.h>
+#include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/quad_net.h>
+#include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/trace_mesh.h>
+#include <CGAL/Surface_design/parameters.h>
+#include <CGAL/Surface_design/solver_traits.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_design {
+
+/// \ingroup PkgHarmonicQuadRemeshingRef
+/// Weights of the Laplacian whose harmonic function drives the remeshing.
+enum class Harmonic_weights
+{
+  cotangent,         ///< the cotangent weights of the mesh (negative across non-Delaunay edges)
+  intrinsic_delaunay ///< the cotangent weights of the intrinsic Delaunay triangulation (>= 0
+                     ///< inside: the discrete maximum principle holds, no spurious interior extrema)
+};
+
+/// \ingroup PkgHarmonicQuadRemeshingRef
+/// The critical vertices of a piecewise-linear function (Edelsbrunner, Harer & Zomorodian 2003:
+/// ties broken by vertex index). Vertex indices are those of the mesh's index maps.
+struct Harmonic_critical_points
+{
+  std::vector<std::size_t> minima, maxima;
+  std::vector<std::pair<std::size_t, int>> saddles; ///< (vertex, multiplicity: k - 1 for k lower wedges)
+  std::size_t on_boundary = 0;      ///< critical vertices on the boundary
+  std::size_t spurious_extrema = 0; ///< extrema that are not constrained vertices
+  /// sum over all vertices of 1 - chi(lower link); equal to `euler_characteristic` (a theorem):
+  /// on a closed mesh, #minima + #maxima - sum of saddle multiplicities
+  long index_sum = 0;
+  long euler_characteristic = 0; ///< V - E + F of the mesh
+
+  int saddle_multiplicity() const
+  {
+    int m = 0;
+    for(const auto& s : saddles)
+      m += s.second;
+    return m;
+  }
+};
+
+/// \ingroup PkgHarmonicQuadRemeshingRef
+/// What `Harmonic_quad_remesher::remesh()` did.
+struct Harmonic_quad_remeshing_report
+{
+  double target_edge_length = 0.;
+  std::size_t levels = 0;          ///< isovalues
+  std::size_t isolines = 0;        ///< connected isolines in the net (loops and paths)
+  std::size_t gradient_lines = 0;  ///< traced gradient-line pieces (isoline to isoline)
+  std::size_t stopped_lines = 0;   ///< lines ended because a neighbour came closer than h / sqrt 2
+  std::size_t started_lines = 0;   ///< lines started in gaps wider than h sqrt 2 (or on first isolines)
+  std::size_t merged_lines = 0;    ///< lines ended because they met another one
+  std::size_t saddle_levels = 0;   ///< isolines added between two saddles of one band
+  std::size_t vertices = 0, faces = 0; ///< of the output
+  double harmonic_seconds = 0.;    ///< Laplacian, factorization, solve (when they were done)
+  double curves_seconds = 0.;      ///< isolines and gradient lines
+  double meshing_seconds = 0.;     ///< faces of the net and the output mesh
+};
+
+/// \ingroup PkgHarmonicQuadRemeshingRef
+///
+/// Quad-dominant remeshing of a triangle mesh by the net of isolines and gradient lines of a
+/// harmonic function (Dong, Kircher & Garland 2005), the method that Nagano & Imai improve.
+///
+/// **The function.** Given constraints u(c) = value at a few vertices C (at least one minimum
+/// and one maximum per connected component), u is the solution of L_FF u_F = -L_FC u_C, L the
+/// cotangent Laplacian (of the intrinsic Delaunay triangulation with
+/// `Harmonic_weights::intrinsic_delaunay`), with zero flux across the boundary. It has no
+/// extremum outside C when the weights are positive; its saddles make up the difference in the
+/// Euler characteristic: #max + #min - sum of saddle multiplicities = chi.
+///
+/// **The net.** Isolines at levels c_1 < c_2 < ... spaced so that the next level lies h further
+/// (h times the median of |grad u| on the level), and gradient lines from each isoline to the
+/// next, started evenly on first isolines and kept between h / sqrt 2 and h sqrt 2 apart along
+/// every isoline (a line stops, or a new one starts, otherwise). Lines run straight through
+/// faces and along edges where both faces' gradients meet; they end at extrema (poles: every
+/// other line is kept, a fan of quads), at the boundary (kept as it is), or one isoline early
+/// where they meet another line. Between two saddles that fall between the same two levels an
+/// extra isoline separates them, so that every cell is a disk. The faces of the net are found
+/// from its rotation system (up, along, down, back at every crossing).
+///
+/// The class factors the Laplacian once: new constraints on the same vertex set, or new edge
+/// lengths, reuse it.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`, triangles only
+/// \tparam VertexPointMap a readable vertex -> `Point_3` property map
+/// \tparam SolverTraits a model of `SparseLinearAlgebraWithFactorTraits_d`
+template <class TriangleMesh,
+          class VertexPointMap = typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type,
+          class SolverTraits = Default_solver_traits>
+class Harmonic_quad_remesher
+{
+  using GT = boost::graph_traits<TriangleMesh>;
+  using Indices = internal::Mesh_indices<TriangleMesh>;
+  using Clock = std::chrono::steady_clock;
+
+public:
+  using vertex_descriptor = typename GT::vertex_descriptor;
+
+  /// Validates the mesh and builds the Laplacian.
+  ///
+  /// \param tm the mesh; it must not change while the object is used
+  /// \param np optional named parameters among:
+  /// - `vertex_point_map`, `sparse_linear_solver`, index maps
+  /// - `harmonic_weights`: a `Harmonic_weights`; default `Harmonic_weights::cotangent`
+  /// - `harmonic_constraints`: a range of (vertex_descriptor, double) pairs; default: the
+  ///   default constraints (`set_default_constraints()`)
+  /// - `protrusion_maxima` (bool, default true): with the default constraints, also a maximum at
+  ///   every tip of the shape
+  ///
+  /// \throws Invalid_mesh the mesh is empty, not triangles, not manifold, has degenerate faces or
+  ///         non-finite coordinates
+  /// \throws Invalid_constraints the constraints are invalid (see `set_constraints()`)
+  template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+  explicit Harmonic_quad_remesher(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
+    : m_idx(tm, np),
+      m_vpm(internal::class_vertex_point_map<VertexPointMap, false>(tm, np))
+  {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    internal::validate_mesh(m_idx, m_vpm);
+    m_mesh = internal::harmonic_quad::make_trace_mesh(m_idx, m_vpm);
+    m_weights_kind = choose_parameter(get_parameter(np, internal_np::harmonic_weights), Harmonic_weights::cotangent);
+    const auto start = Clock::now();
+    internal::Intrinsic_triangulation intrinsic(m_idx, m_vpm);
+    if(m_weights_kind == Harmonic_weights::intrinsic_delaunay)
+      m_flips = intrinsic.make_delaunay();
+    m_solver = std::make_unique<Solver>(m_mesh.number_of_vertices(), intrinsic.cotangent_weights(),
+                                        internal::class_solver_traits<SolverTraits>(np));
+    m_setup_seconds = seconds_since(start);
+    const auto constraints = get_parameter(np, internal_np::harmonic_constraints);
+    if constexpr(std::is_same<std::decay_t<decltype(constraints)>, CGAL::internal_np::Param_not_found>::value)
+      set_default_constraints(choose_parameter(get_parameter(np, internal_np::protrusion_maxima), true));
+    else
+      set_constraints(constraints);
+  }
+
+  /// Sets the constraints: a range of (vertex_descriptor, value) pairs with finite values, each
+  /// vertex at most once, and on every connected component at least two different values.
+  /// \throws Invalid_constraints otherwise (the previous constraints stay)
+  template <class ConstraintRange>
+  void set_constraints(const ConstraintRange& constraints)
+  {
+    std::vector<std::pair<std::size_t, double>> c;
+    for(const auto& [v, value] : constraints)
+    {
+      const std::size_t i = m_idx.find(v);
+      if(i == internal::npos)
+        throw Invalid_constraints("a constrained vertex is not a vertex of the mesh");
+      c.emplace_back(i, double(value));
+    }
+    internal::harmonic_quad::check_constraints(m_mesh, c);
+    m_constraints = std::move(c);
+    m_solved = false;
+  }
+
+  /// The default constraints: per connected component a minimum (0) and a maximum (1) at the ends
+  /// of an approximate geodesic diameter (two Dijkstra sweeps), and with `protrusions` a maximum at
+  /// every tip t (a vertex farthest from the minimum within a geodesic ball of a quarter of the
+  /// diameter), valued d(min, t) / diameter.
+  void set_default_constraints(bool protrusions = true)
+  {
+    m_constraints = internal::harmonic_quad::default_constraints(m_mesh, protrusions);
+    m_solved = false;
+  }
+
+  /// The constraints as (vertex index, value) pairs.
+  const std::vector<std::pair<std::size_t, double>>& constraints() const { return m_constraints; }
+
+  /// Number of intrinsic edge flips made (`Harmonic_weights::intrinsic_delaunay`).
+  std::size_t number_of_flips() const { return m_flips; }
+
+  /// Number of edges with a negative Laplacian weight.
+  std::size_t number_of_negative_weights() const
+  {
+    std::size_t n = 0;
+    for(const auto& e : m_solver->weights())
+      n += e.w < 0.;
+    return n;
+  }
+
+  /// The harmonic function, one value per vertex index (solved on first use).
+  /// \throws Linear_solver_failure if the factorization fails
+  const std::vector<double>& harmonic_function()
+  {
+    solve();
+    return m_u;
+  }
+
+  /// Writes the harmonic function to a writable vertex -> double map.
+  template <class VertexValueMap>
+  void harmonic_function(VertexValueMap values)
+  {
+    solve();
+    for(std::size_t v = 0; v < m_u.size(); ++v)
+      put(values, m_idx.vertex(v), m_u[v]);
+  }
+
+  /// max over unconstrained vertices of |(L u)_i| / (L_ii (max u - min u)): 0 up to rounding.
+  double harmonic_residual()
+  {
+    solve();
+    std::vector<double> lu(m_u.size(), 0.), diagonal(m_u.size(), 0.);
+    for(const auto& e : m_solver->weights())
+    {
+      lu[e.i] += e.w * (m_u[e.i] - m_u[e.j]);
+      lu[e.j] += e.w * (m_u[e.j] - m_u[e.i]);
+      diagonal[e.i] += std::abs(e.w);
+      diagonal[e.j] += std::abs(e.w);
+    }
+    const auto [lo, hi] = std::minmax_element(m_u.begin(), m_u.end());
+    const double range = (std::max)(*hi - *lo, 1e-300);
+    double worst = 0.;
+    for(std::size_t v = 0; v < m_u.size(); ++v)
+      if(!m_constrained[v] && diagonal[v] > 0.)
+        worst = (std::max)(worst, std::abs(lu[v]) / (diagonal[v] * range));
+    return worst;
+  }
+
+  /// The critical vertices of the harmonic function.
+  Harmonic_critical_points critical_points()
+  {
+    solve();
+    Harmonic_critical_points out;
+    const auto [list, index_sum] = internal::harmonic_quad::critical_points(m_mesh, m_u);
+    out.index_sum = index_sum;
+    out.euler_characteristic = long(m_idx.number_of_vertices()) - long(m_idx.number_of_edges()) +
+                               long(m_idx.number_of_faces());
+    using internal::harmonic_quad::Critical_kind;
+    for(const auto& c : list)
+    {
+      out.on_boundary += c.on_boundary;
+      if(c.kind == Critical_kind::saddle)
+        out.saddles.emplace_back(c.vertex, c.multiplicity);
+      else
+      {
+        (c.kind == Critical_kind::minimum ? out.minima : out.maxima).push_back(c.vertex);
+        out.spurious_extrema += !m_constrained[c.vertex];
+      }
+    }
+    return out;
+  }
+
+  /// Remeshes into `out` (the new vertices and faces are added to it): a quad-dominant polygon
+  /// mesh with the input's topology, consistently oriented like the input.
+  ///
+  /// \tparam PolygonMesh a model of `MutableFaceGraph` with an internal point property map
+  /// \param np optional named parameters among:
+  /// - `target_edge_length` (double > 0): the spacing h of both families of curves; default
+  ///   sqrt(area / 3000), i.e. about 3000 faces
+  /// - `quad_poles` (bool, default true): fans of quads at the extrema (every other line ends
+  ///   there); false: fans of triangles
+  /// - `vertex_point_map`: of `out`
+  /// \throws Invalid_parameter `target_edge_length` is not finite and positive, or so small that
+  ///         the net would exceed 10 million vertices
+  /// \throws std::logic_error if the net is not a valid polygon mesh (a bug: please report it)
+  template <class PolygonMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+  Harmonic_quad_remeshing_report remesh(PolygonMesh& out, const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    Harmonic_quad_remeshing_report report;
+    double area = 0.;
+    for(double a : m_mesh.area)
+      area += a;
+    const double h = choose_parameter(get_parameter(np, internal_np::target_edge_length), std::sqrt(area / 3000.));
+    if(!std::isfinite(h) || !(h > 0.))
+      throw Invalid_parameter("target_edge_length", "must be finite and positive (got " + internal::to_text(h) + ")");
+    if(area / (h * h) > 1e7)
+      throw Invalid_parameter("target_edge_length", internal::to_text(h) + " would make about " +
+                                                      internal::to_text(area / (h * h)) +
+                                                      " faces (the surface area is " + internal::to_text(area) +
+                                                      "); at most 1e7");
+    report.target_edge_length = h;
+    solve();
+    report.harmonic_seconds = m_setup_seconds + m_solve_seconds;
+
+    auto start = Clock::now();
+    internal::harmonic_quad::Net_options options;
+    options.edge_length = h;
+    options.quad_poles = choose_parameter(get_parameter(np, internal_np::quad_poles), true);
+    internal::harmonic_quad::Quad_net_builder builder(m_mesh, m_u, options);
+    internal::harmonic_quad::Polygon_soup soup = builder.build();
+    const auto& s = builder.statistics();
+    report.levels = s.levels;
+    report.isolines = s.isolines;
+    report.gradient_lines = s.gradient_lines;
+    report.stopped_lines = s.stopped_lines;
+    report.started_lines = s.started_lines;
+    report.merged_lines = s.merged_lines;
+    report.saddle_levels = s.saddle_levels;
+    report.curves_seconds = seconds_since(start);
+
+    start = Clock::now();
+    if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup.faces))
+      throw std::logic_error("CGAL::Surface_design::Harmonic_quad_remesher: the net of isolines and gradient "
+                             "lines is not a valid polygon mesh (please report this with the input mesh)");
+    using Out_vpm = typename CGAL::GetVertexPointMap<PolygonMesh, NamedParameters>::type;
+    using Out_point = typename boost::property_traits<Out_vpm>::value_type;
+    std::vector<Out_point> points;
+    points.reserve(soup.points.size());
+    for(const auto& p : soup.points)
+      points.emplace_back(p.x(), p.y(), p.z());
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, soup.faces, out,
+                                                                CGAL::parameters::default_values(), np);
+    report.vertices = soup.points.size();
+    report.faces = soup.faces.size();
+    report.meshing_seconds = seconds_since(start);
+    return report;
+  }
+
+private:
+  using Solver = internal::harmonic_quad::Harmonic_solver<SolverTraits>;
+
+  static double seconds_since(Clock::time_point t)
+  {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+  }
+
+  void solve()
+  {
+    if(m_solved)
+      return;
+    const auto start = Clock::now();
+    m_constrained.assign(m_mesh.number_of_vertices(), 0);
+    m_u.assign(m_mesh.number_of_vertices(), 0.);
+    for(const auto& [v, value] : m_constraints)
+    {
+      m_constrained[v] = 1;
+      m_u[v] = value;
+    }
+    m_solver->factor(m_constrained);
+    m_solver->solve(m_u);
+    m_solve_seconds = seconds_since(start);
+    m_solved = true;
+  }
+
+  Indices m_idx;
+  VertexPointMap m_vpm;
+  internal::harmonic_quad::Trace_mesh m_mesh;
+  Harmonic_weights m_weights_kind = Harmonic_weights::cotangent;
+  std::size_t m_flips = 0;
+  std::unique_ptr<Solver> m_solver;
+  std::vector<std::pair<std::size_t, double>> m_constraints;
+  std::vector<char> m_constrained;
+  std::vector<double> m_u;
+  bool m_solved = false;
+  double m_setup_seconds = 0., m_solve_seconds = 0.;
+};
+
+} // namespace Surface_design
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_DESIGN_HARMONIC_QUAD_REMESHER_H

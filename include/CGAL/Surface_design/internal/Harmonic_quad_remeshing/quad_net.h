@@ -1,0 +1,1123 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The net of isolines and gradient lines of a harmonic function, and its faces.
+
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_HARMONIC_QUAD_REMESHING_QUAD_NET_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_HARMONIC_QUAD_REMESHING_QUAD_NET_H
+
+#include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/curves.h>
+#include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/harmonic_function.h>
+#include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/trace_mesh.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <map>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_design {
+namespace internal {
+namespace harmonic_quad {
+
+struct Net_options
+{
+  double edge_length = 1.;       ///< target spacing h of both families of curves
+  double min_spacing = 0.7071;   ///< a gradient line stops where its neighbour is closer than this * h
+  double max_spacing = 1.4142;   ///< a gradient line starts in gaps wider than this * h
+  bool quad_poles = true;        ///< every other line ends at an extremum: a fan of quads (else triangles)
+};
+
+struct Net_statistics
+{
+  std::size_t levels = 0, isolines = 0, gradient_lines = 0, stopped_lines = 0, started_lines = 0;
+  std::size_t lost_lines = 0, removed_dangling_edges = 0, extra_boundary_levels = 0, saddle_levels = 0;
+  std::size_t reordered_lines = 0, merged_lines = 0, refined_levels = 0, attached_loops = 0;
+};
+
+/// The output polygon mesh as a soup: vertex positions and counter-clockwise faces.
+struct Polygon_soup
+{
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::vector<std::size_t>> faces;
+  std::vector<int> kind; ///< per point: 0 isoline x gradient line, 1 extremum (pole), 2 on the boundary
+  std::vector<double> value; ///< per point: the value of u there
+};
+
+/// Builds the net of Dong et al.: isolines at levels spaced by h (adaptively: the next level is
+/// h times the median gradient norm further), gradient lines traced upwards from isoline to
+/// isoline with spacing kept in [min_spacing, max_spacing] * h along every isoline (a line stops
+/// or starts there otherwise), lines ending at extrema (poles) and at the boundary; then the faces
+/// of the embedded graph by its rotation system.
+class Quad_net_builder
+{
+public:
+  Quad_net_builder(const Trace_mesh& m, const std::vector<double>& u, const Net_options& options)
+    : m_m(m), m_u(u), m_opt(options), m_levels_in_face(m.number_of_faces())
+  {}
+
+  const Net_statistics& statistics() const { return m_stats; }
+  const std::vector<Isoline>& isolines() const { return m_iso; }
+
+  Polygon_soup build()
+  {
+    choose_levels();
+    trace_lines();
+    return assemble();
+  }
+
+private:
+  // ---- levels -------------------------------------------------------------------------------
+  double median_gradient_at(double c) const
+  {
+    std::vector<std::pair<double, double>> g; // (|grad u|, segment length)
+    for(std::size_t f = 0; f < m_m.number_of_faces(); ++f)
+    {
+      const auto& t = m_m.tri[f];
+      const double lo = (std::min)({m_u[t[0]], m_u[t[1]], m_u[t[2]]});
+      const double hi = (std::max)({m_u[t[0]], m_u[t[1]], m_u[t[2]]});
+      if(lo < c && c < hi)
+      {
+        const double gn = m_grad_norm[f];
+        g.emplace_back(gn, std::sqrt(m_m.area[f])); // weight ~ the length of the level in f
+      }
+    }
+    if(g.empty())
+      return 0.;
+    std::sort(g.begin(), g.end());
+    double total = 0.;
+    for(const auto& x : g)
+      total += x.second;
+    double acc = 0.;
+    for(const auto& x : g)
+      if((acc += x.second) >= 0.5 * total)
+        return x.first;
+    return g.back().first;
+  }
+
+  std::size_t loop_of_edge(std::size_t e) const
+  {
+    const auto [f, i] = m_m.edge_side[e];
+    return m_m.boundary_position[m_m.tri[f][i]].first;
+  }
+
+  // A loop shorter than h would carry fewer than three crossings, and a path shorter than 2 h from
+  // a boundary loop back to it would cut off a sliver next to a small hole: such isolines are
+  // left out.
+  bool worth_keeping(const Isoline& iso) const
+  {
+    if(iso.closed)
+      return iso.length() >= m_opt.edge_length;
+    return iso.length() >= 2. * m_opt.edge_length ||
+           loop_of_edge(iso.point_edge.front()) != loop_of_edge(iso.point_edge.back());
+  }
+
+  void include(Isoline&& iso)
+  {
+    const std::size_t id = m_iso.size();
+    for(std::size_t k = 0; k < iso.segments(); ++k)
+      m_levels_in_face[iso.faces[k]].push_back({iso.value, id, k});
+    m_iso.push_back(std::move(iso));
+  }
+
+  void add_level(double c)
+  {
+    for(Isoline& iso : extract_isolines(m_m, m_u, c))
+      if(worth_keeping(iso))
+        include(std::move(iso));
+    ++m_stats.levels;
+  }
+
+  void choose_levels()
+  {
+    m_grad_norm.resize(m_m.number_of_faces());
+    for(std::size_t f = 0; f < m_m.number_of_faces(); ++f)
+      m_grad_norm[f] = m_m.gradient(f, m_u).norm();
+    std::vector<double> sorted(m_u);
+    std::sort(sorted.begin(), sorted.end());
+    const double lo = sorted.front(), hi = sorted.back(), range = hi - lo;
+    const double gap = 1e-9 * range;
+    const double h = m_opt.edge_length;
+    double c = lo;
+    for(std::size_t guard = 0; guard < 100000; ++guard)
+    {
+      double g = median_gradient_at(avoid_vertex_values(c + gap, sorted, gap));
+      if(!(g > 0.))
+        break;
+      const double mid = c + 0.5 * h * g; // midpoint rule: the gradient varies within a step
+      const double gm = median_gradient_at(avoid_vertex_values(mid, sorted, gap));
+      if(gm > 0.)
+        g = gm;
+      c = avoid_vertex_values(c + h * g, sorted, gap);
+      if(c >= hi - gap)
+        break;
+      add_level(c);
+    }
+    // bands far wider than h somewhere (a protrusion where u hardly varies) get local levels
+    std::vector<double> values{lo};
+    for(const Isoline& iso : m_iso)
+      values.push_back(iso.value);
+    values.push_back(hi);
+    std::sort(values.begin(), values.end());
+    values.erase(std::unique(values.begin(), values.end()), values.end());
+    std::vector<std::size_t> all(m_m.number_of_faces());
+    std::iota(all.begin(), all.end(), std::size_t(0));
+    for(std::size_t k = 0; k + 1 < values.size(); ++k)
+      refine_band(values[k], values[k + 1], all, sorted, gap, 0);
+    separate_saddles(sorted, gap);
+    // a boundary loop along which u varies but that no isoline meets gets one through its middle
+    std::vector<char> touched(m_m.boundary_loop.size(), 0);
+    for(const Isoline& iso : m_iso)
+      if(!iso.closed)
+        touched[loop_of_edge(iso.point_edge.front())] = touched[loop_of_edge(iso.point_edge.back())] = 1;
+    for(std::size_t l = 0; l < m_m.boundary_loop.size(); ++l)
+    {
+      double a = std::numeric_limits<double>::infinity(), b = -a;
+      for(std::size_t v : m_m.boundary_loop[l])
+      {
+        a = (std::min)(a, m_u[v]);
+        b = (std::max)(b, m_u[v]);
+      }
+      if(touched[l] || !(b - a > 1e3 * gap))
+        continue;
+      const double middle = avoid_vertex_values(0.5 * (a + b), sorted, gap);
+      for(Isoline& iso : extract_isolines(m_m, m_u, middle))
+        if(!iso.closed && worth_keeping(iso) &&
+           (loop_of_edge(iso.point_edge.front()) == l || loop_of_edge(iso.point_edge.back()) == l))
+        {
+          include(std::move(iso));
+          ++m_stats.extra_boundary_levels;
+        }
+    }
+    m_stats.isolines = m_iso.size();
+  }
+
+  // The connected regions of the faces in `candidates` whose values meet (a, b) (a band between two
+  // levels): where a region is wider than 1.6 h across the levels (measured with its median
+  // gradient), isolines at intermediate values are added inside that region only, recursively.
+  void refine_band(double a, double b, const std::vector<std::size_t>& candidates, const std::vector<double>& sorted,
+                   double gap, int depth)
+  {
+    const double h = m_opt.edge_length;
+    if(depth > 3)
+      return;
+    std::vector<std::size_t> band;
+    for(std::size_t f : candidates)
+    {
+      const auto& t = m_m.tri[f];
+      if((std::min)({m_u[t[0]], m_u[t[1]], m_u[t[2]]}) < b && (std::max)({m_u[t[0]], m_u[t[1]], m_u[t[2]]}) > a)
+        band.push_back(f);
+    }
+    if(band.empty())
+      return;
+    std::map<std::size_t, std::size_t> local;
+    for(std::size_t k = 0; k < band.size(); ++k)
+      local[band[k]] = k;
+    Union_find sets(band.size());
+    for(std::size_t k = 0; k < band.size(); ++k)
+      for(int i = 0; i < 3; ++i)
+      {
+        const auto it = local.find(m_m.neighbour[band[k]][std::size_t(i)]);
+        if(it != local.end())
+          sets.unite(k, it->second);
+      }
+    std::map<std::size_t, std::vector<std::size_t>> regions;
+    for(std::size_t k = 0; k < band.size(); ++k)
+      regions[sets.find(k)].push_back(band[k]);
+    for(auto& [root, faces] : regions)
+    {
+      std::vector<std::pair<double, double>> g; // (|grad u|, area)
+      double total = 0.;
+      for(std::size_t f : faces)
+      {
+        g.emplace_back(m_grad_norm[f], m_m.area[f]);
+        total += m_m.area[f];
+      }
+      std::sort(g.begin(), g.end());
+      double acc = 0., median = g.back().first;
+      for(const auto& x : g)
+        if((acc += x.second) >= 0.5 * total)
+        {
+          median = x.first;
+          break;
+        }
+      const double width = median > 0. ? (b - a) / median : 0.;
+      if(!(width > 1.6 * h))
+        continue;
+      const std::size_t parts = (std::min<std::size_t>)(std::size_t(std::lround(width / h)), 64);
+      std::vector<char> inside(m_m.number_of_faces(), 0);
+      for(std::size_t f : faces)
+        inside[f] = 1;
+      std::vector<double> cuts{a};
+      for(std::size_t j = 1; j < parts; ++j)
+      {
+        const double v = avoid_vertex_values(a + (b - a) * double(j) / double(parts), sorted, gap);
+        if(!(v > cuts.back() && v < b))
+          continue;
+        cuts.push_back(v);
+        for(Isoline& iso : extract_isolines(m_m, m_u, v))
+          if(inside[iso.faces[0]] && worth_keeping(iso))
+          {
+            include(std::move(iso));
+            ++m_stats.refined_levels;
+          }
+      }
+      cuts.push_back(b);
+      for(std::size_t j = 0; j + 1 < cuts.size(); ++j)
+        refine_band(cuts[j], cuts[j + 1], faces, sorted, gap, depth + 1);
+    }
+  }
+
+  // Two saddles between the same two levels leave a band that the gradient lines may fail to cut
+  // into disks (all lines of one lower loop reaching the same upper loop): between them, an
+  // extra isoline is added in the region of the slab of values between the two saddles.
+  void separate_saddles(const std::vector<double>& sorted, double gap)
+  {
+    const auto critical = critical_points(m_m, m_u).first;
+    std::vector<std::size_t> saddles;
+    for(const Critical_point& c : critical)
+      if(c.kind == Critical_kind::saddle)
+        saddles.push_back(c.vertex);
+    std::sort(saddles.begin(), saddles.end(), [&](std::size_t a, std::size_t b) { return below(m_u, a, b); });
+    std::vector<double> level_values;
+    for(const Isoline& iso : m_iso)
+      level_values.push_back(iso.value);
+    std::sort(level_values.begin(), level_values.end());
+    auto band = [&](double x) { return std::lower_bound(level_values.begin(), level_values.end(), x) - level_values.begin(); };
+    for(std::size_t k = 0; k + 1 < saddles.size(); ++k)
+    {
+      const double a = m_u[saddles[k]], b = m_u[saddles[k + 1]];
+      if(band(a) != band(b) || !(b - a > 4. * gap))
+        continue;
+      const double c = avoid_vertex_values(0.5 * (a + b), sorted, (std::min)(gap, 0.1 * (b - a)));
+      // the faces of the slab a <= u <= b connected to the lower saddle
+      std::vector<char> in_slab(m_m.number_of_faces(), 0);
+      std::vector<std::size_t> stack;
+      for(const auto& [f, i] : m_m.star[saddles[k]])
+      {
+        in_slab[f] = 1;
+        stack.push_back(f);
+      }
+      while(!stack.empty())
+      {
+        const std::size_t f = stack.back();
+        stack.pop_back();
+        for(int i = 0; i < 3; ++i)
+        {
+          const std::size_t g = m_m.neighbour[f][std::size_t(i)];
+          if(g == npos || in_slab[g])
+            continue;
+          const auto& t = m_m.tri[g];
+          const double lo = (std::min)({m_u[t[0]], m_u[t[1]], m_u[t[2]]});
+          const double hi = (std::max)({m_u[t[0]], m_u[t[1]], m_u[t[2]]});
+          if(hi >= a && lo <= b)
+          {
+            in_slab[g] = 1;
+            stack.push_back(g);
+          }
+        }
+      }
+      for(Isoline& iso : extract_isolines(m_m, m_u, c))
+        if(in_slab[iso.faces[0]] && worth_keeping(iso))
+        {
+          include(std::move(iso));
+          ++m_stats.saddle_levels;
+        }
+    }
+  }
+
+  // ---- gradient lines ------------------------------------------------------------------------
+  struct Crossing
+  {
+    double s;                 // arc-length position on its isoline
+    Eigen::Vector3d point;
+    std::size_t down = npos;    // set when a line arrives from below or was traced down
+    bool up = false;            // a line continues upwards from here
+    std::size_t node = npos;    // net node id
+    std::size_t pending = npos; // pending code of the line that landed here
+  };
+
+  // a net node: crossing (isoline, index), pole (mesh vertex) or boundary point
+  struct Node
+  {
+    Eigen::Vector3d point;
+    int kind; // 0 crossing, 1 pole, 2 boundary point
+    std::size_t curve = npos, index = npos, vertex = npos, loop = npos;
+    double loop_position = 0.;
+    double s = 0.; // arc-length position on `curve`
+  };
+
+  std::size_t node_for_end(const Trace_end& e, std::size_t from_node)
+  {
+    switch(e.kind)
+    {
+    case Trace_end::isoline: {
+      Crossing c;
+      c.s = m_iso[e.curve].arc_position(e.segment, e.point);
+      c.point = e.point;
+      c.down = from_node;
+      c.pending = m_pending_node.size();
+      m_pending_node.push_back(npos);
+      m_crossings[e.curve].push_back(c);
+      return pending_bit | c.pending;
+    }
+    case Trace_end::pole: {
+      auto it = m_pole_node.find(e.vertex);
+      if(it != m_pole_node.end())
+        return it->second;
+      Node n;
+      n.point = e.point;
+      n.kind = 1;
+      n.vertex = e.vertex;
+      if(m_m.on_boundary[e.vertex])
+      {
+        n.loop = m_m.boundary_position[e.vertex].first;
+        n.loop_position = double(m_m.boundary_position[e.vertex].second);
+      }
+      m_nodes.push_back(n);
+      m_pole_node[e.vertex] = m_nodes.size() - 1;
+      return m_nodes.size() - 1;
+    }
+    case Trace_end::boundary: {
+      Node n;
+      n.point = e.point;
+      n.kind = 2;
+      n.loop = e.loop;
+      n.loop_position = e.loop_position;
+      m_nodes.push_back(n);
+      return m_nodes.size() - 1;
+    }
+    default:
+      ++m_stats.lost_lines;
+      return npos;
+    }
+  }
+
+  // crossings get their node ids when their isoline is finalized; until then a line that lands
+  // on one refers to it by a pending code
+  static constexpr std::size_t pending_bit = std::size_t(1) << (sizeof(std::size_t) * 8 - 1);
+  std::size_t resolve(std::size_t id) const
+  {
+    if(id == npos || !(id & pending_bit))
+      return id;
+    return m_pending_node[id & ~pending_bit];
+  }
+
+  // Fences along an isoline: the continuing crossings (and the boundary ends of a path), with
+  // the gaps between consecutive ones.
+  struct Fences
+  {
+    std::vector<double> pos;
+    std::vector<std::size_t> who; // crossing index, npos for a boundary end
+    double length;
+    bool closed;
+    std::size_t size() const { return pos.size(); }
+    std::size_t gaps() const { return closed ? pos.size() : (pos.empty() ? 0 : pos.size() - 1); }
+    double gap(std::size_t k) const
+    {
+      return k + 1 < pos.size() ? pos[k + 1] - pos[k] : pos[0] + length - pos[k];
+    }
+  };
+
+  Fences fences(const Isoline& iso, const std::vector<Crossing>& cr) const
+  {
+    Fences f;
+    f.length = iso.length();
+    f.closed = iso.closed;
+    if(!iso.closed)
+    {
+      f.pos.push_back(0.);
+      f.who.push_back(npos);
+    }
+    for(std::size_t k = 0; k < cr.size(); ++k)
+      if(cr[k].up)
+      {
+        f.pos.push_back(cr[k].s);
+        f.who.push_back(k);
+      }
+    if(!iso.closed)
+    {
+      f.pos.push_back(iso.length());
+      f.who.push_back(npos);
+    }
+    return f;
+  }
+
+  void add_crossing(std::size_t c, double s)
+  {
+    const Isoline& iso = m_iso[c];
+    auto& cr = m_crossings[c];
+    const double h = m_opt.edge_length;
+    if(iso.closed)
+      s = std::fmod(s, iso.length());
+    for(Crossing& x : cr) // revive a stopped crossing near the spot rather than adding one
+      if(!x.up && std::abs(x.s - s) < 0.25 * h)
+      {
+        x.up = true;
+        --m_stats.stopped_lines;
+        return;
+      }
+    Crossing x;
+    x.s = s;
+    x.point = iso.at(s).first;
+    x.up = true;
+    cr.push_back(x);
+    ++m_stats.started_lines;
+  }
+
+  void space_crossings(std::size_t c)
+  {
+    const Isoline& iso = m_iso[c];
+    auto& cr = m_crossings[c];
+    const double h = m_opt.edge_length, L = iso.length();
+    if(cr.empty())
+    {
+      // a first isoline (around a minimum or above a boundary): evenly spaced lines, traced both
+      // ways; an even number on a loop, so that the fan at the pole below becomes quads
+      std::size_t n = std::size_t(std::lround(L / h));
+      if(iso.closed)
+        n = (std::max)(n + n % 2, std::size_t(4));
+      for(std::size_t k = iso.closed ? 0 : 1; k < n; ++k)
+        add_crossing(c, double(k) * L / double(n));
+      m_trace_down.push_back(c);
+      return;
+    }
+    for(Crossing& x : cr)
+      x.up = true;
+    untangle_arrivals(c);
+    // a loop reached by fewer than two lines (one side of a splitting saddle) would hang on a
+    // single line, a slit inside one face: its new lines are traced downwards as well
+    if(iso.closed && cr.size() < 2)
+      m_trace_down.push_back(c);
+    std::stable_sort(cr.begin(), cr.end(), [](const Crossing& a, const Crossing& b) { return a.s < b.s; });
+    // stop lines that come too close to a neighbour (or to the boundary): at the smallest gap,
+    // the line whose other gap is the smaller one
+    for(;;)
+    {
+      const Fences f = fences(iso, cr);
+      const std::size_t live = iso.closed ? f.size() : f.size() - 2;
+      if(live == 0 || (iso.closed && live <= 3))
+        break;
+      std::size_t k = 0;
+      for(std::size_t j = 1; j < f.gaps(); ++j)
+        if(f.gap(j) < f.gap(k))
+          k = j;
+      if(!(f.gap(k) < m_opt.min_spacing * h))
+        break;
+      const std::size_t left = k, right = (k + 1) % f.size();
+      const std::size_t left_other = iso.closed ? (k + f.gaps() - 1) % f.gaps() : k - 1; // gap before `left`
+      const std::size_t right_other = iso.closed ? (k + 1) % f.gaps() : k + 1;             // gap after `right`
+      std::size_t victim;
+      if(f.who[left] == npos)
+        victim = f.who[right];
+      else if(f.who[right] == npos)
+        victim = f.who[left];
+      else
+        victim = f.gap(left_other) < f.gap(right_other) ? f.who[left] : f.who[right];
+      cr[victim].up = false;
+      ++m_stats.stopped_lines;
+    }
+    // start lines in gaps that are too wide
+    const Fences f = fences(iso, cr);
+    for(std::size_t k = 0; k < f.gaps(); ++k)
+    {
+      const double g = f.gap(k);
+      if(!(g > m_opt.max_spacing * h))
+        continue;
+      const std::size_t parts = std::size_t(std::lround(g / h));
+      for(std::size_t j = 1; j < parts; ++j)
+        add_crossing(c, f.pos[k] + double(j) * g / double(parts));
+    }
+    // at least three lines around a loop
+    for(;;)
+    {
+      const Fences g = fences(iso, cr);
+      if(!iso.closed || g.size() >= 3)
+        break;
+      std::size_t k = 0;
+      for(std::size_t j = 1; j < g.gaps(); ++j)
+        if(g.gap(j) > g.gap(k))
+          k = j;
+      add_crossing(c, g.pos[k] + 0.5 * g.gap(k));
+    }
+  }
+
+  void finalize_crossings(std::size_t c)
+  {
+    auto& cr = m_crossings[c];
+    std::stable_sort(cr.begin(), cr.end(), [](const Crossing& a, const Crossing& b) { return a.s < b.s; });
+    for(Crossing& x : cr)
+    {
+      Node n;
+      n.point = x.point;
+      n.kind = 0;
+      n.curve = c;
+      n.s = x.s;
+      m_nodes.push_back(n);
+      x.node = m_nodes.size() - 1;
+      if(x.pending != npos)
+        m_pending_node[x.pending] = x.node;
+    }
+  }
+
+  static double wrapped(double d, double length, bool closed)
+  {
+    if(!closed)
+      return d;
+    d = std::fmod(d, length);
+    if(d > 0.5 * length)
+      d -= length;
+    else if(d <= -0.5 * length)
+      d += length;
+    return d;
+  }
+
+  // Discrete gradient lines may cross or merge (through vertices, along sink edges), which would
+  // make the net non-planar. The lines from one isoline keep their order on the next one: their
+  // landing points are given back to them in the order of their sources (the cyclic shift that
+  // moves them least); of two lines landing on the same point, one stops.
+  void untangle_arrivals(std::size_t c)
+  {
+    const Isoline& iso = m_iso[c];
+    auto& cr = m_crossings[c];
+    const double L = iso.length();
+    std::map<std::size_t, std::vector<std::size_t>> by_source;
+    for(std::size_t k = 0; k < cr.size(); ++k)
+      if(cr[k].down != npos && m_nodes[cr[k].down].kind == 0)
+        by_source[m_nodes[cr[k].down].curve].push_back(k);
+    for(auto& [source, lines] : by_source)
+    {
+      const std::size_t n = lines.size();
+      if(n < 2)
+        continue;
+      const Isoline& from = m_iso[source];
+      std::vector<double> landing;
+      for(std::size_t k : lines)
+        landing.push_back(cr[k].s);
+      std::sort(landing.begin(), landing.end());
+      std::sort(lines.begin(), lines.end(), [&](std::size_t a, std::size_t b) {
+        return m_nodes[cr[a].down].s < m_nodes[cr[b].down].s;
+      });
+      (void)from;
+      std::size_t best_shift = 0;
+      double best = std::numeric_limits<double>::infinity();
+      // (a source loop has no first line: the shift is found on open isolines as well)
+      for(std::size_t shift = 0; shift < n; ++shift)
+      {
+        double cost = 0.;
+        for(std::size_t j = 0; j < n; ++j)
+          cost += std::abs(wrapped(landing[(j + shift) % n] - cr[lines[j]].s, L, iso.closed));
+        if(cost < best)
+        {
+          best = cost;
+          best_shift = shift;
+        }
+      }
+      for(std::size_t j = 0; j < n; ++j)
+      {
+        const double t = landing[(j + best_shift) % n];
+        if(t != cr[lines[j]].s)
+        {
+          cr[lines[j]].s = t;
+          cr[lines[j]].point = iso.at(t).first;
+          ++m_stats.reordered_lines;
+        }
+      }
+    }
+    std::stable_sort(cr.begin(), cr.end(), [](const Crossing& a, const Crossing& b) { return a.s < b.s; });
+    // a line that lands where another one landed (they met at a vertex or along an edge) ends
+    // one isoline earlier: its source becomes a T-junction
+    std::vector<Crossing> kept;
+    for(const Crossing& x : cr)
+      if(kept.empty() || x.s - kept.back().s >= 1e-3 * m_opt.edge_length)
+        kept.push_back(x);
+      else
+        ++m_stats.merged_lines;
+    cr.swap(kept);
+  }
+
+  void trace_lines()
+  {
+    m_crossings.assign(m_iso.size(), {});
+    Gradient_walker walker(m_m, m_u, m_levels_in_face);
+    std::vector<std::size_t> order(m_iso.size());
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return m_iso[a].value < m_iso[b].value; });
+    m_processed.assign(m_iso.size(), 0);
+    for(std::size_t c : order)
+    {
+      space_crossings(c);
+      // node ids fixed here: later lines that land on this isoline from above (descending
+      // traces) get theirs in `late_crossing`
+      finalize_crossings(c);
+      m_processed[c] = 1;
+      const Isoline& iso = m_iso[c];
+      const bool down = !m_trace_down.empty() && m_trace_down.back() == c;
+      for(std::size_t k = 0; k < m_crossings[c].size(); ++k)
+      {
+        Crossing& x = m_crossings[c][k];
+        const std::size_t seg = iso.at(x.s).second;
+        if(down && x.down == npos)
+        {
+          const Trace_end e = walker.from_face(iso.faces[seg], x.point, iso.value, -1);
+          const std::size_t id = end_node(e, x.node, true);
+          m_crossings[c][k].down = id;
+          ++m_stats.gradient_lines;
+        }
+        if(m_crossings[c][k].up)
+        {
+          const Trace_end e = walker.from_face(iso.faces[seg], m_crossings[c][k].point, iso.value, +1);
+          const std::size_t node = m_crossings[c][k].node;
+          const std::size_t id = end_node(e, node, false);
+          if(id != npos)
+            m_line_edges.emplace_back(node, id);
+          ++m_stats.gradient_lines;
+        }
+      }
+    }
+  }
+
+  // the node a traced line ends at; a descending line landing on an isoline already processed
+  // adds a crossing there with its node at once
+  std::size_t end_node(const Trace_end& e, std::size_t from, bool descending)
+  {
+    if(e.kind == Trace_end::isoline && (descending || m_processed[e.curve]))
+    {
+      Crossing x;
+      x.s = m_iso[e.curve].arc_position(e.segment, e.point);
+      x.point = e.point;
+      Node n;
+      n.point = e.point;
+      n.kind = 0;
+      n.curve = e.curve;
+      m_nodes.push_back(n);
+      x.node = m_nodes.size() - 1;
+      m_crossings[e.curve].push_back(x);
+      if(!descending)
+        return x.node;
+      m_line_edges.emplace_back(x.node, from);
+      return npos - 1; // recorded already
+    }
+    const std::size_t id = node_for_end(e, from);
+    if(descending && id != npos)
+    {
+      m_line_edges.emplace_back(resolve(id), from);
+      return npos - 1;
+    }
+    return id;
+  }
+
+  // ---- assembly ------------------------------------------------------------------------------
+  // A boundary loop that no line reaches and no isoline with lines on it touches (a small hole
+  // inside one cell) would leave the cell an annulus: it gets a gradient line upwards from its
+  // highest vertex and one downwards from its lowest, which end on the net.
+  void attach_floating_loops()
+  {
+    const std::size_t nl = m_m.boundary_loop.size();
+    if(nl == 0)
+      return;
+    std::vector<char> attached(nl, 0);
+    for(const auto& [a, b] : m_line_edges)
+      for(std::size_t id : {resolve(a), resolve(b)})
+        if(id != npos && m_nodes[id].loop != npos)
+          attached[m_nodes[id].loop] = 1;
+    for(std::size_t c = 0; c < m_iso.size(); ++c)
+      if(!m_iso[c].closed && !m_crossings[c].empty())
+      {
+        attached[loop_of_edge(m_iso[c].point_edge.front())] = 1;
+        attached[loop_of_edge(m_iso[c].point_edge.back())] = 1;
+      }
+    for(bool changed = true; changed;)
+    {
+      changed = false;
+      for(std::size_t c = 0; c < m_iso.size(); ++c)
+        if(!m_iso[c].closed)
+        {
+          const std::size_t a = loop_of_edge(m_iso[c].point_edge.front()), b = loop_of_edge(m_iso[c].point_edge.back());
+          if(attached[a] != attached[b])
+          {
+            attached[a] = attached[b] = 1;
+            changed = true;
+          }
+        }
+    }
+    Gradient_walker walker(m_m, m_u, m_levels_in_face);
+    for(std::size_t l = 0; l < nl; ++l)
+    {
+      if(attached[l])
+        continue;
+      const auto& loop = m_m.boundary_loop[l];
+      std::size_t top = loop[0], bottom = loop[0];
+      for(std::size_t v : loop)
+      {
+        if(below(m_u, top, v))
+          top = v;
+        if(below(m_u, v, bottom))
+          bottom = v;
+      }
+      for(int direction : {+1, -1})
+      {
+        const std::size_t v = direction > 0 ? top : bottom;
+        const Trace_end e = walker.from_vertex(v, direction);
+        if(e.kind == Trace_end::lost || (e.kind == Trace_end::pole && e.vertex == v))
+          continue;
+        Node n;
+        n.point = m_m.point[v];
+        n.kind = 2;
+        n.loop = l;
+        n.loop_position = double(m_m.boundary_position[v].second);
+        m_nodes.push_back(n);
+        const std::size_t node = m_nodes.size() - 1;
+        const std::size_t end = end_node(e, node, direction < 0);
+        if(direction > 0 && end != npos)
+          m_line_edges.emplace_back(node, end);
+        ++m_stats.attached_loops;
+      }
+    }
+  }
+
+  Polygon_soup assemble()
+  {
+    attach_floating_loops();
+    // edges: (a, b, kind) with kind 0 line (a below b), 1 isoline (a before b), 2 boundary
+    struct Edge
+    {
+      std::size_t a, b;
+      int kind;
+    };
+    std::vector<Edge> edges;
+    for(auto [a, b] : m_line_edges)
+    {
+      // npos: a lost line, or one that stopped where it met another (its pending code unresolved)
+      const std::size_t ra = resolve(a), rb = resolve(b);
+      if(ra != npos && rb != npos)
+        edges.push_back({ra, rb, 0});
+    }
+    // lines ending at a pole: keep every other one (a fan of quads)
+    std::vector<std::vector<std::size_t>> into_pole(m_nodes.size());
+    for(std::size_t k = 0; k < edges.size(); ++k)
+    {
+      if(m_nodes[edges[k].b].kind == 1)
+        into_pole[edges[k].b].push_back(k);
+      else if(m_nodes[edges[k].a].kind == 1)
+        into_pole[edges[k].a].push_back(k);
+    }
+    std::vector<char> drop(edges.size(), 0);
+    for(std::size_t p = 0; p < m_nodes.size(); ++p)
+    {
+      auto& in = into_pole[p];
+      if(in.size() < 3)
+      {
+        for(std::size_t k : in)
+          drop[k] = 1; // fewer than three lines: no pole
+        continue;
+      }
+      if(!m_opt.quad_poles || in.size() < 6 || m_nodes[p].loop != npos)
+        continue;
+      sort_around(p, in, edges);
+      for(std::size_t k = 1; k < in.size(); k += 2)
+        if(!(in.size() % 2 == 1 && k + 1 == in.size()))
+          drop[in[k]] = 1;
+    }
+    std::vector<Edge> kept;
+    for(std::size_t k = 0; k < edges.size(); ++k)
+      if(!drop[k])
+        kept.push_back(edges[k]);
+    edges.swap(kept);
+    // isoline edges
+    for(std::size_t c = 0; c < m_iso.size(); ++c)
+    {
+      auto& cr = m_crossings[c];
+      std::stable_sort(cr.begin(), cr.end(), [](const Crossing& a, const Crossing& b) { return a.s < b.s; });
+      std::vector<std::size_t> chain;
+      const Isoline& iso = m_iso[c];
+      if(!iso.closed)
+        chain.push_back(boundary_node(iso.point_edge.front(), iso.point.front()));
+      for(const Crossing& x : cr)
+        chain.push_back(x.node);
+      if(!iso.closed)
+        chain.push_back(boundary_node(iso.point_edge.back(), iso.point.back()));
+      for(std::size_t k = 0; k + 1 < chain.size(); ++k)
+        edges.push_back({chain[k], chain[k + 1], 1});
+      if(iso.closed && chain.size() >= 2)
+        edges.push_back({chain.back(), chain.front(), 1});
+    }
+    // boundary edges between consecutive boundary nodes of every loop
+    std::vector<std::vector<std::pair<double, std::size_t>>> on_loop(m_m.boundary_loop.size());
+    for(std::size_t n = 0; n < m_nodes.size(); ++n)
+      if(m_nodes[n].loop != npos)
+        on_loop[m_nodes[n].loop].emplace_back(m_nodes[n].loop_position, n);
+    for(std::size_t l = 0; l < on_loop.size(); ++l)
+    {
+      auto& q = on_loop[l];
+      std::sort(q.begin(), q.end());
+      // a loop that curves reach fewer than three times gets nodes at boundary vertices, so that
+      // it stays a loop of the output
+      const auto& loop = m_m.boundary_loop[l];
+      for(std::size_t k = 0; q.size() < 3 && k < 3; ++k)
+      {
+        const std::size_t at = (k * loop.size()) / 3 + (q.empty() ? 0 : std::size_t(q[0].first) + loop.size() / 6);
+        Node n;
+        n.point = m_m.point[loop[at % loop.size()]];
+        n.kind = 2;
+        n.loop = l;
+        n.loop_position = double(at % loop.size());
+        bool taken = false;
+        for(const auto& x : q)
+          taken = taken || std::abs(x.first - n.loop_position) < 0.5;
+        if(taken)
+          continue;
+        m_nodes.push_back(n);
+        q.emplace_back(n.loop_position, m_nodes.size() - 1);
+        std::sort(q.begin(), q.end());
+      }
+      for(std::size_t k = 0; k < q.size(); ++k)
+        edges.push_back({q[k].second, q[(k + 1) % q.size()].second, 2});
+    }
+    return faces_of(edges);
+  }
+
+  std::size_t boundary_node(std::size_t mesh_edge, const Eigen::Vector3d& p)
+  {
+    const auto [f, i] = m_m.edge_side[mesh_edge];
+    const std::size_t a = m_m.tri[f][i], b = m_m.tri[f][(i + 1) % 3];
+    const double len = (m_m.point[b] - m_m.point[a]).norm();
+    const double t = len > 0. ? std::clamp((p - m_m.point[a]).norm() / len, 0., 1.) : 0.;
+    Node n;
+    n.point = p;
+    n.kind = 2;
+    n.loop = m_m.boundary_position[a].first;
+    n.loop_position = double(m_m.boundary_position[a].second) + t;
+    m_nodes.push_back(n);
+    return m_nodes.size() - 1;
+  }
+
+  Eigen::Vector3d vertex_normal(std::size_t v) const
+  {
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    for(const auto& [f, i] : m_m.star[v])
+      n += m_m.area[f] * m_m.normal[f];
+    return n.normalized();
+  }
+
+  template <class Edges>
+  void sort_around(std::size_t p, std::vector<std::size_t>& in, const Edges& edges) const
+  {
+    const Eigen::Vector3d n = vertex_normal(m_nodes[p].vertex);
+    Eigen::Vector3d x = n.unitOrthogonal(), y = n.cross(x);
+    std::vector<std::pair<double, std::size_t>> a;
+    for(std::size_t k : in)
+    {
+      const std::size_t o = edges[k].a == p ? edges[k].b : edges[k].a;
+      const Eigen::Vector3d d = m_nodes[o].point - m_nodes[p].point;
+      a.emplace_back(std::atan2(d.dot(y), d.dot(x)), k);
+    }
+    bool one_loop = true;
+    for(std::size_t k : in)
+    {
+      const Node& o = m_nodes[edges[k].a == p ? edges[k].b : edges[k].a];
+      const Node& f = m_nodes[edges[in[0]].a == p ? edges[in[0]].b : edges[in[0]].a];
+      one_loop = one_loop && o.kind == 0 && o.curve == f.curve && m_iso[o.curve].closed;
+    }
+    if(one_loop) // lines from one loop: their order along it (see faces_of)
+      for(std::size_t k = 0; k < in.size(); ++k)
+        a[k].first = (edges[in[k]].a == p ? 1. : -1.) * m_nodes[edges[in[k]].a == p ? edges[in[k]].b : edges[in[k]].a].s;
+    std::sort(a.begin(), a.end());
+    for(std::size_t k = 0; k < in.size(); ++k)
+      in[k] = a[k].second;
+  }
+
+  template <class Edges>
+  Polygon_soup faces_of(Edges edges)
+  {
+    const std::size_t nn = m_nodes.size();
+    // remove dangling edges (a node of degree one) repeatedly
+    for(;;)
+    {
+      std::vector<std::size_t> degree(nn, 0);
+      for(const auto& e : edges)
+        ++degree[e.a], ++degree[e.b];
+      Edges kept;
+      for(const auto& e : edges)
+        if(e.a != e.b && degree[e.a] > 1 && degree[e.b] > 1)
+          kept.push_back(e);
+      if(kept.size() == edges.size())
+        break;
+      m_stats.removed_dangling_edges += edges.size() - kept.size();
+      edges.swap(kept);
+    }
+    // rotation system: outgoing halfedges (2 e: a -> b, 2 e + 1: b -> a) sorted counter-clockwise
+    std::vector<std::vector<std::pair<double, std::size_t>>> around(nn);
+    auto direction_key = [&](std::size_t from, std::size_t to, int kind, bool forward) -> double {
+      const Node& n = m_nodes[from];
+      if(n.kind == 0)
+      {
+        // crossing: up (line, forward), next along the isoline, down, previous: 0, 1, 2, 3
+        if(kind == 0)
+          return forward ? 0. : 2.;
+        return forward ? 1. : 3.;
+      }
+      // poles and boundary points: the angle of the chord in the tangent plane; on the boundary
+      // measured from the direction along the loop (interior on the left)
+      Eigen::Vector3d normal, x;
+      if(n.kind == 1 && n.loop == npos)
+      {
+        normal = vertex_normal(n.vertex);
+        x = normal.unitOrthogonal();
+      }
+      else
+      {
+        if(kind == 2)
+          return forward ? 0. : 10.; // next along the loop first, previous last
+        normal = boundary_normal(n);
+        x = boundary_tangent(n);
+      }
+      const Eigen::Vector3d y = normal.cross(x);
+      const Eigen::Vector3d d = m_nodes[to].point - n.point;
+      double a = std::atan2(d.dot(y), d.dot(x));
+      if(n.loop != npos)
+        a = std::clamp(a, 1e-6, 3.14159); // interior directions lie between the two loop directions
+      else if(a < 0.)
+        a += 2. * 3.141592653589793;
+      return a;
+    };
+    for(std::size_t e = 0; e < edges.size(); ++e)
+    {
+      around[edges[e].a].emplace_back(direction_key(edges[e].a, edges[e].b, edges[e].kind, true), 2 * e);
+      around[edges[e].b].emplace_back(direction_key(edges[e].b, edges[e].a, edges[e].kind, false), 2 * e + 1);
+    }
+    // the lines into a pole from one loop come in the order of their sources along that loop
+    // (more reliable than the angles of the chords)
+    auto other_end = [&](std::size_t h) { return h % 2 == 0 ? edges[h / 2].b : edges[h / 2].a; };
+    for(std::size_t n = 0; n < nn; ++n)
+    {
+      auto& r = around[n];
+      const Node& node = m_nodes[n];
+      if(node.kind == 1 && node.loop == npos && !r.empty())
+      {
+        bool one_loop = true;
+        const Node& first = m_nodes[other_end(r[0].second)];
+        for(const auto& [key, h] : r)
+        {
+          const Node& o = m_nodes[other_end(h)];
+          one_loop = one_loop && o.kind == 0 && o.curve == first.curve && m_iso[o.curve].closed;
+        }
+        // a loop runs counter-clockwise around a minimum (lower values on its left), clockwise
+        // around a maximum; halfedge 2e leaves the lower end of a line
+        if(one_loop)
+          for(auto& [key, h] : r)
+            key = (h % 2 == 0 ? 1. : -1.) * m_nodes[other_end(h)].s;
+      }
+    }
+    std::vector<std::size_t> position(2 * edges.size());
+    for(auto& r : around)
+    {
+      std::sort(r.begin(), r.end());
+      for(std::size_t k = 0; k < r.size(); ++k)
+        position[r[k].second] = k;
+    }
+    auto source = [&](std::size_t h) { return h % 2 == 0 ? edges[h / 2].a : edges[h / 2].b; };
+    auto target = [&](std::size_t h) { return h % 2 == 0 ? edges[h / 2].b : edges[h / 2].a; };
+    auto next = [&](std::size_t h) {
+      const std::size_t t = h ^ 1, b = target(h);
+      const auto& r = around[b];
+      return r[(position[t] + r.size() - 1) % r.size()].second;
+    };
+    // renumber the nodes that are used
+    std::vector<std::size_t> new_id(nn, npos);
+    Polygon_soup soup;
+    std::vector<char> visited(2 * edges.size(), 0);
+    for(std::size_t h = 0; h < 2 * edges.size(); ++h)
+    {
+      // the outside of a boundary edge (b -> a for a loop edge a -> b) bounds no face
+      if(edges[h / 2].kind == 2 && h % 2 == 1)
+        visited[h] = 1;
+    }
+    for(std::size_t h0 = 0; h0 < 2 * edges.size(); ++h0)
+    {
+      if(visited[h0])
+        continue;
+      std::vector<std::size_t> face;
+      std::size_t h = h0;
+      bool outside = false;
+      for(std::size_t guard = 0; guard <= 2 * edges.size(); ++guard)
+      {
+        if(visited[h])
+        {
+          outside = outside || h != h0;
+          break;
+        }
+        visited[h] = 1;
+        face.push_back(source(h));
+        h = next(h);
+      }
+      if(outside || face.size() < 3)
+      {
+        ++m_stats.lost_lines;
+        continue;
+      }
+      for(std::size_t& v : face)
+      {
+        if(new_id[v] == npos)
+        {
+          new_id[v] = soup.points.size();
+          soup.points.push_back(m_nodes[v].point);
+          soup.kind.push_back(m_nodes[v].kind);
+          soup.value.push_back(m_nodes[v].curve == npos ? m_u[m_nodes[v].vertex == npos ? 0 : m_nodes[v].vertex]
+                                                        : m_iso[m_nodes[v].curve].value);
+        }
+        v = new_id[v];
+      }
+      soup.faces.push_back(std::move(face));
+    }
+    return soup;
+  }
+
+  Eigen::Vector3d boundary_normal(const Node& n) const
+  {
+    const auto& loop = m_m.boundary_loop[n.loop];
+    const std::size_t a = loop[std::size_t(n.loop_position) % loop.size()];
+    return vertex_normal(a);
+  }
+
+  Eigen::Vector3d boundary_tangent(const Node& n) const
+  {
+    const auto& loop = m_m.boundary_loop[n.loop];
+    const std::size_t k = std::size_t(n.loop_position) % loop.size();
+    const double frac = n.loop_position - std::floor(n.loop_position);
+    const std::size_t a = loop[k], b = loop[(k + 1) % loop.size()];
+    Eigen::Vector3d t = m_m.point[b] - m_m.point[a];
+    if(frac < 1e-12) // at a vertex: the mean of the two boundary edges
+      t = t.normalized() + (m_m.point[a] - m_m.point[loop[(k + loop.size() - 1) % loop.size()]]).normalized();
+    const Eigen::Vector3d nn = boundary_normal(n);
+    return (t - t.dot(nn) * nn).normalized();
+  }
+
+  const Trace_mesh& m_m;
+  const std::vector<double>& m_u;
+  Net_options m_opt;
+  std::vector<double> m_grad_norm;
+  std::vector<std::vector<Face_level>> m_levels_in_face;
+  std::vector<Isoline> m_iso;
+  std::vector<std::vector<Crossing>> m_crossings;
+  std::vector<std::size_t> m_pending_node; // node of every pending code
+  std::vector<std::size_t> m_trace_down;
+  std::vector<char> m_processed;
+  std::vector<Node> m_nodes;
+  std::map<std::size_t, std::size_t> m_pole_node;
+  std::vector<std::pair<std::size_t, std::size_t>> m_line_edges; // (lower node, upper node), pending codes allowed
+  Net_statistics m_stats;
+};
+
+} // namespace harmonic_quad
+} // namespace internal
+} // namespace Surface_design
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_HARMONIC_QUAD_REMESHING_QUAD_NET_H
