@@ -1,0 +1,255 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// quad_remesh: quad-dominant remeshing from the isolines and gradient lines of a harmonic
+// function (Dong, Kircher & Garland 2005; Nagano & Imai). Run without arguments for the usage.
+
+#include "../common/example_support.h"
+
+#include <CGAL/Surface_design/Harmonic_quad_remesher.h>
+#include <CGAL/Surface_design/quad_mesh_quality.h>
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace SD = CGAL::Surface_design;
+namespace P = CGAL::Surface_design::parameters;
+using example::Mesh;
+using example::Point;
+
+namespace {
+
+const char* usage =
+  "usage: quad_remesh INPUT --output OUT.off [options]\n"
+  "  Remeshes a manifold triangle mesh into a quad-dominant polygon mesh: the net of the isolines\n"
+  "  and gradient lines of a harmonic function (Dong, Kircher & Garland 2005).\n"
+  "options:\n"
+  "  --min V               vertex V is a minimum of the function (value 0); repeatable\n"
+  "  --max V               vertex V is a maximum (value 1); repeatable. Without --min/--max:\n"
+  "                        a minimum and a maximum at the ends of a geodesic diameter of every\n"
+  "                        component, and a maximum at every tip of the shape\n"
+  "  --no-protrusions      default constraints without the maxima at the tips\n"
+  "  --edge-length H       target edge length (default: sqrt(area / 3000), about 3000 faces)\n"
+  "  --intrinsic-delaunay  Laplacian of the intrinsic Delaunay triangulation (no spurious extrema)\n"
+  "  --triangle-poles      fans of triangles around the extrema (default: fans of quads)\n"
+  "  --solver ldlt|cholmod sparse solver (default ldlt)\n"
+  "  --output OUT          the quad-dominant mesh (.off, .obj or .ply); required\n"
+  "  --picture OUT.png     the new mesh's edges over the input; faces other than quads in orange\n"
+  "  --up +Y|+Z|...        up direction in the picture (default +Y)\n";
+
+struct Options
+{
+  std::string input, output, picture, up = "+Y", solver = "ldlt";
+  std::vector<long> minima, maxima;
+  double edge_length = 0.;
+  bool protrusions = true, intrinsic_delaunay = false, quad_poles = true;
+};
+
+Options parse(int argc, char** argv)
+{
+  Options o;
+  example::Once once;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    auto next = [&]() { return example::option_value(argc, argv, i); };
+    if(a != "--min" && a != "--max")
+      once.check(a);
+    if(a == "--min")
+      o.minima.push_back(example::parse_integer(next(), a, 0, 1L << 40));
+    else if(a == "--max")
+      o.maxima.push_back(example::parse_integer(next(), a, 0, 1L << 40));
+    else if(a == "--no-protrusions")
+      o.protrusions = false;
+    else if(a == "--edge-length")
+      o.edge_length = example::parse_positive(next(), a);
+    else if(a == "--intrinsic-delaunay")
+      o.intrinsic_delaunay = true;
+    else if(a == "--triangle-poles")
+      o.quad_poles = false;
+    else if(a == "--solver")
+      o.solver = example::parse_choice(next(), a, {"ldlt", "cholmod"});
+    else if(a == "--output")
+      example::check_output_path(o.output = next(), a, {".off", ".obj", ".ply"});
+    else if(a == "--picture")
+      example::check_output_path(o.picture = next(), a, {".png"});
+    else if(a == "--up")
+      o.up = example::parse_choice(next(), a, {"+X", "-X", "+Y", "-Y", "+Z", "-Z"});
+    else if(!a.empty() && a[0] == '-')
+      throw example::Usage_error("unknown option " + a);
+    else if(!o.input.empty())
+      throw example::Usage_error("more than one input file");
+    else
+      o.input = a;
+  }
+  if(o.input.empty())
+    throw example::Usage_error("no input mesh");
+  if(o.output.empty())
+    throw example::Usage_error("--output OUT.off is required");
+  if(o.minima.empty() != o.maxima.empty())
+    throw example::Usage_error("give both --min and --max vertices (constraints on one value only leave the "
+                               "function constant), or neither for the default constraints");
+  if(!o.minima.empty() && !o.protrusions)
+    throw example::Usage_error("--no-protrusions applies to the default constraints, not to --min/--max");
+  if(o.picture.empty() && once.contains("--up"))
+    throw example::Usage_error("--up applies to --picture");
+  example::check_distinct_paths({{"INPUT", o.input}, {"--output", o.output}, {"--picture", o.picture},
+                                 {"the picture's surface file", o.picture.empty() ? "" : o.picture + ".vtk"}});
+  if(!o.picture.empty())
+    example::require_picture_tools();
+  return o;
+}
+
+Eigen::Vector3d eigen(const Point& p) { return Eigen::Vector3d(p.x(), p.y(), p.z()); }
+
+// The input flat-shaded in grey, the new mesh's faces other than quads in orange just above it,
+// and its edges as dark ribbons.
+void write_picture(const Mesh& input, const Mesh& quads, const Options& o, example::Output_files& outputs)
+{
+  example::Vtk_surface vtk;
+  vtk.scalar_name = "shade";
+  auto add = [&](const Eigen::Vector3d& p, const Eigen::Vector3d& n, double s) {
+    vtk.points.push_back({p.x(), p.y(), p.z()});
+    vtk.normals.push_back({n.x(), n.y(), n.z()});
+    vtk.scalars.push_back(s);
+    return vtk.points.size() - 1;
+  };
+  const Eigen::Vector3d light = Eigen::Vector3d(0.3, 0.6, 0.75).normalized();
+  for(auto f : faces(input))
+  {
+    std::vector<Eigen::Vector3d> p;
+    for(auto v : vertices_around_face(halfedge(f, input), input))
+      p.push_back(eigen(input.point(v)));
+    const Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]).normalized();
+    const double shade = 2. + 0.5 * (1. + n.dot(light));
+    vtk.triangles.push_back({add(p[0], n, shade), add(p[1], n, shade), add(p[2], n, shade)});
+  }
+  double mean_edge = 0.;
+  for(auto e : edges(quads))
+    mean_edge += (eigen(quads.point(source(e, quads))) - eigen(quads.point(target(e, quads)))).norm();
+  mean_edge /= double((std::max)(std::size_t(num_edges(quads)), std::size_t(1)));
+  std::vector<Eigen::Vector3d> normal(num_faces(quads));
+  for(auto f : faces(quads))
+  {
+    std::vector<Eigen::Vector3d> p;
+    for(auto v : vertices_around_face(halfedge(f, quads), quads))
+      p.push_back(eigen(quads.point(v)));
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    for(std::size_t k = 1; k + 1 < p.size(); ++k)
+      n += (p[k] - p[0]).cross(p[k + 1] - p[0]);
+    n.normalize();
+    normal[std::size_t(f)] = n;
+    if(p.size() == 4)
+      continue;
+    const Eigen::Vector3d lift = 0.04 * mean_edge * n;
+    const std::size_t first = add(p[0] + lift, n, 1.);
+    for(std::size_t k = 1; k + 1 < p.size(); ++k)
+      vtk.triangles.push_back({first, add(p[k] + lift, n, 1.), add(p[k + 1] + lift, n, 1.)});
+  }
+  const double width = 0.06 * mean_edge;
+  for(auto e : edges(quads))
+  {
+    const auto h = halfedge(e, quads);
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    if(!is_border(h, quads))
+      n += normal[std::size_t(face(h, quads))];
+    if(!is_border(opposite(h, quads), quads))
+      n += normal[std::size_t(face(opposite(h, quads), quads))];
+    n.normalize();
+    const Eigen::Vector3d a = eigen(quads.point(source(h, quads))), b = eigen(quads.point(target(h, quads)));
+    const Eigen::Vector3d side = n.cross(b - a).normalized() * width, lift = n * (0.08 * mean_edge);
+    const std::size_t i0 = add(a - side + lift, n, 0.), i1 = add(b - side + lift, n, 0.),
+                      i2 = add(b + side + lift, n, 0.), i3 = add(a + side + lift, n, 0.);
+    vtk.triangles.push_back({i0, i1, i2});
+    vtk.triangles.push_back({i0, i2, i3});
+  }
+  const std::string vtk_path = outputs.stage(o.picture + ".vtk");
+  vtk.write(vtk_path);
+  // 0 edges dark blue, 1 non-quads orange, 2..3 grey shading
+  const std::string colormap =
+    "0,0.05,0.1,0.35,0.3,0.05,0.1,0.35,0.32,0.95,0.55,0.1,0.62,0.95,0.55,0.1,0.6667,0.55,0.56,0.58,1,0.97,0.97,0.96";
+  example::render_png(vtk_path, outputs.stage(o.picture), "shade", 0., 3., o.up, colormap);
+}
+
+template <class Traits>
+int run(const Options& o, Traits traits)
+{
+  example::Stopwatch clock;
+  const Mesh input = example::read_mesh(o.input);
+  const long chi = long(num_vertices(input)) - long(num_edges(input)) + long(num_faces(input));
+  std::cout << "read " << o.input << ": " << num_vertices(input) << " vertices, " << num_faces(input)
+            << " faces, Euler characteristic " << chi << '\n';
+  const SD::Harmonic_weights weights =
+    o.intrinsic_delaunay ? SD::Harmonic_weights::intrinsic_delaunay : SD::Harmonic_weights::cotangent;
+  SD::Harmonic_quad_remesher<Mesh, Mesh::Property_map<Mesh::Vertex_index, Point>, Traits> remesher(
+    input, P::harmonic_weights(weights, P::protrusion_maxima(o.protrusions, CGAL::parameters::sparse_linear_solver(traits))));
+  if(!o.minima.empty())
+  {
+    std::vector<std::pair<Mesh::Vertex_index, double>> c;
+    for(long v : o.minima)
+      c.emplace_back(Mesh::Vertex_index(Mesh::size_type(v)), 0.);
+    for(long v : o.maxima)
+      c.emplace_back(Mesh::Vertex_index(Mesh::size_type(v)), 1.);
+    for(const auto& [v, value] : c)
+      if(std::size_t(v) >= num_vertices(input))
+        throw example::Usage_error((value == 0. ? "--min " : "--max ") + std::to_string(std::size_t(v)) +
+                                   ": the mesh has " + std::to_string(num_vertices(input)) + " vertices");
+    remesher.set_constraints(c);
+  }
+  const SD::Harmonic_critical_points cp = remesher.critical_points();
+  std::printf("harmonic function: %zu constraints, %s weights (%zu negative, %zu flips); %zu minima, %zu maxima, "
+              "%zu saddles (multiplicity %d): %zu + %zu - %d = %ld = Euler characteristic; %zu spurious extrema\n",
+              remesher.constraints().size(), o.intrinsic_delaunay ? "intrinsic Delaunay" : "cotangent",
+              remesher.number_of_negative_weights(), remesher.number_of_flips(), cp.minima.size(), cp.maxima.size(),
+              cp.saddles.size(), cp.saddle_multiplicity(), cp.minima.size(), cp.maxima.size(), cp.saddle_multiplicity(),
+              cp.index_sum, cp.spurious_extrema);
+
+  Mesh quads;
+  const SD::Harmonic_quad_remeshing_report r =
+    o.edge_length > 0. ? remesher.remesh(quads, P::target_edge_length(o.edge_length, P::quad_poles(o.quad_poles)))
+                       : remesher.remesh(quads, P::quad_poles(o.quad_poles));
+  std::printf("net (h = %.4g): %zu levels, %zu isolines (%zu between saddles), %zu gradient lines (%zu started, %zu "
+              "stopped, %zu met another)\n",
+              r.target_edge_length, r.levels, r.isolines, r.saddle_levels, r.gradient_lines, r.started_lines,
+              r.stopped_lines, r.merged_lines);
+  std::printf("times: harmonic %.3f s, curves %.3f s, meshing %.3f s\n", r.harmonic_seconds, r.curves_seconds,
+              r.meshing_seconds);
+
+  const SD::Quad_mesh_quality q = SD::quad_mesh_quality(quads, input);
+  std::printf("output: %zu vertices, %zu faces: %zu triangles, %zu quads, %zu pentagons, %zu hexagons, %zu larger; "
+              "%.1f%% quads (%.1f%% of the area)\n",
+              q.vertices, q.faces, q.faces_by_sides[0], q.faces_by_sides[1], q.faces_by_sides[2], q.faces_by_sides[3],
+              q.faces_by_sides[4], 100. * q.quad_fraction, 100. * q.quad_area_fraction);
+  std::printf("  %zu irregular vertices, %zu T-junctions; quad corners |angle - 90| mean %.1f rms %.1f max %.1f deg; "
+              "edge length %.4g (variation %.2f)\n",
+              q.irregular_vertices, q.t_junctions, q.angle_deviation_mean, q.angle_deviation_rms,
+              q.angle_deviation_max, q.edge_length_mean, q.edge_length_variation);
+  std::printf("  Hausdorff distance %.3g%% of the bounding-box diagonal; %s, Euler characteristic %ld, %zu boundary "
+              "loops, %zu components (%s the input's)\n",
+              100. * q.relative_hausdorff_distance, q.valid ? "valid" : "INVALID", q.euler_characteristic,
+              q.boundary_loops, q.connected_components, q.same_topology ? "as" : "NOT as");
+
+  example::Output_files outputs;
+  if(!CGAL::IO::write_polygon_mesh(outputs.stage(o.output), quads, CGAL::parameters::stream_precision(17)))
+    throw std::runtime_error("cannot write " + o.output);
+  if(!o.picture.empty())
+    write_picture(input, quads, o, outputs);
+  outputs.commit();
+  std::printf("total %.3f s\n", clock.lap() / 1000.);
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  return example::run_main("quad_remesh", usage, argc, [&] {
+    const Options o = parse(argc, argv);
+    return example::with_solver(o.solver, [&](auto traits) { return run(o, traits); });
+  });
+}

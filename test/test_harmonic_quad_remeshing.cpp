@@ -1,0 +1,509 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Harmonic-function quad-dominant remeshing (Dong, Kircher & Garland 2005):
+// - the harmonic function meets its constraints exactly and its Laplacian vanishes at every other
+//   vertex (<= 1e-10), with either weights and either solver, and both solvers agree;
+// - critical points: a monkey saddle, a maximum, a regular vertex (analytic functions on a fan);
+//   #max + #min - sum of saddle multiplicities = chi on sphere, torus, eight and kitten, and the
+//   index sum equals chi on meshes with boundary;
+// - intrinsic Delaunay weights remove the spurious extrema of the cotangent weights (triceratops);
+// - isolines lie exactly on their level and run along n x grad u; gradient lines land on their
+//   isoline;
+// - a cylinder with its rims as minimum and maximum becomes quads only; eight, kitten, fertility,
+//   a hemisphere and three components with boundaries become valid quad-dominant meshes of the
+//   same topology (>= 85% quads);
+// - one factorization serves new values on the same constrained vertices and every remesh;
+// - bad input throws clear exceptions and leaves the meshes untouched.
+
+#include <test_support.h>
+
+#include <CGAL/Surface_design/Harmonic_quad_remesher.h>
+#include <CGAL/Surface_design/harmonic_quad_remeshing.h>
+#include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/curves.h>
+#include <CGAL/Surface_design/mesh_generators.h>
+#include <CGAL/Surface_design/quad_mesh_quality.h>
+
+#include <CGAL/Surface_mesh.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace SD = CGAL::Surface_design;
+namespace SDI = CGAL::Surface_design::internal;
+namespace H = CGAL::Surface_design::internal::harmonic_quad;
+namespace P = CGAL::Surface_design::parameters;
+
+namespace {
+
+using Quad_mesh = CGAL::Surface_mesh<test::Point>;
+using test::from_soup;
+using test::Soup_points;
+using test::Soup_triangles;
+
+// An open cylinder of radius 1 and height `height`: `n` vertices around, `m` rings of quads split
+// into triangles with alternating diagonals.
+void cylinder_soup(std::size_t n, std::size_t m, double height, Soup_points& points, Soup_triangles& triangles)
+{
+  for(std::size_t j = 0; j <= m; ++j)
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const double theta = 2. * SDI::pi * double(i) / double(n);
+      points.push_back({std::cos(theta), std::sin(theta), height * double(j) / double(m)});
+    }
+  auto id = [&](std::size_t i, std::size_t j) { return j * n + i % n; };
+  for(std::size_t j = 0; j < m; ++j)
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const std::size_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      if((i + j) % 2 == 0)
+      {
+        triangles.push_back({a, b, c});
+        triangles.push_back({a, c, d});
+      }
+      else
+      {
+        triangles.push_back({a, b, d});
+        triangles.push_back({b, c, d});
+      }
+    }
+}
+
+template <class Mesh>
+long euler_characteristic(const Mesh& m)
+{
+  return long(num_vertices(m)) - long(num_edges(m)) + long(num_faces(m));
+}
+
+template <class Mesh, class Traits>
+void check_harmonic(const Mesh& mesh, SD::Harmonic_weights weights, const std::string& label)
+{
+  INFO(label);
+  SD::Harmonic_quad_remesher<Mesh, test::Vpm<Mesh>, Traits> remesher(mesh, P::harmonic_weights(weights));
+  std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, double> values;
+  remesher.harmonic_function(boost::make_assoc_property_map(values));
+  const std::vector<double>& u = remesher.harmonic_function();
+  REQUIRE(values.size() == num_vertices(mesh));
+  REQUIRE(remesher.constraints().size() >= 2);
+  for(const auto& [v, value] : remesher.constraints())
+    CHECK(u[v] == value); // exactly: constrained values are copied, not solved for
+  CHECK(remesher.harmonic_residual() <= 1e-10);
+  // the maximum principle, for weights that are all positive
+  if(remesher.number_of_negative_weights() == 0)
+  {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for(const auto& [v, value] : remesher.constraints())
+    {
+      lo = (std::min)(lo, value);
+      hi = (std::max)(hi, value);
+    }
+    for(double x : u)
+    {
+      CHECK(x >= lo - 1e-12);
+      CHECK(x <= hi + 1e-12);
+    }
+  }
+}
+
+} // namespace
+
+TEMPLATE_TEST_CASE("The harmonic function meets its constraints and is harmonic elsewhere",
+                   "[harmonic_quad][harmonic]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  const Mesh eight = test::load_mesh<Mesh>("eight.off");
+  const Mesh hemisphere = test::load_mesh<Mesh>("hemisphere.off");
+  Mesh torus;
+  SD::make_torus(torus, 40, 16, 1., 0.3);
+  for(auto weights : {SD::Harmonic_weights::cotangent, SD::Harmonic_weights::intrinsic_delaunay})
+  {
+#define SD_CHECK_WITH(Traits, name)                                                                \
+  check_harmonic<Mesh, Traits>(eight, weights, std::string("eight, ") + name);                     \
+  check_harmonic<Mesh, Traits>(hemisphere, weights, std::string("hemisphere, ") + name);           \
+  check_harmonic<Mesh, Traits>(torus, weights, std::string("torus, ") + name);
+    SD_FOR_EACH_SOLVER(SD_CHECK_WITH)
+#undef SD_CHECK_WITH
+  }
+#if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
+  // the two solvers agree
+  SD::Harmonic_quad_remesher<Mesh, test::Vpm<Mesh>, SD::Default_solver_traits> ldlt(eight);
+  SD::Harmonic_quad_remesher<Mesh, test::Vpm<Mesh>, SD::Cholmod_solver_traits> cholmod(eight);
+  const std::vector<double>& a = ldlt.harmonic_function();
+  const std::vector<double>& b = cholmod.harmonic_function();
+  for(std::size_t v = 0; v < a.size(); ++v)
+    CHECK(std::abs(a[v] - b[v]) <= 1e-8);
+#else
+  SD_CHOLMOD_UNAVAILABLE("the LDLT / CHOLMOD cross-check of the harmonic function");
+#endif
+}
+
+TEST_CASE("Critical points of analytic functions on a fan: monkey saddle, maximum, regular",
+          "[harmonic_quad][critical]")
+{
+  // a hexagonal fan around vertex 0, and a second ring so that the ring vertices are interior too
+  Soup_points points = {{0, 0, 0}};
+  for(int ring = 1; ring <= 2; ++ring)
+    for(int k = 0; k < 6; ++k)
+    {
+      const double a = SDI::pi / 3. * (k + (ring == 2 ? 0.5 : 0.));
+      points.push_back({ring * std::cos(a), ring * std::sin(a), 0.});
+    }
+  Soup_triangles triangles;
+  for(std::size_t k = 0; k < 6; ++k)
+  {
+    const std::size_t a = 1 + k, b = 1 + (k + 1) % 6, c = 7 + k;
+    triangles.push_back({0, a, b});
+    triangles.push_back({a, c, b});
+    triangles.push_back({b, c, 7 + (k + 1) % 6});
+  }
+  const test::Surface_mesh mesh = from_soup<test::Surface_mesh>(points, triangles);
+  SDI::Mesh_indices<test::Surface_mesh> idx(mesh);
+  const H::Trace_mesh m = H::make_trace_mesh(idx, get(CGAL::vertex_point, mesh));
+  auto classify = [&](auto f) {
+    std::vector<double> u;
+    for(const auto& p : m.point)
+      u.push_back(f(p.x(), p.y()));
+    const auto [list, sum] = H::critical_points(m, u);
+    CHECK(sum == 1); // a disk
+    for(const auto& c : list)
+      if(c.vertex == 0)
+        return std::make_pair(c.kind, c.multiplicity);
+    return std::make_pair(H::Critical_kind::regular, 0);
+  };
+  // Re (x + iy)^3: three lower and three upper wedges around the origin
+  const auto monkey = classify([](double x, double y) { return x * x * x - 3. * x * y * y; });
+  CHECK(monkey.first == H::Critical_kind::saddle);
+  CHECK(monkey.second == 2);
+  const auto saddle = classify([](double x, double y) { return x * x - y * y + 0.1 * x * y; });
+  CHECK(saddle.first == H::Critical_kind::saddle);
+  CHECK(saddle.second == 1);
+  CHECK(classify([](double x, double y) { return -(x * x + y * y); }).first == H::Critical_kind::maximum);
+  CHECK(classify([](double x, double y) { return 2. * x + y; }).first == H::Critical_kind::regular);
+  // ties are broken by index: a constant function has one minimum (vertex 0, the smallest index)
+  CHECK(classify([](double, double) { return 1.; }).first == H::Critical_kind::minimum);
+}
+
+TEMPLATE_TEST_CASE("#max + #min - sum of saddle multiplicities is the Euler characteristic",
+                   "[harmonic_quad][critical]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  Mesh sphere, torus;
+  SD::make_sphere(sphere, 8);
+  SD::make_torus(torus, 40, 16, 1., 0.3);
+  const std::vector<std::pair<std::string, Mesh>> closed = {
+    {"sphere", sphere}, {"torus", torus}, {"eight", test::load_mesh<Mesh>("eight.off")},
+    {"kitten", test::load_mesh<Mesh>("kitten.off")}};
+  for(const auto& [name, mesh] : closed)
+  {
+    INFO(name);
+    SD::Harmonic_quad_remesher<Mesh> remesher(mesh);
+    const SD::Harmonic_critical_points cp = remesher.critical_points();
+    CHECK(cp.euler_characteristic == euler_characteristic(mesh));
+    CHECK(long(cp.maxima.size() + cp.minima.size()) - cp.saddle_multiplicity() == cp.euler_characteristic);
+    CHECK(cp.index_sum == cp.euler_characteristic);
+  }
+  // eight (genus 2) with one minimum and one maximum: four saddles; kitten (genus 1): two
+  {
+    SD::Harmonic_quad_remesher<Mesh> remesher(test::load_mesh<Mesh>("eight.off"), P::protrusion_maxima(false));
+    const SD::Harmonic_critical_points cp = remesher.critical_points();
+    CHECK(cp.minima.size() == 1);
+    CHECK(cp.maxima.size() == 1);
+    CHECK(cp.saddle_multiplicity() == 4);
+  }
+  // with boundary: the index sum (1 - chi of the lower link, over every vertex) is still chi
+  for(const std::string name : {"hemisphere.off", "camelhead.off", "blobby_3cc.off"})
+  {
+    INFO(name);
+    const Mesh mesh = test::load_mesh<Mesh>(name);
+    SD::Harmonic_quad_remesher<Mesh> remesher(mesh);
+    CHECK(remesher.critical_points().index_sum == euler_characteristic(mesh));
+  }
+}
+
+TEMPLATE_TEST_CASE("Intrinsic Delaunay weights remove the spurious extrema of cotangent weights",
+                   "[harmonic_quad][harmonic]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  // triceratops: slivers down to 0.0002 degrees, many negative cotangent weights
+  const Mesh mesh = test::load_mesh<Mesh>("triceratops.off");
+  SD::Harmonic_quad_remesher<Mesh> cotangent(mesh);
+  SD::Harmonic_quad_remesher<Mesh> delaunay(mesh, P::harmonic_weights(SD::Harmonic_weights::intrinsic_delaunay));
+  CHECK(cotangent.constraints() == delaunay.constraints());
+  CHECK(cotangent.number_of_negative_weights() > 1000);
+  CHECK(delaunay.number_of_flips() > 1000);
+  CHECK(delaunay.number_of_negative_weights() < cotangent.number_of_negative_weights() / 20);
+  CHECK(cotangent.critical_points().spurious_extrema > 0);
+  const SD::Harmonic_critical_points cp = delaunay.critical_points();
+  CHECK(cp.spurious_extrema == 0);
+  CHECK(cp.minima.size() + cp.maxima.size() == delaunay.constraints().size());
+}
+
+TEST_CASE("Isolines lie on their level along n x grad u; gradient lines land on their isoline",
+          "[harmonic_quad][curves]")
+{
+  const test::Surface_mesh mesh = test::load_mesh<test::Surface_mesh>("kitten.off");
+  SD::Harmonic_quad_remesher<test::Surface_mesh> remesher(mesh);
+  const std::vector<double> u = remesher.harmonic_function();
+  SDI::Mesh_indices<test::Surface_mesh> idx(mesh);
+  const H::Trace_mesh m = H::make_trace_mesh(idx, get(CGAL::vertex_point, mesh));
+  std::vector<double> sorted(u);
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<std::vector<H::Face_level>> levels(m.number_of_faces());
+  std::vector<H::Isoline> all;
+  std::size_t checked_points = 0;
+  for(double c : {0.1, 0.3, 0.5, 0.7, 0.9})
+  {
+    c = H::avoid_vertex_values(c, sorted, 1e-9);
+    for(H::Isoline& iso : H::extract_isolines(m, u, c))
+    {
+      CHECK(iso.closed); // a closed mesh
+      for(std::size_t k = 0; k < iso.segments(); ++k)
+      {
+        const std::size_t f = iso.faces[k];
+        const auto& t = m.tri[f];
+        // the point lies on its level: u interpolated linearly in the face
+        const Eigen::Vector3d g = m.gradient(f, u);
+        const double value = u[t[0]] + g.dot(iso.point[k] - m.point[t[0]]);
+        CHECK(std::abs(value - c) <= 1e-9);
+        // and the segment runs along n x grad u
+        CHECK((iso.segment_end(k) - iso.point[k]).dot(m.normal[f].cross(g)) > 0.);
+        ++checked_points;
+      }
+      const std::size_t id = all.size();
+      for(std::size_t k = 0; k < iso.segments(); ++k)
+        levels[iso.faces[k]].push_back({c, id, k});
+      all.push_back(std::move(iso));
+    }
+  }
+  CHECK(checked_points > 500);
+  // ascending lines from the 0.3 isoline end on the 0.5 one (or at an extremum)
+  H::Gradient_walker walker(m, u, levels);
+  std::size_t landed = 0;
+  for(const H::Isoline& iso : all)
+  {
+    if(std::abs(iso.value - 0.3) > 1e-6)
+      continue;
+    for(std::size_t k = 0; k < iso.segments(); k += 7)
+    {
+      const H::Trace_end e = walker.from_face(iso.faces[k], iso.point[k], iso.value, +1);
+      REQUIRE(e.kind != H::Trace_end::lost);
+      if(e.kind != H::Trace_end::isoline)
+        continue;
+      const H::Isoline& target = all[e.curve];
+      CHECK(std::abs(target.value - 0.5) <= 1e-6);
+      const std::size_t f = target.faces[e.segment];
+      const double value = u[m.tri[f][0]] + m.gradient(f, u).dot(e.point - m.point[m.tri[f][0]]);
+      CHECK(std::abs(value - target.value) <= 1e-9);
+      ++landed;
+    }
+  }
+  CHECK(landed > 20);
+}
+
+TEMPLATE_TEST_CASE("A cylinder with its rims as minimum and maximum becomes quads only",
+                   "[harmonic_quad][remesh]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  Soup_points points;
+  Soup_triangles triangles;
+  cylinder_soup(48, 40, 4., points, triangles);
+  const Mesh mesh = from_soup<Mesh>(points, triangles);
+  std::vector<std::pair<typename boost::graph_traits<Mesh>::vertex_descriptor, double>> rims;
+  for(auto v : vertices(mesh))
+  {
+    const double z = get(CGAL::vertex_point, mesh, v).z();
+    if(z < 1e-9 || z > 4. - 1e-9)
+      rims.emplace_back(v, z < 1e-9 ? 0. : 1.);
+  }
+  REQUIRE(rims.size() == 96);
+  Quad_mesh out;
+  const SD::Harmonic_quad_remeshing_report r =
+    SD::harmonic_quad_remeshing(mesh, out, P::harmonic_constraints(rims, P::target_edge_length(0.25)));
+  const SD::Quad_mesh_quality q = SD::quad_mesh_quality(out, mesh);
+  INFO("faces " << q.faces << " quads " << q.faces_by_sides[1] << "; lines " << r.gradient_lines << " started "
+                  << r.started_lines << " stopped " << r.stopped_lines << " merged " << r.merged_lines << " levels "
+                  << r.levels << " isolines " << r.isolines);
+  CHECK(q.valid);
+  CHECK(q.same_topology);
+  CHECK(q.boundary_loops == 2);
+  CHECK(q.faces_by_sides[1] == q.faces); // every face a quad
+  CHECK(q.irregular_vertices == 0);
+  CHECK(q.t_junctions == 0);
+  CHECK(r.stopped_lines == 0);
+  // about 2 pi / 0.25 lines around and 4 / 0.25 bands
+  CHECK(q.faces >= 20 * 12);
+  CHECK(q.faces <= 30 * 20);
+  CHECK(q.angle_deviation_max <= 5.);
+  CHECK(q.relative_hausdorff_distance <= 0.01);
+}
+
+TEMPLATE_TEST_CASE("Remeshing keeps the topology and makes mostly quads", "[harmonic_quad][remesh]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  struct Case
+  {
+    const char* name;
+    double max_hausdorff; // relative to the bounding-box diagonal
+  };
+  // measured here: eight 0.8%, kitten 1.1%, hemisphere 0.1%, fertility 2.4%, blobby_3cc 1.7%
+  for(const Case c : {Case{"eight.off", 0.015}, Case{"kitten.off", 0.015}, Case{"hemisphere.off", 0.015},
+                      Case{"fertility.off", 0.03}, Case{"blobby_3cc.off", 0.025}})
+  {
+    INFO(c.name);
+    const Mesh mesh = test::load_mesh<Mesh>(c.name);
+    const test::Mesh_snapshot before(mesh);
+    Quad_mesh out;
+    const SD::Harmonic_quad_remeshing_report r = SD::harmonic_quad_remeshing(mesh, out);
+    CHECK(test::Mesh_snapshot(mesh) == before);
+    const SD::Quad_mesh_quality q = SD::quad_mesh_quality(out, mesh);
+    INFO("faces " << q.faces << ", quads " << q.quad_fraction << ", Hausdorff " << q.relative_hausdorff_distance);
+    CHECK(q.valid);
+    CHECK(q.same_topology);
+    CHECK(CGAL::is_closed(out) == CGAL::is_closed(mesh));
+    CHECK(q.quad_fraction >= 0.85);
+    CHECK(q.faces >= 2000);
+    CHECK(q.faces <= 4500);
+    CHECK(q.relative_hausdorff_distance <= c.max_hausdorff);
+    CHECK(q.angle_deviation_mean <= 6.);
+    CHECK(r.faces == q.faces);
+  }
+}
+
+TEMPLATE_TEST_CASE("One factorization serves new values and every remesh", "[harmonic_quad][factor_once]",
+                   SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  const Mesh mesh = test::load_mesh<Mesh>("eight.off");
+  test::Counting_solver_traits traits;
+  SD::Harmonic_quad_remesher<Mesh, test::Vpm<Mesh>, test::Counting_solver_traits> remesher(
+    mesh, CGAL::parameters::sparse_linear_solver(traits).vertex_point_map(get(CGAL::vertex_point, mesh)));
+  Quad_mesh a, b;
+  remesher.critical_points();
+  const double h = remesher.remesh(a).target_edge_length;
+  remesher.remesh(b, P::target_edge_length(0.7 * h));
+  CHECK(traits.counts().factorizations == 1);
+  CHECK(num_faces(b) > num_faces(a));
+  // new values on the same vertices: a solve, no factorization
+  std::vector<std::pair<typename boost::graph_traits<Mesh>::vertex_descriptor, double>> c;
+  SDI::Mesh_indices<Mesh> idx(mesh);
+  for(const auto& [v, value] : remesher.constraints())
+    c.emplace_back(idx.vertex(v), 2. * value - 1.);
+  remesher.set_constraints(c);
+  const std::vector<double>& u = remesher.harmonic_function();
+  CHECK(traits.counts().factorizations == 1);
+  CHECK(traits.counts().solves == 2);
+  for(const auto& [v, value] : remesher.constraints())
+    CHECK(u[v] == value);
+  // another vertex set: a new factorization
+  c.pop_back();
+  c.emplace_back(idx.vertex(0), 0.5);
+  remesher.set_constraints(c);
+  remesher.harmonic_function();
+  CHECK(traits.counts().factorizations == 2);
+}
+
+TEMPLATE_TEST_CASE("Bad input to harmonic remeshing throws clear exceptions and changes nothing",
+                   "[harmonic_quad][validation]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  using V = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  auto expect_defect = [](auto&& call, SD::Mesh_defect defect) {
+    try
+    {
+      call();
+      FAIL("no exception");
+    }
+    catch(const SD::Invalid_mesh& e)
+    {
+      INFO(e.what());
+      CHECK(e.defect() == defect);
+    }
+  };
+  Quad_mesh out;
+  {
+    // two quads: not a triangle mesh
+    Mesh quads;
+    std::vector<test::Point> pts = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}};
+    std::vector<V> v;
+    for(const auto& p : pts)
+      v.push_back(add_vertex(p, quads));
+    CGAL::Euler::add_face(std::vector<V>{v[0], v[1], v[4], v[3]}, quads);
+    CGAL::Euler::add_face(std::vector<V>{v[1], v[2], v[5], v[4]}, quads);
+    expect_defect([&] { SD::harmonic_quad_remeshing(quads, out); }, SD::Mesh_defect::not_triangle);
+  }
+  {
+    // two fans pinched at vertex 0
+    Mesh pinched;
+    std::vector<test::Point> pts = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-1, 0, 0}, {-1, -1, 0}, {0, -1, 0}};
+    std::vector<V> v;
+    for(const auto& p : pts)
+      v.push_back(add_vertex(p, pinched));
+    for(const auto& f : std::vector<std::array<int, 3>>{{0, 1, 2}, {0, 2, 3}, {0, 4, 5}, {0, 5, 6}})
+      CGAL::Euler::add_face(std::vector<V>{v[f[0]], v[f[1]], v[f[2]]}, pinched);
+    expect_defect([&] { SD::harmonic_quad_remeshing(pinched, out); }, SD::Mesh_defect::non_manifold_vertex);
+  }
+  expect_defect([&] { SD::harmonic_quad_remeshing(test::load_mesh<Mesh>("degtri_four.off"), out); },
+                SD::Mesh_defect::degenerate_face);
+  expect_defect([&] { SD::harmonic_quad_remeshing(Mesh(), out); }, SD::Mesh_defect::empty);
+  Mesh nan_mesh = test::load_mesh<Mesh>("eight.off");
+  put(CGAL::vertex_point, nan_mesh, *vertices(nan_mesh).begin(),
+      test::Point(std::numeric_limits<double>::quiet_NaN(), 0., 0.));
+  expect_defect([&] { SD::harmonic_quad_remeshing(nan_mesh, out); }, SD::Mesh_defect::non_finite_coordinates);
+
+  const Mesh eight = test::load_mesh<Mesh>("eight.off");
+  const test::Mesh_snapshot before(eight);
+  const std::vector<V> vs(vertices(eight).begin(), vertices(eight).end());
+  auto expect_constraints = [&](const std::vector<std::pair<V, double>>& c, const char* words) {
+    try
+    {
+      SD::harmonic_quad_remeshing(eight, out, P::harmonic_constraints(c));
+      FAIL("no exception");
+    }
+    catch(const SD::Invalid_constraints& e)
+    {
+      INFO(e.what());
+      CHECK(std::string(e.what()).find(words) != std::string::npos);
+    }
+  };
+  expect_constraints({{vs[0], 1.}, {vs[5], 1.}}, "one value only");
+  expect_constraints({}, "no constraint");
+  expect_constraints({{vs[0], 0.}, {vs[5], std::numeric_limits<double>::infinity()}}, "inf");
+  expect_constraints({{vs[0], 0.}, {vs[0], 1.}}, "twice");
+  auto expect_parameter = [&](double h) {
+    try
+    {
+      SD::harmonic_quad_remeshing(eight, out, P::target_edge_length(h));
+      FAIL("no exception");
+    }
+    catch(const SD::Invalid_parameter& e)
+    {
+      INFO(e.what());
+      CHECK(e.name() == "target_edge_length");
+    }
+  };
+  expect_parameter(0.);
+  expect_parameter(-1.);
+  expect_parameter(std::numeric_limits<double>::quiet_NaN());
+  expect_parameter(1e-6); // 1e12 faces
+  CHECK(test::Mesh_snapshot(eight) == before);
+  CHECK(num_vertices(out) == 0); // nothing was added to the output
+  {
+    // a vertex of another mesh
+    Quad_mesh other;
+    const Mesh other_mesh = test::load_mesh<Mesh>("torus.off");
+    SD::Harmonic_quad_remesher<Mesh> remesher(eight);
+    std::vector<std::pair<V, double>> foreign = {{*vertices(other_mesh).begin(), 0.}, {vs[3], 1.}};
+    if constexpr(std::is_same<Mesh, test::Surface_mesh>::value)
+    {
+      // Surface_mesh indices of one mesh are valid indices of another: only out-of-range ones fail
+      foreign[0].first = V(typename Mesh::size_type(num_vertices(eight) + 5));
+    }
+    CHECK_THROWS_AS(remesher.set_constraints(foreign), SD::Invalid_constraints);
+    CHECK(remesher.constraints().size() >= 2); // the previous constraints stay
+  }
+}
