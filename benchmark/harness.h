@@ -76,6 +76,10 @@ public:
     add_time(name, std::chrono::duration<double, std::milli>(stop - start).count());
   }
 
+  /// Records phase `name` with a time measured elsewhere (say, by the library's own report), in
+  /// milliseconds; counted in `total` like a timed phase.
+  void record(const std::string& name, double ms) { add_time(name, ms); }
+
   /// Records phase `name` as the sum of phases already timed in this run (say, "full" = factor +
   /// field + solve): a number to report, not a measurement; it does not count in `total`.
   /// \throws std::logic_error if one of `parts` has not run yet

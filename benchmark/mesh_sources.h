@@ -112,6 +112,11 @@ inline const std::vector<Preset>& presets()
      "~1M faces, and a developable design",
      {"octahedron:8", "octahedron:50", "octahedron:100", "octahedron:144", "bundled:pebble_design.off"},
      {"flatten"}},
+    {"harmonic_quad", "harmonic quad remeshing: the seed's eight and kitten (Table 2), genus 0 to 4 with and without "
+     "boundary, and input sizes up to 240k faces",
+     {"bundled:eight.off", "bundled:kitten.off", "bundled:fertility.off", "bundled:hemisphere.off",
+      "bundled:camelhead.off", "bundled:blobby_3cc.off", "shared:bunny_60k.off", "shared:bunny_loop1_239k.off"},
+     {"quad_remesh", "quad_remesh_delaunay"}},
     {"embedding_sizes", "barycentric embedding scaling: octahedra of ~62k, 241k and 1M vertices",
      {"octahedron:50", "octahedron:100", "octahedron:204"},
      {"embedding", "deformation"}},

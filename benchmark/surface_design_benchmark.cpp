@@ -14,6 +14,7 @@
 #include "workload_embedding.h"
 #include "workload_developability.h"
 #include "workload_flattening.h"
+#include "workload_harmonic_quad.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -72,6 +73,11 @@ const std::vector<Workload>& workloads()
      "developable cut (epsilon 1e-3) + Boundary First Flattening (u_B = 0); phases cut, factor, flatten, "
      "full = factor + flatten",
      &flatten_workload},
+    {"quad_remesh",
+     "harmonic-function quad-dominant remeshing, default constraints, ~3000 faces (as the CLI); phases harmonic, "
+     "curves, meshing, full (Nagano & Imai's Table 2); checks: quality of the output",
+     &harmonic_quad_workload},
+    {"quad_remesh_delaunay", "the same on the intrinsic Delaunay Laplacian", &harmonic_quad_delaunay_workload},
     {"developable_flow_intrinsic",
      "make_piecewise_developable, intrinsic energy, 2 subdivisions; phases flow, metrics",
      &developable_flow_workload<CGAL::Surface_design::Developability_energy::intrinsic>, Solver_use::none, nullptr, true},

@@ -54,7 +54,6 @@ enum harmonic_weights_t { harmonic_weights };
 enum protrusion_maxima_t { protrusion_maxima };
 enum target_edge_length_t { target_edge_length };
 enum quad_poles_t { quad_poles };
-enum use_spectacles_t { use_spectacles };
 enum hausdorff_error_bound_t { hausdorff_error_bound };
 } // namespace internal_np
 
@@ -123,7 +122,6 @@ CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(harmonic_weights)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(protrusion_maxima)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(target_edge_length)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(quad_poles)
-CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(use_spectacles)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(hausdorff_error_bound)
 
 #undef CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER

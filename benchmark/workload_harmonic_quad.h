@@ -1,0 +1,74 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Workloads of the harmonic-function quad-dominant remeshing, as the CLI `quad_remesh` runs it
+// (default constraints, about 3000 faces). Phases as in Nagano & Imai's Table 2: harmonic
+// (validation, Laplacian, factorization, solve), curves (isolines and gradient lines), meshing
+// (the faces of the net and the output mesh); full = harmonic + curves + meshing. Checks (untimed):
+// the quality of the output against the input.
+
+#ifndef CGAL_SURFACE_DESIGN_BENCHMARK_WORKLOAD_HARMONIC_QUAD_H
+#define CGAL_SURFACE_DESIGN_BENCHMARK_WORKLOAD_HARMONIC_QUAD_H
+
+#include "harness.h"
+
+#include <CGAL/Surface_design/Harmonic_quad_remesher.h>
+#include <CGAL/Surface_design/quad_mesh_quality.h>
+
+#include <optional>
+#include <string>
+
+namespace benchmark {
+
+template <class SolverTraits>
+void run_harmonic_quad(const Mesh& mesh, Run& run, CGAL::Surface_design::Harmonic_weights weights)
+{
+  namespace SD = CGAL::Surface_design;
+  SolverTraits traits;
+  std::optional<SD::Harmonic_quad_remesher<Mesh, Mesh::Property_map<Mesh::Vertex_index, Mesh::Point>, SolverTraits>>
+    remesher;
+  run.phase("harmonic", [&] {
+    remesher.emplace(mesh, SD::parameters::harmonic_weights(weights, CGAL::parameters::sparse_linear_solver(traits)));
+    remesher->harmonic_function();
+  });
+  Mesh out;
+  const SD::Harmonic_quad_remeshing_report r = remesher->remesh(out);
+  run.record("curves", 1e3 * r.curves_seconds);
+  run.record("meshing", 1e3 * r.meshing_seconds);
+  run.sum_phase("full", {"harmonic", "curves", "meshing"});
+  if(run.checks_enabled())
+  {
+    const SD::Quad_mesh_quality q = SD::quad_mesh_quality(out, mesh);
+    run.check("faces (thousands)", double(q.faces) / 1e3, 10.);
+    run.check("non-quad fraction", 1. - q.quad_fraction, 0.15);
+    run.check("non-quad area fraction", 1. - q.quad_area_fraction, 0.25);
+    run.check("irregular vertices per face", double(q.irregular_vertices) / double(q.faces), 0.2);
+    run.check("T-junctions per face", double(q.t_junctions) / double(q.faces), 0.2);
+    run.check("quad corner |angle - 90| mean (deg)", q.angle_deviation_mean, 10.);
+    run.check("quad corner |angle - 90| rms (deg)", q.angle_deviation_rms, 15.);
+    run.check("edge length variation", q.edge_length_variation, 0.5);
+    run.check("Hausdorff / diagonal", q.relative_hausdorff_distance, 0.015);
+    run.check("invalid or other topology", q.valid && q.same_topology ? 0. : 1., 0.5);
+    const SD::Harmonic_critical_points cp = remesher->critical_points();
+    run.check("saddles (multiplicity)", double(cp.saddle_multiplicity()), 1e9);
+    run.check("spurious extrema", double(cp.spurious_extrema), 0.5);
+  }
+}
+
+inline void harmonic_quad_workload(const Mesh& mesh, const std::string& solver, Run& run)
+{
+  with_solver_traits(solver, [&](auto tag) {
+    run_harmonic_quad<typename decltype(tag)::type>(mesh, run, CGAL::Surface_design::Harmonic_weights::cotangent);
+  });
+}
+
+inline void harmonic_quad_delaunay_workload(const Mesh& mesh, const std::string& solver, Run& run)
+{
+  with_solver_traits(solver, [&](auto tag) {
+    run_harmonic_quad<typename decltype(tag)::type>(mesh, run, CGAL::Surface_design::Harmonic_weights::intrinsic_delaunay);
+  });
+}
+
+} // namespace benchmark
+
+#endif // CGAL_SURFACE_DESIGN_BENCHMARK_WORKLOAD_HARMONIC_QUAD_H
