@@ -130,12 +130,6 @@ void write_picture(const Mesh& mesh, const std::vector<double>& lambda, const Op
 {
   example::Vtk_surface vtk;
   vtk.scalar_name = "shade";
-  auto add = [&](const Eigen::Vector3d& p, const Eigen::Vector3d& n, double s) {
-    vtk.points.push_back({p.x(), p.y(), p.z()});
-    vtk.normals.push_back({n.x(), n.y(), n.z()});
-    vtk.scalars.push_back(s);
-    return vtk.points.size() - 1;
-  };
   const Eigen::Vector3d light = Eigen::Vector3d(0.3, 0.6, 0.75).normalized();
   std::map<Mesh::Face_index, Eigen::Vector3d> normal;
   double mean_edge = 0.;
@@ -151,7 +145,7 @@ void write_picture(const Mesh& mesh, const std::vector<double>& lambda, const Op
     const Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]).normalized();
     normal[f] = n;
     const double shade = 0.5 + 0.5 * n.dot(light);
-    vtk.triangles.push_back({add(p[0], n, shade), add(p[1], n, shade), add(p[2], n, shade)});
+    vtk.triangles.push_back({vtk.add(p[0], n, shade), vtk.add(p[1], n, shade), vtk.add(p[2], n, shade)});
   }
   const double width = 0.06 * mean_edge;
   for(auto e : edges(mesh))
@@ -167,8 +161,8 @@ void write_picture(const Mesh& mesh, const std::vector<double>& lambda, const Op
     const Eigen::Vector3d n = (n1 + n2).normalized(), side = n.cross(b - a).normalized() * width;
     const double s = 1. + (std::min)(1., dihedral / (15. * CGAL_PI / 180.)); // 15 degrees: darkest
     const Eigen::Vector3d lift = n * (0.02 * mean_edge);
-    const std::size_t i0 = add(a - side + lift, n, s), i1 = add(b - side + lift, n, s), i2 = add(b + side + lift, n, s),
-                      i3 = add(a + side + lift, n, s);
+    const std::size_t i0 = vtk.add(a - side + lift, n, s), i1 = vtk.add(b - side + lift, n, s), i2 = vtk.add(b + side + lift, n, s),
+                      i3 = vtk.add(a + side + lift, n, s);
     vtk.triangles.push_back({i0, i1, i2});
     vtk.triangles.push_back({i0, i2, i3});
   }
@@ -183,7 +177,7 @@ void write_picture(const Mesh& mesh, const std::vector<double>& lambda, const Op
     n.normalize();
     const Eigen::Vector3d c = eigen(mesh.point(v)) + n * (0.05 * mean_edge);
     const Eigen::Vector3d u = n.unitOrthogonal() * (0.35 * mean_edge), w = n.cross(u);
-    vtk.triangles.push_back({add(c + u, n, 3.), add(c - 0.5 * u + 0.87 * w, n, 3.), add(c - 0.5 * u - 0.87 * w, n, 3.)});
+    vtk.triangles.push_back({vtk.add(c + u, n, 3.), vtk.add(c - 0.5 * u + 0.87 * w, n, 3.), vtk.add(c - 0.5 * u - 0.87 * w, n, 3.)});
   }
   const std::string vtk_path = outputs.stage(o.picture + ".vtk");
   vtk.write(vtk_path);

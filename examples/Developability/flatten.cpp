@@ -166,12 +166,6 @@ void write_picture(const Mesh& input, const std::vector<bool>& cut_edge, const M
 {
   example::Vtk_surface vtk;
   vtk.scalar_name = "shade";
-  auto add = [&](const Eigen::Vector3d& p, const Eigen::Vector3d& n, double s) {
-    vtk.points.push_back({p.x(), p.y(), p.z()});
-    vtk.normals.push_back({n.x(), n.y(), n.z()});
-    vtk.scalars.push_back(s);
-    return vtk.points.size() - 1;
-  };
   // the design, turned so that `up` is +Y and the view is along -Z
   Eigen::Matrix3d turn = Eigen::Matrix3d::Identity();
   const int axis = o.up[1] - 'X';
@@ -206,7 +200,7 @@ void write_picture(const Mesh& input, const std::vector<bool>& cut_edge, const M
     const Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]).normalized();
     normal[std::size_t(f)] = n;
     const double shade = 2. + 0.5 * (1. + n.dot(light));
-    vtk.triangles.push_back({add(p[0], n, shade), add(p[1], n, shade), add(p[2], n, shade)});
+    vtk.triangles.push_back({vtk.add(p[0], n, shade), vtk.add(p[1], n, shade), vtk.add(p[2], n, shade)});
   }
   const double width = 0.12 * mean_edge;
   for(auto e : edges(input))
@@ -218,8 +212,8 @@ void write_picture(const Mesh& input, const std::vector<bool>& cut_edge, const M
     n.normalize();
     const Eigen::Vector3d a = x[std::size_t(source(h, input))], b = x[std::size_t(target(h, input))];
     const Eigen::Vector3d side = n.cross(b - a).normalized() * width, lift = n * (0.03 * mean_edge);
-    const std::size_t i0 = add(a - side + lift, n, 1.5), i1 = add(b - side + lift, n, 1.5),
-                      i2 = add(b + side + lift, n, 1.5), i3 = add(a + side + lift, n, 1.5);
+    const std::size_t i0 = vtk.add(a - side + lift, n, 1.5), i1 = vtk.add(b - side + lift, n, 1.5),
+                      i2 = vtk.add(b + side + lift, n, 1.5), i3 = vtk.add(a + side + lift, n, 1.5);
     vtk.triangles.push_back({i0, i1, i2});
     vtk.triangles.push_back({i0, i2, i3});
   }
@@ -239,7 +233,7 @@ void write_picture(const Mesh& input, const std::vector<bool>& cut_edge, const M
     std::array<std::size_t, 3> t;
     std::size_t i = 0;
     for(auto v : vertices_around_face(halfedge(f, pieces), pieces))
-      t[i++] = add(offset + k * Eigen::Vector3d(uv[v].x() - plo.x(), uv[v].y() - plo.y(), 0.), up, value);
+      t[i++] = vtk.add(offset + k * Eigen::Vector3d(uv[v].x() - plo.x(), uv[v].y() - plo.y(), 0.), up, value);
     vtk.triangles.push_back(t);
   }
   const std::string vtk_path = outputs.stage(o.picture + ".vtk");

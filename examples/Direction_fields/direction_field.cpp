@@ -149,12 +149,6 @@ void write_picture(const Mesh& mesh, const std::vector<Vector>& field, const std
   }
   example::Vtk_surface vtk;
   vtk.scalar_name = "field";
-  auto add_point = [&](const Eigen::Vector3d& p, const Eigen::Vector3d& nn, double s) {
-    vtk.points.push_back({p.x(), p.y(), p.z()});
-    vtk.normals.push_back({nn.x(), nn.y(), nn.z()});
-    vtk.scalars.push_back(s);
-    return vtk.points.size() - 1;
-  };
   double mean_area = 0.;
   for(double a : area)
     mean_area += a / double(area.size());
@@ -173,7 +167,7 @@ void write_picture(const Mesh& mesh, const std::vector<Vector>& field, const std
     {
       const Eigen::Vector3d p(mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z());
       centre += p / 3.;
-      t[std::size_t(k++)] = add_point(p, normal[std::size_t(v)], s);
+      t[std::size_t(k++)] = vtk.add(p, normal[std::size_t(v)], s);
       const Vector& x = field[std::size_t(v)];
       dirs.emplace_back(x.x(), x.y(), x.z());
     }
@@ -208,14 +202,14 @@ void write_picture(const Mesh& mesh, const std::vector<Vector>& field, const std
       const Eigen::Vector3d side = nf.cross(a) * (length / 10.);
       // n = 1: an arrow (a slim triangle pointing along d); otherwise a diamond (no orientation)
       const Eigen::Vector3d tail = c - 0.5 * length * a, tip = c + 0.5 * length * a;
-      const std::size_t i2 = add_point(tip, nf, 1.);
+      const std::size_t i2 = vtk.add(tip, nf, 1.);
       if(n == 1)
-        vtk.triangles.push_back({add_point(tail - side, nf, 1.), add_point(tail + side, nf, 1.), i2});
+        vtk.triangles.push_back({vtk.add(tail - side, nf, 1.), vtk.add(tail + side, nf, 1.), i2});
       else
       {
-        const std::size_t i0 = add_point(tail, nf, 1.);
-        vtk.triangles.push_back({i0, add_point(c + side, nf, 1.), i2});
-        vtk.triangles.push_back({i0, i2, add_point(c - side, nf, 1.)});
+        const std::size_t i0 = vtk.add(tail, nf, 1.);
+        vtk.triangles.push_back({i0, vtk.add(c + side, nf, 1.), i2});
+        vtk.triangles.push_back({i0, i2, vtk.add(c - side, nf, 1.)});
       }
     }
   }

@@ -113,12 +113,6 @@ void write_picture(const Mesh& input, const Mesh& quads, const Options& o, examp
 {
   example::Vtk_surface vtk;
   vtk.scalar_name = "shade";
-  auto add = [&](const Eigen::Vector3d& p, const Eigen::Vector3d& n, double s) {
-    vtk.points.push_back({p.x(), p.y(), p.z()});
-    vtk.normals.push_back({n.x(), n.y(), n.z()});
-    vtk.scalars.push_back(s);
-    return vtk.points.size() - 1;
-  };
   const Eigen::Vector3d light = Eigen::Vector3d(0.3, 0.6, 0.75).normalized();
   for(auto f : faces(input))
   {
@@ -127,7 +121,7 @@ void write_picture(const Mesh& input, const Mesh& quads, const Options& o, examp
       p.push_back(eigen(input.point(v)));
     const Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]).normalized();
     const double shade = 2. + 0.5 * (1. + n.dot(light));
-    vtk.triangles.push_back({add(p[0], n, shade), add(p[1], n, shade), add(p[2], n, shade)});
+    vtk.triangles.push_back({vtk.add(p[0], n, shade), vtk.add(p[1], n, shade), vtk.add(p[2], n, shade)});
   }
   double mean_edge = 0.;
   for(auto e : edges(quads))
@@ -147,9 +141,9 @@ void write_picture(const Mesh& input, const Mesh& quads, const Options& o, examp
     if(p.size() == 4)
       continue;
     const Eigen::Vector3d lift = 0.04 * mean_edge * n;
-    const std::size_t first = add(p[0] + lift, n, 1.);
+    const std::size_t first = vtk.add(p[0] + lift, n, 1.);
     for(std::size_t k = 1; k + 1 < p.size(); ++k)
-      vtk.triangles.push_back({first, add(p[k] + lift, n, 1.), add(p[k + 1] + lift, n, 1.)});
+      vtk.triangles.push_back({first, vtk.add(p[k] + lift, n, 1.), vtk.add(p[k + 1] + lift, n, 1.)});
   }
   const double width = 0.06 * mean_edge;
   for(auto e : edges(quads))
@@ -163,8 +157,8 @@ void write_picture(const Mesh& input, const Mesh& quads, const Options& o, examp
     n.normalize();
     const Eigen::Vector3d a = eigen(quads.point(source(h, quads))), b = eigen(quads.point(target(h, quads)));
     const Eigen::Vector3d side = n.cross(b - a).normalized() * width, lift = n * (0.08 * mean_edge);
-    const std::size_t i0 = add(a - side + lift, n, 0.), i1 = add(b - side + lift, n, 0.),
-                      i2 = add(b + side + lift, n, 0.), i3 = add(a + side + lift, n, 0.);
+    const std::size_t i0 = vtk.add(a - side + lift, n, 0.), i1 = vtk.add(b - side + lift, n, 0.),
+                      i2 = vtk.add(b + side + lift, n, 0.), i3 = vtk.add(a + side + lift, n, 0.);
     vtk.triangles.push_back({i0, i1, i2});
     vtk.triangles.push_back({i0, i2, i3});
   }

@@ -14,6 +14,8 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_design/solver_traits.h>
 
+#include <Eigen/Core>
+
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/stat.h>
@@ -399,6 +401,15 @@ struct Vtk_surface
   std::vector<std::array<std::size_t, 3>> triangles;
   std::string scalar_name = "value";
   std::vector<double> scalars;
+
+  /// Adds a point with its normal and scalar; returns its index.
+  std::size_t add(const Eigen::Vector3d& p, const Eigen::Vector3d& n, double s)
+  {
+    points.push_back({p.x(), p.y(), p.z()});
+    normals.push_back({n.x(), n.y(), n.z()});
+    scalars.push_back(s);
+    return points.size() - 1;
+  }
 
   void write(const std::string& path) const
   {
