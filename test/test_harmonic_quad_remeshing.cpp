@@ -350,9 +350,9 @@ TEMPLATE_TEST_CASE("Remeshing keeps the topology and makes mostly quads", "[harm
     const char* name;
     double max_hausdorff; // relative to the bounding-box diagonal
   };
-  // measured here: eight 0.8%, kitten 1.1%, hemisphere 0.1%, fertility 2.4%, blobby_3cc 1.7%
+  // measured here: eight 0.82%, kitten 1.03%, hemisphere 0.10%, fertility 1.39%, blobby_3cc 1.71%
   for(const Case c : {Case{"eight.off", 0.015}, Case{"kitten.off", 0.015}, Case{"hemisphere.off", 0.015},
-                      Case{"fertility.off", 0.03}, Case{"blobby_3cc.off", 0.025}})
+                      Case{"fertility.off", 0.015}, Case{"blobby_3cc.off", 0.02}})
   {
     INFO(c.name);
     const Mesh mesh = test::load_mesh<Mesh>(c.name);

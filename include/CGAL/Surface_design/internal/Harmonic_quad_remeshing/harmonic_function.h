@@ -282,14 +282,13 @@ inline std::pair<std::vector<Critical_point>, long> critical_points(const Trace_
   for(std::size_t v = 0; v < m.number_of_vertices(); ++v)
   {
     link.clear();
-    long lower_edges = 0, upper_edges = 0;
+    long lower_edges = 0;
     for(const auto& [f, i] : m.star[v])
     {
       const std::size_t a = m.tri[f][(i + 1) % 3], b = m.tri[f][(i + 2) % 3];
       link.push_back(a);
       link.push_back(b);
       lower_edges += below(u, a, v) && below(u, b, v);
-      upper_edges += below(u, v, a) && below(u, v, b);
     }
     std::sort(link.begin(), link.end());
     link.erase(std::unique(link.begin(), link.end()), link.end());
@@ -305,7 +304,6 @@ inline std::pair<std::vector<Critical_point>, long> critical_points(const Trace_
       out.push_back({v, Critical_kind::maximum, 1, boundary});
     else if(index < 0)
       out.push_back({v, Critical_kind::saddle, int(-index), boundary});
-    (void)upper_edges;
   }
   return {out, index_sum};
 }

@@ -198,8 +198,9 @@ private:
   }
 
   // The connected regions of the faces in `candidates` whose values meet (a, b) (a band between two
-  // levels): where a region is wider than 1.6 h across the levels (measured with its median
-  // gradient), isolines at intermediate values are added inside that region only, recursively.
+  // levels): where a region is wider than 1.6 h across the levels (measured with the 10% quantile
+  // of its gradient norm), isolines at intermediate values are added inside that region only,
+  // recursively.
   void refine_band(double a, double b, const std::vector<std::size_t>& candidates, const std::vector<double>& sorted,
                    double gap, int depth)
   {
@@ -238,15 +239,17 @@ private:
         g.emplace_back(m_grad_norm[f], m_m.area[f]);
         total += m_m.area[f];
       }
+      // the width where the region is widest: with the 10% quantile of |grad u| (by area), so
+      // that the slow part of a band (around a saddle, on a protrusion) sets it
       std::sort(g.begin(), g.end());
-      double acc = 0., median = g.back().first;
+      double acc = 0., slow = g.back().first;
       for(const auto& x : g)
-        if((acc += x.second) >= 0.5 * total)
+        if((acc += x.second) >= 0.1 * total)
         {
-          median = x.first;
+          slow = x.first;
           break;
         }
-      const double width = median > 0. ? (b - a) / median : 0.;
+      const double width = slow > 0. ? (b - a) / slow : 0.;
       if(!(width > 1.6 * h))
         continue;
       const std::size_t parts = (std::min<std::size_t>)(std::size_t(std::lround(width / h)), 64);
@@ -336,7 +339,7 @@ private:
   {
     double s;                 // arc-length position on its isoline
     Eigen::Vector3d point;
-    std::size_t down = npos;    // set when a line arrives from below or was traced down
+    std::size_t down = npos;    // the node below, when a line arrived from there
     bool up = false;            // a line continues upwards from here
     std::size_t node = npos;    // net node id
     std::size_t pending = npos; // pending code of the line that landed here
@@ -347,7 +350,7 @@ private:
   {
     Eigen::Vector3d point;
     int kind; // 0 crossing, 1 pole, 2 boundary point
-    std::size_t curve = npos, index = npos, vertex = npos, loop = npos;
+    std::size_t curve = npos, vertex = npos, loop = npos;
     double loop_position = 0.;
     double s = 0.; // arc-length position on `curve`
   };
@@ -590,12 +593,12 @@ private:
     for(std::size_t k = 0; k < cr.size(); ++k)
       if(cr[k].down != npos && m_nodes[cr[k].down].kind == 0)
         by_source[m_nodes[cr[k].down].curve].push_back(k);
-    for(auto& [source, lines] : by_source)
+    for(auto& entry : by_source)
     {
+      std::vector<std::size_t>& lines = entry.second;
       const std::size_t n = lines.size();
       if(n < 2)
         continue;
-      const Isoline& from = m_iso[source];
       std::vector<double> landing;
       for(std::size_t k : lines)
         landing.push_back(cr[k].s);
@@ -603,7 +606,6 @@ private:
       std::sort(lines.begin(), lines.end(), [&](std::size_t a, std::size_t b) {
         return m_nodes[cr[a].down].s < m_nodes[cr[b].down].s;
       });
-      (void)from;
       std::size_t best_shift = 0;
       double best = std::numeric_limits<double>::infinity();
       // (a source loop has no first line: the shift is found on open isolines as well)
@@ -653,8 +655,8 @@ private:
     for(std::size_t c : order)
     {
       space_crossings(c);
-      // node ids fixed here: later lines that land on this isoline from above (descending
-      // traces) get theirs in `late_crossing`
+      // node ids fixed here; descending lines that land on this isoline later get theirs in
+      // end_node()
       finalize_crossings(c);
       m_processed[c] = 1;
       const Isoline& iso = m_iso[c];
@@ -663,18 +665,20 @@ private:
       {
         Crossing& x = m_crossings[c][k];
         const std::size_t seg = iso.at(x.s).second;
+        const std::size_t node = x.node;
+        const Eigen::Vector3d point = x.point;
+        const bool up = x.up;
         if(down && x.down == npos)
         {
-          const Trace_end e = walker.from_face(iso.faces[seg], x.point, iso.value, -1);
-          const std::size_t id = end_node(e, x.node, true);
-          m_crossings[c][k].down = id;
+          // (end_node may add crossings to a lower isoline: `x` is not used after it)
+          const std::size_t id = end_node(walker.from_face(iso.faces[seg], point, iso.value, -1), node);
+          if(id != npos)
+            m_line_edges.emplace_back(id, node);
           ++m_stats.gradient_lines;
         }
-        if(m_crossings[c][k].up)
+        if(up)
         {
-          const Trace_end e = walker.from_face(iso.faces[seg], m_crossings[c][k].point, iso.value, +1);
-          const std::size_t node = m_crossings[c][k].node;
-          const std::size_t id = end_node(e, node, false);
+          const std::size_t id = end_node(walker.from_face(iso.faces[seg], point, iso.value, +1), node);
           if(id != npos)
             m_line_edges.emplace_back(node, id);
           ++m_stats.gradient_lines;
@@ -683,11 +687,12 @@ private:
     }
   }
 
-  // the node a traced line ends at; a descending line landing on an isoline already processed
-  // adds a crossing there with its node at once
-  std::size_t end_node(const Trace_end& e, std::size_t from, bool descending)
+  // The node where a traced line ends, or npos if it got lost. On an isoline not processed yet
+  // (ascending lines) a pending code, resolved when that isoline is; on one already processed
+  // (descending lines) a new crossing there with its node at once.
+  std::size_t end_node(const Trace_end& e, std::size_t from)
   {
-    if(e.kind == Trace_end::isoline && (descending || m_processed[e.curve]))
+    if(e.kind == Trace_end::isoline && m_processed[e.curve])
     {
       Crossing x;
       x.s = m_iso[e.curve].arc_position(e.segment, e.point);
@@ -696,21 +701,13 @@ private:
       n.point = e.point;
       n.kind = 0;
       n.curve = e.curve;
+      n.s = x.s;
       m_nodes.push_back(n);
       x.node = m_nodes.size() - 1;
       m_crossings[e.curve].push_back(x);
-      if(!descending)
-        return x.node;
-      m_line_edges.emplace_back(x.node, from);
-      return npos - 1; // recorded already
+      return x.node;
     }
-    const std::size_t id = node_for_end(e, from);
-    if(descending && id != npos)
-    {
-      m_line_edges.emplace_back(resolve(id), from);
-      return npos - 1;
-    }
-    return id;
+    return node_for_end(e, from);
   }
 
   // ---- assembly ------------------------------------------------------------------------------
@@ -774,9 +771,9 @@ private:
         n.loop_position = double(m_m.boundary_position[v].second);
         m_nodes.push_back(n);
         const std::size_t node = m_nodes.size() - 1;
-        const std::size_t end = end_node(e, node, direction < 0);
-        if(direction > 0 && end != npos)
-          m_line_edges.emplace_back(node, end);
+        const std::size_t end = end_node(e, node);
+        if(end != npos)
+          m_line_edges.emplace_back(direction > 0 ? node : end, direction > 0 ? end : node);
         ++m_stats.attached_loops;
       }
     }
