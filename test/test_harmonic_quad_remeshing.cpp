@@ -12,7 +12,8 @@
 //   isoline;
 // - a cylinder with its rims as minimum and maximum becomes quads only; eight, kitten, fertility,
 //   a hemisphere and three components with boundaries become valid quad-dominant meshes of the
-//   same topology (>= 85% quads);
+//   same topology (>= 85% quads); so do a genus-3 mesh with 106 holes, 26 components and a mesh of
+//   slivers (>= 80% quads);
 // - one factorization serves new values on the same constrained vertices and every remesh;
 // - bad input throws clear exceptions and leaves the meshes untouched.
 
@@ -371,6 +372,27 @@ TEMPLATE_TEST_CASE("Remeshing keeps the topology and makes mostly quads", "[harm
     CHECK(q.relative_hausdorff_distance <= c.max_hausdorff);
     CHECK(q.angle_deviation_mean <= 6.);
     CHECK(r.faces == q.faces);
+  }
+}
+
+TEMPLATE_TEST_CASE("Awkward meshes keep their topology: 106 holes, 26 components, slivers",
+                   "[harmonic_quad][remesh]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  // elephant-with-holes: genus 3 with 106 boundary loops; bones: 26 components; triceratops:
+  // angles down to 0.0002 degrees
+  for(const std::string name : {"elephant-with-holes.off", "bones.off", "triceratops.off"})
+  {
+    INFO(name);
+    const Mesh mesh = test::load_mesh<Mesh>(name);
+    Quad_mesh out;
+    SD::harmonic_quad_remeshing(mesh, out);
+    const SD::Quad_mesh_quality q = SD::quad_mesh_quality(out, mesh);
+    INFO("faces " << q.faces << ", quads " << q.quad_fraction << ", loops " << q.boundary_loops);
+    CHECK(q.valid);
+    CHECK(q.same_topology);
+    CHECK(q.quad_fraction >= 0.8);
+    CHECK(q.relative_hausdorff_distance <= 0.02);
   }
 }
 
