@@ -9,6 +9,7 @@
 #include <CGAL/Surface_design/Harmonic_quad_remesher.h>
 #include <CGAL/Surface_design/quad_mesh_quality.h>
 
+#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <cmath>
@@ -185,23 +186,27 @@ int run(const Options& o, Traits traits)
   if(!o.minima.empty())
   {
     std::vector<std::pair<Mesh::Vertex_index, double>> c;
-    for(long v : o.minima)
-      c.emplace_back(Mesh::Vertex_index(Mesh::size_type(v)), 0.);
-    for(long v : o.maxima)
-      c.emplace_back(Mesh::Vertex_index(Mesh::size_type(v)), 1.);
-    for(const auto& [v, value] : c)
-      if(std::size_t(v) >= num_vertices(input))
-        throw example::Usage_error((value == 0. ? "--min " : "--max ") + std::to_string(std::size_t(v)) +
-                                   ": the mesh has " + std::to_string(num_vertices(input)) + " vertices");
+    for(const auto& [list, value] : {std::make_pair(&o.minima, 0.), std::make_pair(&o.maxima, 1.)})
+      for(long v : *list)
+      {
+        if(std::size_t(v) >= num_vertices(input)) // checked before the index is narrowed
+          throw example::Usage_error((value == 0. ? "--min " : "--max ") + std::to_string(v) + ": the mesh has " +
+                                     std::to_string(num_vertices(input)) + " vertices");
+        c.emplace_back(Mesh::Vertex_index(Mesh::size_type(v)), value);
+      }
     remesher.set_constraints(c);
   }
   const SD::Harmonic_critical_points cp = remesher.critical_points();
   std::printf("harmonic function: %zu constraints, %s weights (%zu negative, %zu flips); %zu minima, %zu maxima, "
-              "%zu saddles (multiplicity %d): %zu + %zu - %d = %ld = Euler characteristic; %zu spurious extrema\n",
+              "%zu saddles (multiplicity %d), %zu of them on the boundary; %zu spurious extrema\n",
               remesher.constraints().size(), o.intrinsic_delaunay ? "intrinsic Delaunay" : "cotangent",
               remesher.number_of_negative_weights(), remesher.number_of_flips(), cp.minima.size(), cp.maxima.size(),
-              cp.saddles.size(), cp.saddle_multiplicity(), cp.minima.size(), cp.maxima.size(), cp.saddle_multiplicity(),
-              cp.index_sum, cp.spurious_extrema);
+              cp.saddles.size(), cp.saddle_multiplicity(), cp.on_boundary, cp.spurious_extrema);
+  if(CGAL::is_closed(input))
+    std::printf("  %zu + %zu - %d = %ld = Euler characteristic\n", cp.minima.size(), cp.maxima.size(),
+                cp.saddle_multiplicity(), long(cp.minima.size() + cp.maxima.size()) - cp.saddle_multiplicity());
+  else
+    std::printf("  sum of the indices 1 - chi(lower link) = %ld = Euler characteristic\n", cp.index_sum);
 
   Mesh quads;
   const SD::Harmonic_quad_remeshing_report r =

@@ -43,8 +43,9 @@ namespace Surface_design {
 enum class Harmonic_weights
 {
   cotangent,         ///< the cotangent weights of the mesh (negative across non-Delaunay edges)
-  intrinsic_delaunay ///< the cotangent weights of the intrinsic Delaunay triangulation (>= 0
-                     ///< inside: the discrete maximum principle holds, no spurious interior extrema)
+  intrinsic_delaunay ///< the cotangent weights of the intrinsic Delaunay triangulation (>= 0 on
+                     ///< interior edges: the discrete maximum principle holds on its edges; extrema
+                     ///< are classified on the mesh's own edges, where they are then rare)
 };
 
 /// \ingroup PkgHarmonicQuadRemeshingRef
@@ -56,8 +57,9 @@ struct Harmonic_critical_points
   std::vector<std::pair<std::size_t, int>> saddles; ///< (vertex, multiplicity: k - 1 for k lower wedges)
   std::size_t on_boundary = 0;      ///< critical vertices on the boundary
   std::size_t spurious_extrema = 0; ///< extrema that are not constrained vertices
-  /// sum over all vertices of 1 - chi(lower link); equal to `euler_characteristic` (a theorem):
-  /// on a closed mesh, #minima + #maxima - sum of saddle multiplicities
+  /// sum over all vertices of 1 - chi(lower link); equal to `euler_characteristic` for any
+  /// function (a theorem: a check of the classification). On a closed mesh it is #minima +
+  /// #maxima - sum of saddle multiplicities; on the boundary a maximum has index 0.
   long index_sum = 0;
   long euler_characteristic = 0; ///< V - E + F of the mesh
 
@@ -201,7 +203,8 @@ public:
   /// Number of intrinsic edge flips made (`Harmonic_weights::intrinsic_delaunay`).
   std::size_t number_of_flips() const { return m_flips; }
 
-  /// Number of edges with a negative Laplacian weight.
+  /// Number of edges (of the intrinsic triangulation, boundary edges included) with a negative
+  /// Laplacian weight.
   std::size_t number_of_negative_weights() const
   {
     std::size_t n = 0;

@@ -107,7 +107,8 @@ inline std::vector<Isoline> extract_isolines(const Trace_mesh& m, const std::vec
   std::vector<Isoline> out;
   for(std::size_t f0 = 0; f0 < nf; ++f0)
   {
-    if(done[f0] || cut[f0].first < 0)
+    // (a face meets the level on two edges, or on none when no vertex value equals it)
+    if(done[f0] || cut[f0].first < 0 || cut[f0].second < 0)
       continue;
     // walk back to the start of an open path (or once around a loop)
     std::size_t start = f0;
@@ -137,6 +138,10 @@ inline std::vector<Isoline> extract_isolines(const Trace_mesh& m, const std::vec
       iso.point.push_back(edge_point(f, cut[f].first));
       iso.point_edge.push_back(m.edge[f][std::size_t(cut[f].first)]);
       const std::size_t next = m.neighbour[f][std::size_t(cut[f].second)];
+      if(next != npos && (done[next] && next != start)) // cannot happen on a manifold mesh
+        break;
+      if(next != npos && (cut[next].first < 0 || cut[next].second < 0))
+        break;
       if(next == npos)
       {
         iso.point.push_back(edge_point(f, cut[f].second));
@@ -287,14 +292,16 @@ private:
           v = npos;
           continue;
         }
-        // steepest edge upwards
+        // steepest edge upwards (strictly: a tie would let the line crawl along a plateau, such
+        // as a boundary rim held at one value); none: an extremum, the line's pole (shared by
+        // every line that ends there, also on the boundary)
         std::size_t w_best = npos, edge_face = npos;
         double slope = 0.;
         for(const auto& [g, i] : m_m.star[v])
           for(int k = 1; k < 3; ++k)
           {
             const std::size_t w = m_m.tri[g][(i + k) % 3];
-            if(!higher(w, v))
+            if(!(s * (m_u[w] - m_u[v]) > 0.))
               continue;
             const double sl = s * (m_u[w] - m_u[v]) / (m_m.point[w] - m_m.point[v]).norm();
             if(w_best == npos || sl > slope)
@@ -346,6 +353,15 @@ private:
             exit_corner = i;
           }
         }
+      }
+      if(exit_corner < 0) // no edge ahead (a numerically flat face): continue from its top vertex
+      {
+        std::size_t top = m_m.tri[f][0];
+        for(int i = 1; i < 3; ++i)
+          if(higher(m_m.tri[f][std::size_t(i)], top))
+            top = m_m.tri[f][std::size_t(i)];
+        v = top;
+        continue;
       }
       const double exit_value = value + s * t_exit * speed;
       if(const Face_level* l = level_between(f, value, exit_value, direction))

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <map>
 #include <queue>
 #include <string>
@@ -123,6 +124,8 @@ default_constraints(const Trace_mesh& m, bool protrusions, double tip_radius_rat
     out.emplace_back(b, 1.);
     if(!protrusions || !(diameter > 0.))
       continue;
+    std::vector<double> dist(m.number_of_vertices(), std::numeric_limits<double>::infinity());
+    std::vector<std::size_t> ball;
     for(std::size_t t = 0; t < m.number_of_vertices(); ++t)
     {
       if(comp[t] != c || t == b || da[t] < 0.3 * diameter)
@@ -133,13 +136,40 @@ default_constraints(const Trace_mesh& m, bool protrusions, double tip_radius_rat
           local = !below(da, t, m.tri[f][(i + k) % 3]);
       if(!local)
         continue;
+      // the ball around t, grown until a vertex farther from a shows up
       const double radius = tip_radius_ratio * diameter;
-      const std::vector<double> dt = edge_distances(m, {t}, radius);
       bool tip = true;
-      for(std::size_t v = 0; v < m.number_of_vertices() && tip; ++v)
-        if(dt[v] <= radius && below(da, t, v))
+      for(std::size_t v : ball)
+        dist[v] = std::numeric_limits<double>::infinity();
+      ball.clear();
+      using Item = std::pair<double, std::size_t>;
+      std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+      dist[t] = 0.;
+      ball.push_back(t);
+      queue.emplace(0., t);
+      while(!queue.empty() && tip)
+      {
+        const auto [dv, v] = queue.top();
+        queue.pop();
+        if(dv > dist[v])
+          continue;
+        if(below(da, t, v) || v == b)
           tip = false;
-      if(tip && dt[b] > radius)
+        for(const auto& [f, i] : m.star[v])
+          for(int k = 1; k < 3; ++k)
+          {
+            const std::size_t w = m.tri[f][(i + k) % 3];
+            const double dw = dv + (m.point[w] - m.point[v]).norm();
+            if(dw < dist[w] && dw <= radius)
+            {
+              if(!std::isfinite(dist[w]))
+                ball.push_back(w);
+              dist[w] = dw;
+              queue.emplace(dw, w);
+            }
+          }
+      }
+      if(tip)
         out.emplace_back(t, da[t] / diameter);
     }
   }

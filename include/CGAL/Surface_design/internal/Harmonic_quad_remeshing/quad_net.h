@@ -46,7 +46,6 @@ struct Polygon_soup
   std::vector<Eigen::Vector3d> points;
   std::vector<std::vector<std::size_t>> faces;
   std::vector<int> kind; ///< per point: 0 isoline x gradient line, 1 extremum (pole), 2 on the boundary
-  std::vector<double> value; ///< per point: the value of u there
 };
 
 /// Builds the net of Dong et al.: isolines at levels spaced by h (adaptively: the next level is
@@ -448,7 +447,17 @@ private:
       f.pos.push_back(iso.length());
       f.who.push_back(npos);
     }
-    return f;
+    // crossings added by add_crossing() come last: sort by position
+    std::vector<std::size_t> order(f.pos.size());
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return f.pos[a] < f.pos[b]; });
+    Fences sorted = f;
+    for(std::size_t k = 0; k < order.size(); ++k)
+    {
+      sorted.pos[k] = f.pos[order[k]];
+      sorted.who[k] = f.who[order[k]];
+    }
+    return sorted;
   }
 
   void add_crossing(std::size_t c, double s)
@@ -459,7 +468,7 @@ private:
     if(iso.closed)
       s = std::fmod(s, iso.length());
     for(Crossing& x : cr) // revive a stopped crossing near the spot rather than adding one
-      if(!x.up && std::abs(x.s - s) < 0.25 * h)
+      if(!x.up && std::abs(wrapped(x.s - s, iso.length(), iso.closed)) < 0.25 * h)
       {
         x.up = true;
         --m_stats.stopped_lines;
@@ -532,7 +541,7 @@ private:
       const double g = f.gap(k);
       if(!(g > m_opt.max_spacing * h))
         continue;
-      const std::size_t parts = std::size_t(std::lround(g / h));
+      const std::size_t parts = (std::max)(std::size_t(2), std::size_t(std::lround(g / h)));
       for(std::size_t j = 1; j < parts; ++j)
         add_crossing(c, f.pos[k] + double(j) * g / double(parts));
     }
@@ -608,8 +617,10 @@ private:
       });
       std::size_t best_shift = 0;
       double best = std::numeric_limits<double>::infinity();
-      // (a source loop has no first line: the shift is found on open isolines as well)
-      for(std::size_t shift = 0; shift < n; ++shift)
+      // a loop has no first line: when the source or the target is a loop, the order holds up to
+      // a cyclic shift; between two paths it is the order itself
+      const bool cyclic = iso.closed || m_iso[entry.first].closed;
+      for(std::size_t shift = 0; shift < (cyclic ? n : 1); ++shift)
       {
         double cost = 0.;
         for(std::size_t j = 0; j < n; ++j)
@@ -634,12 +645,18 @@ private:
     std::stable_sort(cr.begin(), cr.end(), [](const Crossing& a, const Crossing& b) { return a.s < b.s; });
     // a line that lands where another one landed (they met at a vertex or along an edge) ends
     // one isoline earlier: its source becomes a T-junction
+    const double tie = 1e-3 * m_opt.edge_length;
     std::vector<Crossing> kept;
     for(const Crossing& x : cr)
-      if(kept.empty() || x.s - kept.back().s >= 1e-3 * m_opt.edge_length)
+      if(kept.empty() || x.s - kept.back().s >= tie)
         kept.push_back(x);
       else
         ++m_stats.merged_lines;
+    if(iso.closed && kept.size() > 1 && kept.front().s + L - kept.back().s < tie) // across the seam
+    {
+      kept.pop_back();
+      ++m_stats.merged_lines;
+    }
     cr.swap(kept);
   }
 
@@ -900,7 +917,7 @@ private:
     Eigen::Vector3d n = Eigen::Vector3d::Zero();
     for(const auto& [f, i] : m_m.star[v])
       n += m_m.area[f] * m_m.normal[f];
-    return n.normalized();
+    return n.norm() > 0. ? n.normalized() : m_m.normal[m_m.star[v].front().first];
   }
 
   template <class Edges>
@@ -978,8 +995,10 @@ private:
       const Eigen::Vector3d y = normal.cross(x);
       const Eigen::Vector3d d = m_nodes[to].point - n.point;
       double a = std::atan2(d.dot(y), d.dot(x));
-      if(n.loop != npos)
-        a = std::clamp(a, 1e-6, 3.14159); // interior directions lie between the two loop directions
+      if(!std::isfinite(a))
+        a = 0.;
+      if(n.loop != npos) // interior directions lie between the two loop directions (keys 0 and 10);
+        a = std::clamp(a, 1e-3, 3.) + 1e-6 * a; // chords leaving a concave boundary keep their order
       else if(a < 0.)
         a += 2. * 3.141592653589793;
       return a;
@@ -1066,8 +1085,6 @@ private:
           new_id[v] = soup.points.size();
           soup.points.push_back(m_nodes[v].point);
           soup.kind.push_back(m_nodes[v].kind);
-          soup.value.push_back(m_nodes[v].curve == npos ? m_u[m_nodes[v].vertex == npos ? 0 : m_nodes[v].vertex]
-                                                        : m_iso[m_nodes[v].curve].value);
         }
         v = new_id[v];
       }
@@ -1093,7 +1110,8 @@ private:
     if(frac < 1e-12) // at a vertex: the mean of the two boundary edges
       t = t.normalized() + (m_m.point[a] - m_m.point[loop[(k + loop.size() - 1) % loop.size()]]).normalized();
     const Eigen::Vector3d nn = boundary_normal(n);
-    return (t - t.dot(nn) * nn).normalized();
+    const Eigen::Vector3d tangent = t - t.dot(nn) * nn;
+    return tangent.norm() > 0. ? tangent.normalized() : nn.unitOrthogonal();
   }
 
   const Trace_mesh& m_m;

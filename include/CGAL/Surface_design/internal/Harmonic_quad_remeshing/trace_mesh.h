@@ -50,11 +50,12 @@ struct Trace_mesh
   std::size_t number_of_vertices() const { return point.size(); }
   std::size_t number_of_faces() const { return tri.size(); }
 
-  /// Gradient of the piecewise-linear function with vertex values `u` on face f.
+  /// Gradient of the piecewise-linear function with vertex values `u` on face f (from the
+  /// differences, so that it is exactly zero where the three values are equal).
   Eigen::Vector3d gradient(std::size_t f, const std::vector<double>& u) const
   {
     const auto& t = tri[f];
-    return u[t[0]] * grad_lambda[f][0] + u[t[1]] * grad_lambda[f][1] + u[t[2]] * grad_lambda[f][2];
+    return (u[t[1]] - u[t[0]]) * grad_lambda[f][1] + (u[t[2]] - u[t[0]]) * grad_lambda[f][2];
   }
 
   Eigen::Vector3d at(std::size_t f, const Eigen::Vector3d& bary) const
