@@ -376,6 +376,15 @@ TEMPLATE_TEST_CASE("A cylinder with its rims as minimum and maximum becomes quad
   CHECK(q.faces <= 30 * 20);
   CHECK(q.angle_deviation_max <= 5.);
   CHECK(q.relative_hausdorff_distance <= 0.01);
+  // one line per column of vertices: the lines run along mesh edges and through vertices, and
+  // end on the rims at their vertices (equal values along the rim: no crawling along it)
+  Quad_mesh aligned;
+  SD::harmonic_quad_remeshing(mesh, aligned, P::harmonic_constraints(rims, P::target_edge_length(2. * SDI::pi / 48.)));
+  const SD::Quad_mesh_quality qa = SD::quad_mesh_quality(aligned, mesh);
+  INFO("aligned: faces " << qa.faces << " quads " << qa.faces_by_sides[1]);
+  CHECK(qa.valid);
+  CHECK(qa.same_topology);
+  CHECK(qa.faces_by_sides[1] == qa.faces);
 }
 
 TEMPLATE_TEST_CASE("Remeshing keeps the topology and makes mostly quads", "[harmonic_quad][remesh]", SD_MESH_TYPES)
