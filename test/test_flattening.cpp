@@ -53,6 +53,7 @@ using Point_2 = test::Kernel::Point_2;
 using test::Soup_points;
 using test::Soup_triangles;
 using test::from_soup;
+using test::ruled_soup;
 
 template <class Mesh>
 using Vertex = typename boost::graph_traits<Mesh>::vertex_descriptor;
@@ -104,38 +105,6 @@ void grid_soup(std::size_t n, double jitter, Soup_points& points, Soup_triangles
       t[k++] = std::size_t(v);
     triangles.push_back(t);
   }
-}
-
-// A prism cylinder (n sides, m rings) or a cone (radii shrinking to half), open at both ends;
-// `seam`: the first column is duplicated, i.e. the surface is already cut along a ruling.
-void ruled_soup(std::size_t n, std::size_t m, bool cone, bool seam, Soup_points& points, Soup_triangles& triangles)
-{
-  points.clear();
-  triangles.clear();
-  const std::size_t columns = seam ? n + 1 : n;
-  for(std::size_t j = 0; j <= m; ++j)
-    for(std::size_t i = 0; i < columns; ++i)
-    {
-      const double t = double(j) / double(m), theta = 2. * SDI::pi * double(i) / double(n);
-      const double r = cone ? 1. - 0.5 * t : 1.;
-      points.push_back({r * std::cos(theta), r * std::sin(theta), 1.5 * t});
-    }
-  auto id = [&](std::size_t i, std::size_t j) { return j * columns + (seam ? i : i % n); };
-  for(std::size_t j = 0; j < m; ++j)
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      const std::size_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      if((i + j) % 2 == 0)
-      {
-        triangles.push_back({a, b, c});
-        triangles.push_back({a, c, d});
-      }
-      else
-      {
-        triangles.push_back({a, b, d});
-        triangles.push_back({b, c, d});
-      }
-    }
 }
 
 // Best rigid motion (rotation + translation, and scale if `similarity`) of a onto b, then the

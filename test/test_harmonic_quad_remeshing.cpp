@@ -47,34 +47,6 @@ using test::from_soup;
 using test::Soup_points;
 using test::Soup_triangles;
 
-// An open cylinder of radius 1 and height `height`: `n` vertices around, `m` rings of quads split
-// into triangles with alternating diagonals.
-void cylinder_soup(std::size_t n, std::size_t m, double height, Soup_points& points, Soup_triangles& triangles)
-{
-  for(std::size_t j = 0; j <= m; ++j)
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      const double theta = 2. * SDI::pi * double(i) / double(n);
-      points.push_back({std::cos(theta), std::sin(theta), height * double(j) / double(m)});
-    }
-  auto id = [&](std::size_t i, std::size_t j) { return j * n + i % n; };
-  for(std::size_t j = 0; j < m; ++j)
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      const std::size_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      if((i + j) % 2 == 0)
-      {
-        triangles.push_back({a, b, c});
-        triangles.push_back({a, c, d});
-      }
-      else
-      {
-        triangles.push_back({a, b, d});
-        triangles.push_back({b, c, d});
-      }
-    }
-}
-
 template <class Mesh>
 long euler_characteristic(const Mesh& m)
 {
@@ -347,7 +319,7 @@ TEMPLATE_TEST_CASE("A cylinder with its rims as minimum and maximum becomes quad
   using Mesh = TestType;
   Soup_points points;
   Soup_triangles triangles;
-  cylinder_soup(48, 40, 4., points, triangles);
+  test::ruled_soup(48, 40, false, false, points, triangles, 4.);
   const Mesh mesh = from_soup<Mesh>(points, triangles);
   std::vector<std::pair<typename boost::graph_traits<Mesh>::vertex_descriptor, double>> rims;
   for(auto v : vertices(mesh))

@@ -19,6 +19,7 @@
 #include <catch2/catch.hpp>
 
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <map>
@@ -118,6 +119,40 @@ Mesh from_soup(const Soup_points& points, const Soup_triangles& triangles)
   REQUIRE(CGAL::is_valid_polygon_mesh(mesh));
   REQUIRE(num_faces(mesh) == triangles.size());
   return mesh;
+}
+
+/// A prism cylinder of radius 1 (n sides, m rings of quads split into triangles with alternating
+/// diagonals) or a cone (radii shrinking to half), from z = 0 to z = `height`, open at both ends;
+/// `seam`: the first column is duplicated, i.e. the surface is already cut along a ruling.
+inline void ruled_soup(std::size_t n, std::size_t m, bool cone, bool seam, Soup_points& points,
+                       Soup_triangles& triangles, double height = 1.5)
+{
+  points.clear();
+  triangles.clear();
+  const std::size_t columns = seam ? n + 1 : n;
+  for(std::size_t j = 0; j <= m; ++j)
+    for(std::size_t i = 0; i < columns; ++i)
+    {
+      const double t = double(j) / double(m), theta = 2. * 3.14159265358979323846 * double(i) / double(n);
+      const double r = cone ? 1. - 0.5 * t : 1.;
+      points.push_back({r * std::cos(theta), r * std::sin(theta), height * t});
+    }
+  auto id = [&](std::size_t i, std::size_t j) { return j * columns + (seam ? i : i % n); };
+  for(std::size_t j = 0; j < m; ++j)
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const std::size_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      if((i + j) % 2 == 0)
+      {
+        triangles.push_back({a, b, c});
+        triangles.push_back({a, c, d});
+      }
+      else
+      {
+        triangles.push_back({a, b, d});
+        triangles.push_back({b, c, d});
+      }
+    }
 }
 
 /// The mesh's own (read-only) vertex point map type.
