@@ -26,14 +26,14 @@ struct Weighted_edge
   double w;
 };
 
-/// The cotangent weights w_ij = (cot a_ij + cot b_ij) / 2 of an intrinsic triangulation.
+/// An intrinsic triangulation of a triangle mesh (halfedges with edge lengths), starting as the
+/// mesh itself, and its cotangent weights w_ij = (cot a_ij + cot b_ij) / 2.
 ///
-/// With `delaunay == false` these are the weights of the mesh itself (one per edge). With
-/// `delaunay == true` the mesh's edges are first flipped *intrinsically* (only the edge lengths
-/// change, the vertex set and the metric stay; Bobenko & Springborn 2007) until every interior
-/// edge is locally Delaunay (a_ij + b_ij <= pi): all weights are then >= 0, so the Laplacian
-/// satisfies the discrete maximum principle, and the weights may join vertices that are not
-/// neighbours in the mesh. `flips` receives the number of flips.
+/// `make_delaunay()` flips edges *intrinsically* (only the edge lengths change; the vertex set and
+/// the metric stay: Bobenko & Springborn 2007) until every interior edge is locally Delaunay
+/// (a_ij + b_ij <= pi): every interior weight is then >= 0, so the Laplacian satisfies the
+/// discrete maximum principle. Boundary edges are never flipped (an obtuse angle opposite one keeps
+/// its weight negative), and the weights may join vertices that are not neighbours in the mesh.
 class Intrinsic_triangulation
 {
 public:
