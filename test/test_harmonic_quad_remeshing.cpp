@@ -367,8 +367,10 @@ TEMPLATE_TEST_CASE("Remeshing keeps the topology and makes mostly quads", "[harm
     const char* name;
     double max_hausdorff; // relative to the bounding-box diagonal
   };
-  // measured here: eight 0.72%, kitten 1.03%, hemisphere 0.10%, fertility 1.41%, blobby_3cc 1.71%
-  for(const Case c : {Case{"eight.off", 0.015}, Case{"kitten.off", 0.015}, Case{"hemisphere.off", 0.015},
+  // measured here: eight 0.72%, kitten 1.03%, hemisphere 0.10%, fertility 1.41%, blobby_3cc 1.71%;
+  // under the sanitizers the lighter torus (genus 1 as well, 0.69%) replaces the kitten (22k faces)
+  const char* genus_one = CGAL_SURFACE_DESIGN_TESTS_UNDER_SANITIZERS ? "torus.off" : "kitten.off";
+  for(const Case c : {Case{"eight.off", 0.015}, Case{genus_one, 0.015}, Case{"hemisphere.off", 0.015},
                       Case{"fertility.off", 0.015}, Case{"blobby_3cc.off", 0.02}})
   {
     INFO(c.name);
