@@ -129,12 +129,7 @@ int main(int argc, char** argv)
     }
     if(input.empty())
       throw example::Usage_error("no input mesh");
-    if(png.empty() && once.contains("--up"))
-      throw example::Usage_error("--up applies to --picture");
-    example::check_distinct_paths({{"INPUT", input}, {"--fixed", fixed_file}, {"--output", output}, {"--picture", png},
-                                   {"the picture's surface file", png.empty() ? "" : png + ".vtk"}});
-    if(!png.empty())
-      example::require_picture_tools();
+    example::check_paths_and_picture({{"INPUT", input}, {"--fixed", fixed_file}, {"--output", output}}, png, once.contains("--up"));
 
     Mesh mesh = example::read_mesh(input);
     const Mesh original = mesh;

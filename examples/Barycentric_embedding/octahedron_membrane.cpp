@@ -88,9 +88,7 @@ int main(int argc, char** argv)
                                  "would meet at R >= 3; got " + example::text(radius));
     if(iterative && m > 30)
       throw example::Usage_error("--iterative needs m <= 30 (its steps grow like m^4); got " + std::to_string(m));
-    example::check_distinct_paths({{"--output", output}, {"--picture", png}, {"the picture's surface file", png.empty() ? "" : png + ".vtk"}});
-    if(!png.empty())
-      example::require_picture_tools();
+    example::check_paths_and_picture({{"--output", output}}, png, false);
 
     Mesh mesh;
     const auto loops = SD::make_octahedron_membrane(mesh, m, radius, 3., placement);

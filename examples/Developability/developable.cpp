@@ -111,12 +111,7 @@ Options parse(int argc, char** argv)
     throw example::Usage_error("no input mesh");
   if(o.output.empty())
     throw example::Usage_error("--output OUT.off is required");
-  if(o.picture.empty() && once.contains("--up"))
-    throw example::Usage_error("--up applies to --picture");
-  example::check_distinct_paths({{"INPUT", o.input}, {"--output", o.output}, {"--picture", o.picture},
-                                 {"the picture's surface file", o.picture.empty() ? "" : o.picture + ".vtk"}});
-  if(!o.picture.empty())
-    example::require_picture_tools();
+  example::check_paths_and_picture({{"INPUT", o.input}, {"--output", o.output}}, o.picture, once.contains("--up"));
   return o;
 }
 

@@ -119,13 +119,8 @@ Options parse(int argc, char** argv)
   if(!(2. * o.margin < std::min(o.sheet_width, o.sheet_height)))
     throw example::Usage_error("--margin " + example::text(o.margin) + " leaves no room on a " +
                                example::text(o.sheet_width) + " x " + example::text(o.sheet_height) + " mm sheet");
-  if(o.picture.empty() && once.contains("--up"))
-    throw example::Usage_error("--up applies to --picture");
-  example::check_distinct_paths({{"INPUT", o.input}, {"--output", o.output}, {"--pattern", o.pattern},
-                                 {"--picture", o.picture},
-                                 {"the picture's surface file", o.picture.empty() ? "" : o.picture + ".vtk"}});
-  if(!o.picture.empty())
-    example::require_picture_tools();
+  example::check_paths_and_picture({{"INPUT", o.input}, {"--output", o.output}, {"--pattern", o.pattern}}, o.picture,
+                                   once.contains("--up"));
   return o;
 }
 

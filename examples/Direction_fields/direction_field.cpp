@@ -115,12 +115,7 @@ Options parse(int argc, char** argv)
     throw example::Usage_error("--singularity needs --method trivial (smoothest fields place their own)");
   if(o.method == "trivial" && (o.curvature_weight != 0. || o.boundary != "free"))
     throw example::Usage_error("--curvature-weight and --boundary apply to --method smoothest");
-  if(o.picture.empty() && up_given)
-    throw example::Usage_error("--up applies to --picture");
-  example::check_distinct_paths({{"INPUT", o.input}, {"--output", o.output}, {"--picture", o.picture},
-                                 {"the picture's surface file", o.picture.empty() ? "" : o.picture + ".vtk"}});
-  if(!o.picture.empty())
-    example::require_picture_tools();
+  example::check_paths_and_picture({{"INPUT", o.input}, {"--output", o.output}}, o.picture, up_given);
   return o;
 }
 

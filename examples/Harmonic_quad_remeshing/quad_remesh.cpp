@@ -97,12 +97,7 @@ Options parse(int argc, char** argv)
                                "function constant), or neither for the default constraints");
   if(!o.minima.empty() && !o.protrusions)
     throw example::Usage_error("--no-protrusions applies to the default constraints, not to --min/--max");
-  if(o.picture.empty() && once.contains("--up"))
-    throw example::Usage_error("--up applies to --picture");
-  example::check_distinct_paths({{"INPUT", o.input}, {"--output", o.output}, {"--picture", o.picture},
-                                 {"the picture's surface file", o.picture.empty() ? "" : o.picture + ".vtk"}});
-  if(!o.picture.empty())
-    example::require_picture_tools();
+  example::check_paths_and_picture({{"INPUT", o.input}, {"--output", o.output}}, o.picture, once.contains("--up"));
   return o;
 }
 

@@ -463,6 +463,21 @@ inline void require_picture_tools()
                       " (Debian: apt-get install f3d xvfb xauth)");
 }
 
+/// The checks of a program with `--picture PNG [--up AXIS]`, once its options are read: `--up`
+/// (`up_given`) needs `--picture`; no two of the `named` paths, the picture and its surface file
+/// PNG.vtk are the same file; the programs a picture needs are installed.
+inline void check_paths_and_picture(std::vector<std::pair<std::string, std::string>> named,
+                                    const std::string& picture, bool up_given)
+{
+  if(picture.empty() && up_given)
+    throw Usage_error("--up applies to --picture");
+  named.emplace_back("--picture", picture);
+  named.emplace_back("the picture's surface file", picture.empty() ? "" : picture + ".vtk");
+  check_distinct_paths(named);
+  if(!picture.empty())
+    require_picture_tools();
+}
+
 /// Runs a program with arguments (no shell: nothing in the arguments is interpreted), its
 /// output discarded; returns its exit status (-1 if it could not be started).
 inline int run_program(const std::vector<std::string>& arguments)

@@ -7,6 +7,7 @@
 #define CGAL_SURFACE_DESIGN_QUAD_MESH_QUALITY_H
 
 #include <CGAL/Surface_design/exceptions.h>
+#include <CGAL/Surface_design/internal/Core/geometry.h>
 #include <CGAL/Surface_design/internal/Core/named_parameters.h>
 #include <CGAL/Surface_design/parameters.h>
 
@@ -62,15 +63,8 @@ struct Quad_mesh_quality
 
 namespace internal {
 
-template <class Mesh, class VPM>
-Eigen::Vector3d quality_point(const Mesh&, const VPM& vpm, typename boost::graph_traits<Mesh>::vertex_descriptor v)
-{
-  const auto& p = get(vpm, v);
-  return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-}
-
-template <class Mesh, class VPM>
-void topology_counts(const Mesh& m, const VPM&, long& chi, std::size_t& loops, std::size_t& components)
+template <class Mesh>
+void topology_counts(const Mesh& m, long& chi, std::size_t& loops, std::size_t& components)
 {
   chi = long(num_vertices(m)) - long(num_edges(m)) + long(num_faces(m));
   std::vector<typename boost::graph_traits<Mesh>::halfedge_descriptor> border;
@@ -128,7 +122,7 @@ Quad_mesh_quality quad_mesh_quality(const PolygonMesh& pm, const TriangleMesh& r
     std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> vs;
     for(auto v : vertices_around_face(halfedge(f, pm), pm))
     {
-      p.push_back(internal::quality_point(pm, vpm, v));
+      p.push_back(internal::position(vpm, v));
       vs.push_back(v);
     }
     const std::size_t n = p.size();
@@ -178,7 +172,7 @@ Quad_mesh_quality quad_mesh_quality(const PolygonMesh& pm, const TriangleMesh& r
   q.edge_length_min = std::numeric_limits<double>::infinity();
   for(auto e : edges(pm))
   {
-    const double l = (internal::quality_point(pm, vpm, source(e, pm)) - internal::quality_point(pm, vpm, target(e, pm))).norm();
+    const double l = (internal::position(vpm, source(e, pm)) - internal::position(vpm, target(e, pm))).norm();
     sum += l;
     sq += l * l;
     q.edge_length_min = (std::min)(q.edge_length_min, l);
@@ -195,10 +189,10 @@ Quad_mesh_quality quad_mesh_quality(const PolygonMesh& pm, const TriangleMesh& r
 
   if(q.valid && q.faces > 0)
   {
-    internal::topology_counts(pm, vpm, q.euler_characteristic, q.boundary_loops, q.connected_components);
+    internal::topology_counts(pm, q.euler_characteristic, q.boundary_loops, q.connected_components);
     long chi = 0;
     std::size_t loops = 0, comps = 0;
-    internal::topology_counts(reference, rvpm, chi, loops, comps);
+    internal::topology_counts(reference, chi, loops, comps);
     q.same_topology = chi == q.euler_characteristic && loops == q.boundary_loops && comps == q.connected_components;
     // Hausdorff distance between triangle meshes: copies with fanned faces
     using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -225,7 +219,7 @@ Quad_mesh_quality quad_mesh_quality(const PolygonMesh& pm, const TriangleMesh& r
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
     for(auto v : vertices(reference))
     {
-      const Eigen::Vector3d p = internal::quality_point(reference, rvpm, v);
+      const Eigen::Vector3d p = internal::position(rvpm, v);
       lo = lo.cwiseMin(p);
       hi = hi.cwiseMax(p);
     }
@@ -254,7 +248,7 @@ std::size_t count_non_quads_near(const PolygonMesh& pm, const PointRange& points
     std::size_t sides = 0;
     for(auto v : vertices_around_face(halfedge(f, pm), pm))
     {
-      c += internal::quality_point(pm, vpm, v);
+      c += internal::position(vpm, v);
       ++sides;
     }
     if(sides == 4)

@@ -72,6 +72,22 @@ public:
 
 private:
   // ---- levels -------------------------------------------------------------------------------
+  // The q-quantile of the values of (value, weight) pairs by weight; 0 for no pair.
+  static double weighted_quantile(std::vector<std::pair<double, double>>& g, double q)
+  {
+    if(g.empty())
+      return 0.;
+    std::sort(g.begin(), g.end());
+    double total = 0.;
+    for(const auto& x : g)
+      total += x.second;
+    double acc = 0.;
+    for(const auto& x : g)
+      if((acc += x.second) >= q * total)
+        return x.first;
+    return g.back().first;
+  }
+
   double median_gradient_at(double c) const
   {
     std::vector<std::pair<double, double>> g; // (|grad u|, segment length)
@@ -86,17 +102,7 @@ private:
         g.emplace_back(gn, std::sqrt(m_m.area[f])); // weight ~ the length of the level in f
       }
     }
-    if(g.empty())
-      return 0.;
-    std::sort(g.begin(), g.end());
-    double total = 0.;
-    for(const auto& x : g)
-      total += x.second;
-    double acc = 0.;
-    for(const auto& x : g)
-      if((acc += x.second) >= 0.5 * total)
-        return x.first;
-    return g.back().first;
+    return weighted_quantile(g, 0.5);
   }
 
   std::size_t loop_of_edge(std::size_t e) const
@@ -232,22 +238,11 @@ private:
     for(auto& [root, faces] : regions)
     {
       std::vector<std::pair<double, double>> g; // (|grad u|, area)
-      double total = 0.;
       for(std::size_t f : faces)
-      {
         g.emplace_back(m_grad_norm[f], m_m.area[f]);
-        total += m_m.area[f];
-      }
       // the width where the region is widest: with the 10% quantile of |grad u| (by area), so
       // that the slow part of a band (around a saddle, on a protrusion) sets it
-      std::sort(g.begin(), g.end());
-      double acc = 0., slow = g.back().first;
-      for(const auto& x : g)
-        if((acc += x.second) >= 0.1 * total)
-        {
-          slow = x.first;
-          break;
-        }
+      const double slow = weighted_quantile(g, 0.1);
       const double width = slow > 0. ? (b - a) / slow : 0.;
       if(!(width > 1.6 * h))
         continue;
