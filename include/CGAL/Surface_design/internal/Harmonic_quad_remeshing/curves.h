@@ -34,6 +34,8 @@ struct Isoline
   std::vector<std::size_t> point_edge; ///< mesh edge of each point
   std::vector<double> arc;             ///< arc length at each point (and the total at the end for loops)
 
+  int role = 0; ///< 0 a level set piece; 1 a frame of spectacles; 2 a bridge of spectacles
+
   std::size_t segments() const { return faces.size(); }
   double length() const { return arc.back(); }
   const Eigen::Vector3d& segment_end(std::size_t k) const { return point[closed ? (k + 1) % point.size() : k + 1]; }
@@ -46,6 +48,23 @@ struct Isoline
     const double len2 = d.squaredNorm();
     const double t = len2 > 0. ? std::clamp((p - a).dot(d) / len2, 0., 1.) : 0.;
     return arc[k] + t * (arc[k + 1] - arc[k]);
+  }
+
+  /// Arc-length position of a point lying on segment k or on one of its two neighbours.
+  double nearest_arc_position(std::size_t k, const Eigen::Vector3d& p) const
+  {
+    const std::size_t n = segments();
+    double best = arc_position(k, p), distance = (at(best).first - p).squaredNorm();
+    for(std::size_t j : {closed ? (k + n - 1) % n : (k == 0 ? k : k - 1), closed ? (k + 1) % n : (std::min)(k + 1, n - 1)})
+    {
+      const double s = arc_position(j, p), d = (at(s).first - p).squaredNorm();
+      if(d < distance)
+      {
+        distance = d;
+        best = s;
+      }
+    }
+    return best;
   }
 
   /// Point and segment at arc-length position s (wrapped on loops).
@@ -175,6 +194,20 @@ struct Trace_end
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
 };
 
+/// A point of the surface: a mesh vertex, a point inside a mesh edge, or a point inside a face.
+struct Surface_point
+{
+  enum Kind
+  {
+    vertex, ///< vertex `a`
+    edge,   ///< (1 - t) a + t b on the edge between vertices a and b
+    face    ///< inside face `a`
+  } kind = vertex;
+  std::size_t a = npos, b = npos;
+  double t = 0.;
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+};
+
 /// An isoline segment registered in a face, for the gradient walk.
 struct Face_level
 {
@@ -199,35 +232,35 @@ public:
 
   const Eigen::Vector3d& gradient(std::size_t f) const { return m_grad[f]; }
 
-  /// From point p of face f, where u = value (the isoline there is not met again).
-  Trace_end from_face(std::size_t f, const Eigen::Vector3d& p, double value, int direction) const
+  /// From point p of face f, where u = value (the isoline there is not met again). With `path`,
+  /// the points where the line enters faces, vertices and edges are appended to it (the start,
+  /// every vertex and edge crossing, the end).
+  Trace_end from_face(std::size_t f, const Eigen::Vector3d& p, double value, int direction,
+                      std::vector<Surface_point>* path = nullptr) const
   {
-    Eigen::Vector3d bary = barycentric(f, p);
-    return walk(f, bary, npos, value, direction);
+    Eigen::Vector3d bary = m_m.barycentric(f, p);
+    return walk(f, bary, npos, value, direction, path);
   }
 
-  Trace_end from_vertex(std::size_t v, int direction) const { return walk(npos, {}, v, m_u[v], direction); }
+  Trace_end from_vertex(std::size_t v, int direction, std::vector<Surface_point>* path = nullptr) const
+  {
+    return walk(npos, {}, v, m_u[v], direction, path);
+  }
 
 private:
-  Eigen::Vector3d barycentric(std::size_t f, const Eigen::Vector3d& p) const
-  {
-    const auto& t = m_m.tri[f];
-    Eigen::Vector3d b;
-    for(int i = 0; i < 3; ++i)
-      b[i] = 1. / 3. + m_m.grad_lambda[f][std::size_t(i)].dot(p - (m_m.point[t[0]] + m_m.point[t[1]] + m_m.point[t[2]]) / 3.);
-    for(int i = 0; i < 3; ++i)
-      b[i] = (std::max)(0., b[i]);
-    return b / b.sum();
-  }
-
   // first registered level strictly between `from` and `to` (in the walking direction) in face f
-  const Face_level* level_between(std::size_t f, double from, double to, int direction) const
+  const Face_level* level_between(std::size_t f, double from, double to, int direction, bool inclusive) const
   {
     const Face_level* best = nullptr;
     for(const Face_level& l : m_levels[f])
     {
       const bool inside = direction > 0 ? (l.value > from && l.value <= to) : (l.value < from && l.value >= to);
-      if(inside && (best == nullptr || (direction > 0 ? l.value < best->value : l.value > best->value)))
+      // a level met exactly where the walk crossed into this face (rounding may have missed it
+      // in the face before), but never the level the line started on
+      const bool at_entry = inclusive && l.value == from;
+      if(!inside && !at_entry)
+        continue;
+      if(best == nullptr || (direction > 0 ? l.value < best->value : l.value > best->value))
         best = &l;
     }
     return best;
@@ -254,15 +287,32 @@ private:
     return e;
   }
 
-  Trace_end walk(std::size_t f, Eigen::Vector3d bary, std::size_t v, double value, int direction) const
+  Trace_end walk(std::size_t f, Eigen::Vector3d bary, std::size_t v, double value, int direction,
+                 std::vector<Surface_point>* path) const
   {
     const double s = direction > 0 ? 1. : -1.;
     // a line never lands at or behind its starting level, even where rounding moves it back a
     // little (snapping to a vertex next to the start)
     const double start = value;
     auto level_between = [&](std::size_t face, double from, double to, int dir) {
-      return this->level_between(face, dir > 0 ? (std::max)(from, start) : (std::min)(from, start), to, dir);
+      const bool beyond = dir > 0 ? from > start : from < start;
+      return this->level_between(face, beyond ? from : start, to, dir, beyond);
     };
+    auto record = [&](Surface_point::Kind kind, std::size_t a, std::size_t b, double t, const Eigen::Vector3d& p) {
+      if(path == nullptr)
+        return;
+      Surface_point q;
+      q.kind = kind;
+      q.a = a;
+      q.b = b;
+      q.t = t;
+      q.point = p;
+      path->push_back(q);
+    };
+    if(v != npos)
+      record(Surface_point::vertex, v, npos, 0., m_m.point[v]);
+    else
+      record(Surface_point::face, f, npos, 0., m_m.at(f, bary));
     auto higher = [&](std::size_t a, std::size_t b) { return direction > 0 ? below(m_u, b, a) : below(m_u, a, b); };
     const std::size_t guard = 20 * m_m.number_of_faces() + 1000;
     for(std::size_t step = 0; step < guard; ++step)
@@ -270,6 +320,8 @@ private:
       if(v != npos) // at a vertex
       {
         value = m_u[v];
+        if(path != nullptr && !(path->back().kind == Surface_point::vertex && path->back().a == v))
+          record(Surface_point::vertex, v, npos, 0., m_m.point[v]);
         std::size_t best_face = npos;
         double best = 0.;
         for(const auto& [g, i] : m_m.star[v])
@@ -322,6 +374,7 @@ private:
         if(const Face_level* l = level_between(edge_face, value, m_u[w_best], direction))
         {
           const double t = (l->value - m_u[v]) / (m_u[w_best] - m_u[v]);
+          record(Surface_point::edge, v, w_best, t, (1. - t) * m_m.point[v] + t * m_m.point[w_best]);
           return landed(*l, (1. - t) * m_m.point[v] + t * m_m.point[w_best]);
         }
         v = w_best;
@@ -367,6 +420,7 @@ private:
       if(const Face_level* l = level_between(f, value, exit_value, direction))
       {
         const double t = s * (l->value - value) / speed;
+        record(Surface_point::face, f, npos, 0., m_m.at(f, bary) + t * d);
         return landed(*l, m_m.at(f, bary) + t * d);
       }
       // exit through the edge opposite exit_corner: local edge (exit_corner + 1)
@@ -377,10 +431,13 @@ private:
       const double wj = (std::max)(0., bary[j]), wk = (std::max)(0., bary[k]);
       const double t = wj + wk > 0. ? wk / (wj + wk) : 0.5; // from corner j to corner k
       const std::size_t a = m_m.tri[f][std::size_t(j)], b = m_m.tri[f][std::size_t(k)];
-      value = (1. - t) * m_u[a] + t * m_u[b];
+      value = m_u[a] + t * (m_u[b] - m_u[a]); // exactly their value on an edge whose ends share one
       const std::size_t g = m_m.neighbour[f][std::size_t(e)];
       if(g == npos) // the boundary, even at one of its vertices
+      {
+        record(Surface_point::edge, a, b, t, (1. - t) * m_m.point[a] + t * m_m.point[b]);
         return on_boundary(a, b, t);
+      }
       constexpr double snap = 1e-9;
       if(t < snap || t > 1. - snap)
       {
@@ -393,14 +450,17 @@ private:
       {
         // both gradients point into the edge: slide along it to its higher end
         const std::size_t top = higher(a, b) ? a : b;
+        record(Surface_point::edge, a, b, t, (1. - t) * m_m.point[a] + t * m_m.point[b]);
         if(const Face_level* l = level_between(f, value, m_u[top], direction))
         {
           const double tl = (l->value - m_u[a]) / (m_u[b] - m_u[a]);
+          record(Surface_point::edge, a, b, tl, (1. - tl) * m_m.point[a] + tl * m_m.point[b]);
           return landed(*l, (1. - tl) * m_m.point[a] + tl * m_m.point[b]);
         }
         v = top;
         continue;
       }
+      record(Surface_point::edge, a, b, t, (1. - t) * m_m.point[a] + t * m_m.point[b]);
       f = g;
       bary = Eigen::Vector3d::Zero();
       bary[eg] = t;           // corner eg is vertex b

@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <utility>
@@ -56,6 +57,17 @@ struct Trace_mesh
   {
     const auto& t = tri[f];
     return (u[t[1]] - u[t[0]]) * grad_lambda[f][1] + (u[t[2]] - u[t[0]]) * grad_lambda[f][2];
+  }
+
+  /// Barycentric coordinates of p in face f (p projected to its plane, clamped to the face).
+  Eigen::Vector3d barycentric(std::size_t f, const Eigen::Vector3d& p) const
+  {
+    const auto& t = tri[f];
+    const Eigen::Vector3d centroid = (point[t[0]] + point[t[1]] + point[t[2]]) / 3.;
+    Eigen::Vector3d b;
+    for(int i = 0; i < 3; ++i)
+      b[i] = (std::max)(0., 1. / 3. + grad_lambda[f][std::size_t(i)].dot(p - centroid));
+    return b / b.sum();
   }
 
   Eigen::Vector3d at(std::size_t f, const Eigen::Vector3d& bary) const
