@@ -38,6 +38,9 @@ const char* usage =
   "  --edge-length H       target edge length (default: sqrt(area / 3000), about 3000 faces)\n"
   "  --intrinsic-delaunay  Laplacian of the intrinsic Delaunay triangulation (no spurious extrema)\n"
   "  --triangle-poles      fans of triangles around the extrema (default: fans of quads)\n"
+  "  --no-spectacles       no spectacles around the saddles (default: spectacles, Nagano & Imai: the\n"
+  "                        function re-solved with a curve through each saddle held at one value;\n"
+  "                        saddles where they do not fit are reported and left as they are)\n"
   "  --solver ldlt|cholmod sparse solver (default ldlt)\n"
   "  --output OUT          the quad-dominant mesh (.off, .obj or .ply); required\n"
   "  --picture OUT.png     the new mesh's edges over the input; faces other than quads in orange\n"
@@ -48,7 +51,7 @@ struct Options
   std::string input, output, picture, up = "+Y", solver = "ldlt";
   std::vector<long> minima, maxima;
   double edge_length = 0.;
-  bool protrusions = true, intrinsic_delaunay = false, quad_poles = true;
+  bool protrusions = true, intrinsic_delaunay = false, quad_poles = true, spectacles = true;
 };
 
 Options parse(int argc, char** argv)
@@ -73,6 +76,8 @@ Options parse(int argc, char** argv)
       o.intrinsic_delaunay = true;
     else if(a == "--triangle-poles")
       o.quad_poles = false;
+    else if(a == "--no-spectacles")
+      o.spectacles = false;
     else if(a == "--solver")
       o.solver = example::parse_choice(next(), a, {"ldlt", "cholmod"});
     else if(a == "--output")
@@ -205,14 +210,22 @@ int run(const Options& o, Traits traits)
 
   Mesh quads;
   const SD::Harmonic_quad_remeshing_report r =
-    o.edge_length > 0. ? remesher.remesh(quads, P::target_edge_length(o.edge_length, P::quad_poles(o.quad_poles)))
-                       : remesher.remesh(quads, P::quad_poles(o.quad_poles));
+    o.edge_length > 0.
+      ? remesher.remesh(quads, P::target_edge_length(o.edge_length, P::quad_poles(o.quad_poles, P::spectacles(o.spectacles))))
+      : remesher.remesh(quads, P::quad_poles(o.quad_poles, P::spectacles(o.spectacles)));
+  if(o.spectacles)
+  {
+    std::printf("spectacles: %zu of %zu saddles (%zu lines from bridges and junctions)\n", r.spectacles, r.saddles,
+                r.spectacles_lines);
+    for(const auto& [v, why] : r.skipped_saddles)
+      std::printf("  saddle at vertex %zu skipped: %s\n", v, why.c_str());
+  }
   std::printf("net (h = %.4g): %zu levels, %zu isolines (%zu between saddles), %zu gradient lines (%zu started, %zu "
               "stopped, %zu met another)\n",
               r.target_edge_length, r.levels, r.isolines, r.saddle_levels, r.gradient_lines, r.started_lines,
               r.stopped_lines, r.merged_lines);
-  std::printf("times: harmonic %.3f s, curves %.3f s, meshing %.3f s\n", r.harmonic_seconds, r.curves_seconds,
-              r.meshing_seconds);
+  std::printf("times: harmonic %.3f s, spectacles (re-solve) %.3f s, curves %.3f s, meshing %.3f s\n",
+              r.harmonic_seconds, r.spectacles_seconds, r.curves_seconds, r.meshing_seconds);
 
   const SD::Quad_mesh_quality q = SD::quad_mesh_quality(quads, input);
   std::printf("output: %zu vertices, %zu faces: %zu triangles, %zu quads, %zu pentagons, %zu hexagons, %zu larger; "

@@ -6,6 +6,10 @@
 #ifndef CGAL_SURFACE_DESIGN_HARMONIC_QUAD_REMESHER_H
 #define CGAL_SURFACE_DESIGN_HARMONIC_QUAD_REMESHER_H
 
+// (the refined mesh of the spectacles is a Surface_mesh: its graph functions come first)
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
 #include <CGAL/Surface_design/exceptions.h>
 #include <CGAL/Surface_design/internal/Core/intrinsic_delaunay.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
@@ -13,6 +17,7 @@
 #include <CGAL/Surface_design/internal/Core/validation.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/harmonic_function.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/quad_net.h>
+#include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/spectacles.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/trace_mesh.h>
 #include <CGAL/Surface_design/parameters.h>
 #include <CGAL/Surface_design/solver_traits.h>
@@ -84,8 +89,14 @@ struct Harmonic_quad_remeshing_report
   std::size_t started_lines = 0;   ///< lines started in gaps wider than h sqrt 2 (or on first isolines)
   std::size_t merged_lines = 0;    ///< lines ended because they met another one
   std::size_t saddle_levels = 0;   ///< isolines added between two saddles of one band
+  std::size_t saddles = 0;         ///< saddle vertices of the harmonic function
+  std::size_t spectacles = 0;      ///< saddles given spectacles
+  std::size_t spectacles_lines = 0; ///< lines from bridges and junctions
+  /// saddles left without spectacles (input vertex index, reason), with `spectacles(true)`
+  std::vector<std::pair<std::size_t, std::string>> skipped_saddles;
   std::size_t vertices = 0, faces = 0; ///< of the output
   double harmonic_seconds = 0.;    ///< Laplacian, factorization, solve (when they were done)
+  double spectacles_seconds = 0.;  ///< spectacles: curves, insertion into the mesh, re-solve
   double curves_seconds = 0.;      ///< isolines and gradient lines
   double meshing_seconds = 0.;     ///< faces of the net and the output mesh
 };
@@ -284,6 +295,15 @@ public:
   ///   sqrt(area / 3000), i.e. about 3000 faces
   /// - `quad_poles` (bool, default true): fans of quads at the extrema (every other line ends
   ///   there); false: fans of triangles
+  /// - `spectacles` (bool, default true): Nagano & Imai's spectacles around every
+  ///   simple interior saddle (two gradient lines from the saddle down, or up, to the next level
+  ///   of the net and the isolines where they end), inserted into a copy of the mesh, held at one
+  ///   value while the function is re-solved, and built into the net as one isoline graph (lines
+  ///   leave the bridge on both sides and each junction along the bisectors of its two corners).
+  ///   Saddles whose spectacles cannot be built (on the boundary, of multiplicity > 1, both
+  ///   wedges reaching one isoline, crossing other spectacles) are listed in
+  ///   `skipped_saddles` with the reason; when the net with spectacles is not a valid polygon
+  ///   mesh, the net is built without them and all are listed there.
   /// - `vertex_point_map`: of `out`
   /// \throws Invalid_parameter `target_edge_length` is not finite and positive, or so small that
   ///         the net would exceed 10 million vertices
@@ -309,13 +329,47 @@ public:
     solve();
     report.harmonic_seconds = m_setup_seconds + m_solve_seconds;
 
-    auto start = Clock::now();
-    internal::harmonic_quad::Net_options options;
+    namespace hq = internal::harmonic_quad;
+    hq::Net_options options;
     options.edge_length = h;
     options.quad_poles = choose_parameter(get_parameter(np, internal_np::quad_poles), true);
-    internal::harmonic_quad::Quad_net_builder builder(m_mesh, m_u, options);
-    internal::harmonic_quad::Polygon_soup soup = builder.build();
-    const auto& s = builder.statistics();
+    const auto critical = hq::critical_points(m_mesh, m_u).first;
+    for(const auto& c : critical)
+      report.saddles += c.kind == hq::Critical_kind::saddle;
+    // with spectacles: the net of the re-solved function on the mesh refined along them
+    hq::Trace_mesh refined;
+    std::vector<double> refined_u;
+    const hq::Trace_mesh* mesh = &m_mesh;
+    const std::vector<double>* u = &m_u;
+    if(choose_parameter(get_parameter(np, internal_np::spectacles), true) && report.saddles > 0)
+    {
+      const auto start = Clock::now();
+      options.levels = hq::Quad_net_builder(m_mesh, m_u, options).regular_levels();
+      if(insert_spectacles(critical, options, refined, refined_u, report))
+      {
+        mesh = &refined;
+        u = &refined_u;
+      }
+      else
+        options.levels.clear();
+      report.spectacles_seconds = seconds_since(start);
+    }
+
+    auto start = Clock::now();
+    auto builder = std::make_unique<hq::Quad_net_builder>(*mesh, *u, options);
+    internal::harmonic_quad::Polygon_soup soup = builder->build();
+    if(!options.spectacles.empty() && !CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup.faces))
+    {
+      // the spectacles did not fit into the net (a case the method leaves open): without them
+      for(const auto& sp : m_last_spectacles_saddles)
+        report.skipped_saddles.emplace_back(sp, "the net around its spectacles is not a valid polygon mesh");
+      report.spectacles = 0;
+      options.spectacles.clear();
+      options.levels.clear();
+      builder = std::make_unique<hq::Quad_net_builder>(m_mesh, m_u, options);
+      soup = builder->build();
+    }
+    const auto& s = builder->statistics();
     report.levels = s.levels;
     report.isolines = s.isolines;
     report.gradient_lines = s.gradient_lines;
@@ -323,6 +377,7 @@ public:
     report.started_lines = s.started_lines;
     report.merged_lines = s.merged_lines;
     report.saddle_levels = s.saddle_levels;
+    report.spectacles_lines = s.spectacles_lines;
     report.curves_seconds = seconds_since(start);
 
     start = Clock::now();
@@ -345,6 +400,136 @@ public:
 
 private:
   using Solver = internal::harmonic_quad::Harmonic_solver<SolverTraits>;
+
+  // Nagano & Imai: the spectacles of the saddles (planned on the function and the levels of
+  // the net), inserted into a copy of the mesh; the function re-solved there with every
+  // spectacles vertex held at its value. False (every saddle reported as skipped) when no
+  // spectacles remain.
+  bool insert_spectacles(const std::vector<internal::harmonic_quad::Critical_point>& critical,
+                         internal::harmonic_quad::Net_options& options, internal::harmonic_quad::Trace_mesh& refined,
+                         std::vector<double>& refined_u, Harmonic_quad_remeshing_report& report)
+  {
+    namespace hq = internal::harmonic_quad;
+    using internal::npos;
+    hq::Spectacles_planner planner(m_mesh, m_u, options.levels, options.edge_length);
+    planner.plan(critical);
+    for(const auto& s : planner.skipped())
+      report.skipped_saddles.emplace_back(s.vertex, s.reason);
+    std::vector<hq::Spectacles_plan> plans = planner.plans();
+    auto skip_all = [&](const std::string& why) {
+      for(const auto& p : plans)
+        report.skipped_saddles.emplace_back(p.saddle, why);
+      return false;
+    };
+    hq::Refined_mesh r;
+    std::vector<hq::Net_spectacles> net;
+    for(;;)
+    {
+      if(plans.empty())
+        return false;
+      hq::Polyline_inserter inserter(m_mesh);
+      std::vector<std::array<std::size_t, 2>> junction;
+      for(const auto& p : plans)
+      {
+        inserter.add(p.frame[0], true);
+        inserter.add(p.frame[1], true);
+        inserter.add(p.bridge, false);
+        junction.push_back({inserter.add({p.frame[0][p.junction[0]]}, false).front(),
+                            inserter.add({p.frame[1][p.junction[1]]}, false).front()});
+      }
+      std::string error;
+      if(!inserter.build(r, error))
+        return skip_all(error);
+      // every curve must stay apart from the others after snapping, but at the junctions
+      net.clear();
+      std::vector<std::size_t> owner(r.points.size(), npos);
+      for(const auto& [v, value] : m_constraints)
+        owner[v] = plans.size();
+      std::size_t bad = npos;
+      for(std::size_t k = 0; k < plans.size() && bad == npos; ++k)
+      {
+        hq::Net_spectacles sp;
+        sp.value = plans[k].value;
+        sp.sigma = plans[k].sigma;
+        sp.frame = {{r.chains[5 * k], r.chains[5 * k + 1]}};
+        sp.bridge = r.chains[5 * k + 2];
+        sp.junction = junction[k];
+        bool ok = sp.frame[0].size() >= 3 && sp.frame[1].size() >= 3 && sp.bridge.size() >= 2 &&
+                  sp.bridge.front() == sp.junction[0] && sp.bridge.back() == sp.junction[1] &&
+                  sp.junction[0] != sp.junction[1];
+        std::vector<std::size_t> all(sp.frame[0]);
+        all.insert(all.end(), sp.frame[1].begin(), sp.frame[1].end());
+        all.insert(all.end(), sp.bridge.begin() + 1, sp.bridge.end() - 1);
+        std::vector<std::size_t> sorted(all);
+        std::sort(sorted.begin(), sorted.end());
+        ok = ok && std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+        for(int j = 0; j < 2; ++j)
+          ok = ok && std::find(sp.frame[std::size_t(j)].begin(), sp.frame[std::size_t(j)].end(),
+                               sp.junction[std::size_t(j)]) != sp.frame[std::size_t(j)].end();
+        for(std::size_t v : all)
+        {
+          ok = ok && owner[v] == npos;
+          owner[v] = k;
+        }
+        if(!ok)
+          bad = k;
+        else
+          net.push_back(std::move(sp));
+      }
+      if(bad == npos)
+        break;
+      report.skipped_saddles.emplace_back(plans[bad].saddle,
+                                          "its curves touch other curves or a constrained vertex once inserted into the mesh");
+      plans.erase(plans.begin() + std::ptrdiff_t(bad));
+    }
+    // the refined mesh, its Laplacian and the function held at the spectacles
+    using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+    using Mesh = CGAL::Surface_mesh<Point>;
+    Mesh sm;
+    for(const auto& p : r.points)
+      sm.add_vertex(Point(p.x(), p.y(), p.z()));
+    for(const auto& t : r.triangles)
+      if(sm.add_face(typename Mesh::Vertex_index(std::uint32_t(t[0])), typename Mesh::Vertex_index(std::uint32_t(t[1])),
+                     typename Mesh::Vertex_index(std::uint32_t(t[2]))) == Mesh::null_face())
+        return skip_all("inserting the spectacles into the mesh made it non-manifold");
+    internal::Mesh_indices<Mesh> idx(sm);
+    const auto vpm = get(CGAL::vertex_point, sm);
+    try
+    {
+      internal::validate_mesh(idx, vpm);
+    }
+    catch(const Invalid_mesh& e)
+    {
+      return skip_all(std::string("inserting the spectacles into the mesh made it invalid: ") + e.what());
+    }
+    refined = hq::make_trace_mesh(idx, vpm);
+    internal::Intrinsic_triangulation intrinsic(idx, vpm);
+    if(m_weights_kind == Harmonic_weights::intrinsic_delaunay)
+      intrinsic.make_delaunay();
+    Solver solver(refined.number_of_vertices(), intrinsic.cotangent_weights(), SolverTraits());
+    std::vector<char> constrained(refined.number_of_vertices(), 0);
+    refined_u.assign(refined.number_of_vertices(), 0.);
+    for(const auto& [v, value] : m_constraints)
+    {
+      constrained[v] = 1;
+      refined_u[v] = value;
+    }
+    for(const auto& sp : net)
+      for(const auto* chain : {&sp.frame[0], &sp.frame[1], &sp.bridge})
+        for(std::size_t v : *chain)
+        {
+          constrained[v] = 1;
+          refined_u[v] = sp.value;
+        }
+    solver.factor(constrained);
+    solver.solve(refined_u);
+    options.spectacles = std::move(net);
+    report.spectacles = options.spectacles.size();
+    m_last_spectacles_saddles.clear();
+    for(const auto& p : plans)
+      m_last_spectacles_saddles.push_back(p.saddle);
+    return true;
+  }
 
   static double seconds_since(Clock::time_point t)
   {
@@ -379,6 +564,7 @@ private:
   std::vector<char> m_constrained;
   std::vector<double> m_u;
   bool m_solved = false;
+  std::vector<std::size_t> m_last_spectacles_saddles; // the saddles of the last spectacles inserted
   double m_setup_seconds = 0., m_solve_seconds = 0.;
 };
 

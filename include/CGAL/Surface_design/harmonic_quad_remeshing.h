@@ -21,7 +21,7 @@ namespace Surface_design {
 /// \param np optional named parameters: those of the `Harmonic_quad_remesher` constructor
 ///        (`vertex_point_map`, `sparse_linear_solver`, `harmonic_weights`,
 ///        `harmonic_constraints`, `protrusion_maxima`, index maps) and of its `remesh()`
-///        (`target_edge_length`, `quad_poles`); `out`'s point map is its internal one
+///        (`target_edge_length`, `quad_poles`, `spectacles`); `out`'s point map is its internal one
 /// \returns the report of `remesh()`; `report.harmonic_seconds` includes building the Laplacian
 /// \throws Invalid_mesh, Invalid_constraints, Invalid_parameter, Linear_solver_failure; `out` is
 ///         not modified then
@@ -34,11 +34,14 @@ Harmonic_quad_remeshing_report harmonic_quad_remeshing(const TriangleMesh& tm, P
   Harmonic_quad_remesher<TriangleMesh, VPM, Traits> remesher(tm, np);
   // the remaining parameters go to remesh() without the input's point map
   const bool poles = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::quad_poles), true);
+  const bool spectacles =
+    CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::spectacles), true);
   const auto h = CGAL::parameters::get_parameter(np, internal_np::target_edge_length);
   if constexpr(std::is_same<std::decay_t<decltype(h)>, CGAL::internal_np::Param_not_found>::value)
-    return remesher.remesh(out, parameters::quad_poles(poles));
+    return remesher.remesh(out, parameters::quad_poles(poles, parameters::spectacles(spectacles)));
   else
-    return remesher.remesh(out, parameters::target_edge_length(double(h), parameters::quad_poles(poles)));
+    return remesher.remesh(out, parameters::target_edge_length(
+                                  double(h), parameters::quad_poles(poles, parameters::spectacles(spectacles))));
 }
 
 } // namespace Surface_design

@@ -55,6 +55,7 @@ enum protrusion_maxima_t { protrusion_maxima };
 enum target_edge_length_t { target_edge_length };
 enum quad_poles_t { quad_poles };
 enum hausdorff_error_bound_t { hausdorff_error_bound };
+enum spectacles_t { spectacles };
 } // namespace internal_np
 
 /// \ingroup PkgSurfaceDesignRef
@@ -123,6 +124,7 @@ CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(protrusion_maxima)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(target_edge_length)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(quad_poles)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(hausdorff_error_bound)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(spectacles)
 
 #undef CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER
 
