@@ -17,11 +17,12 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace benchmark {
 
 template <class SolverTraits>
-void run_harmonic_quad(const Mesh& mesh, Run& run, CGAL::Surface_design::Harmonic_weights weights)
+void run_harmonic_quad(const Mesh& mesh, Run& run, CGAL::Surface_design::Harmonic_weights weights, bool spectacles)
 {
   namespace SD = CGAL::Surface_design;
   SolverTraits traits;
@@ -32,10 +33,11 @@ void run_harmonic_quad(const Mesh& mesh, Run& run, CGAL::Surface_design::Harmoni
     remesher->harmonic_function();
   });
   Mesh out;
-  const SD::Harmonic_quad_remeshing_report r = remesher->remesh(out);
+  const SD::Harmonic_quad_remeshing_report r = remesher->remesh(out, SD::parameters::spectacles(spectacles));
+  run.record("re-solve", 1e3 * r.spectacles_seconds); // the seed's 再計算: spectacles, insertion, re-solve
   run.record("curves", 1e3 * r.curves_seconds);
   run.record("meshing", 1e3 * r.meshing_seconds);
-  run.sum_phase("full", {"harmonic", "curves", "meshing"});
+  run.sum_phase("full", {"harmonic", "re-solve", "curves", "meshing"});
   if(run.checks_enabled())
   {
     const SD::Quad_mesh_quality q = SD::quad_mesh_quality(out, mesh);
@@ -51,6 +53,12 @@ void run_harmonic_quad(const Mesh& mesh, Run& run, CGAL::Surface_design::Harmoni
     run.check("invalid or other topology", q.valid && q.same_topology ? 0. : 1., 0.5);
     const SD::Harmonic_critical_points cp = remesher->critical_points();
     run.check("saddles (multiplicity)", double(cp.saddle_multiplicity()), 1e9);
+    run.check("saddles with spectacles", double(r.spectacles), 1e9);
+    std::vector<Mesh::Point> saddles;
+    for(const auto& [v, multiplicity] : cp.saddles)
+      saddles.push_back(mesh.point(Mesh::Vertex_index(Mesh::size_type(v))));
+    run.check("non-quads within 2h of the saddles",
+              double(SD::count_non_quads_near(out, saddles, 2. * r.target_edge_length)), 1e9);
     run.check("spurious extrema", double(cp.spurious_extrema), 0.5);
   }
 }
@@ -58,14 +66,22 @@ void run_harmonic_quad(const Mesh& mesh, Run& run, CGAL::Surface_design::Harmoni
 inline void harmonic_quad_workload(const Mesh& mesh, const std::string& solver, Run& run)
 {
   with_solver_traits(solver, [&](auto tag) {
-    run_harmonic_quad<typename decltype(tag)::type>(mesh, run, CGAL::Surface_design::Harmonic_weights::cotangent);
+    run_harmonic_quad<typename decltype(tag)::type>(mesh, run, CGAL::Surface_design::Harmonic_weights::cotangent, true);
+  });
+}
+
+inline void harmonic_quad_no_spectacles_workload(const Mesh& mesh, const std::string& solver, Run& run)
+{
+  with_solver_traits(solver, [&](auto tag) {
+    run_harmonic_quad<typename decltype(tag)::type>(mesh, run, CGAL::Surface_design::Harmonic_weights::cotangent, false);
   });
 }
 
 inline void harmonic_quad_delaunay_workload(const Mesh& mesh, const std::string& solver, Run& run)
 {
   with_solver_traits(solver, [&](auto tag) {
-    run_harmonic_quad<typename decltype(tag)::type>(mesh, run, CGAL::Surface_design::Harmonic_weights::intrinsic_delaunay);
+    run_harmonic_quad<typename decltype(tag)::type>(mesh, run, CGAL::Surface_design::Harmonic_weights::intrinsic_delaunay,
+                                                    true);
   });
 }
 
