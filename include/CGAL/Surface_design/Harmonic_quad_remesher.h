@@ -104,7 +104,7 @@ struct Harmonic_quad_remeshing_report
 /// \ingroup PkgHarmonicQuadRemeshingRef
 ///
 /// Quad-dominant remeshing of a triangle mesh by the net of isolines and gradient lines of a
-/// harmonic function (Dong, Kircher & Garland 2005), the method that Nagano & Imai improve.
+/// harmonic function (Dong, Kircher & Garland 2005), with Nagano & Imai's spectacles at saddles.
 ///
 /// **The function.** Given constraints u(c) = value at a few vertices C (at least one minimum
 /// and one maximum per connected component), u is the solution of L_FF u_F = -L_FC u_C, L the
@@ -123,8 +123,14 @@ struct Harmonic_quad_remeshing_report
 /// extra isoline separates them, so that every cell is a disk. The faces of the net are found
 /// from its rotation system (up, along, down, back at every crossing).
 ///
+/// **Spectacles** (Nagano & Imai, on by default): at every simple interior saddle, two gradient
+/// lines from the saddle to the next level of the net (the bridge) and the isolines where they end
+/// (the frames) are inserted into a copy of the mesh and held at one value while the function is
+/// solved again, so that the saddle's octagon-like cell gives way to one isoline graph with quads
+/// around it; saddles where this cannot be done are listed in the report with the reason.
+///
 /// The class factors the Laplacian once: new constraints on the same vertex set, or new edge
-/// lengths, reuse it.
+/// lengths, reuse it (with spectacles, the refined copy of the mesh is factored for each remesh).
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`, triangles only
 /// \tparam VertexPointMap a readable vertex -> `Point_3` property map
@@ -521,8 +527,15 @@ private:
           constrained[v] = 1;
           refined_u[v] = sp.value;
         }
-    solver.factor(constrained);
-    solver.solve(refined_u);
+    try
+    {
+      solver.factor(constrained);
+      solver.solve(refined_u);
+    }
+    catch(const Linear_solver_failure& e)
+    {
+      return skip_all(std::string("the function could not be solved again with the spectacles: ") + e.what());
+    }
     options.spectacles = std::move(net);
     report.spectacles = options.spectacles.size();
     m_last_spectacles_saddles.clear();

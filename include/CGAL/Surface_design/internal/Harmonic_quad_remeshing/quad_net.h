@@ -60,7 +60,7 @@ struct Polygon_soup
 {
   std::vector<Eigen::Vector3d> points;
   std::vector<std::vector<std::size_t>> faces;
-  std::vector<int> kind; ///< per point: 0 isoline x gradient line, 1 extremum (pole), 2 on the boundary
+  std::vector<int> kind; ///< per point: 0 isoline x gradient line, 1 extremum (pole), 2 on the boundary, 3 on a bridge
 };
 
 /// Builds the net of Dong et al.: isolines at levels spaced by h (adaptively: the next level is
@@ -497,7 +497,7 @@ private:
   struct Node
   {
     Eigen::Vector3d point;
-    int kind; // 0 crossing, 1 pole, 2 boundary point
+    int kind; // 0 crossing, 1 pole, 2 boundary point, 3 bridge node (spectacles)
     std::size_t curve = npos, vertex = npos, loop = npos;
     double loop_position = 0.;
     double s = 0.; // arc-length position on `curve`
