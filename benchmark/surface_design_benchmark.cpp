@@ -74,10 +74,12 @@ const std::vector<Workload>& workloads()
      "full = factor + flatten",
      &flatten_workload},
     {"quad_remesh",
-     "harmonic-function quad-dominant remeshing, default constraints, spectacles, ~3000 faces (as the CLI); phases "
-     "harmonic, re-solve, curves, meshing, full (Nagano & Imai's Table 2); checks: quality of the output",
+     "harmonic-function quad remeshing, default constraints, spectacles, quads only, ~3000 faces in the net (as the "
+     "CLI); phases harmonic, re-solve, curves, meshing (of which quads only), full (Nagano & Imai's Table 2); checks: "
+     "quality of the output",
      &harmonic_quad_workload},
-    {"quad_remesh_no_spectacles", "the same without spectacles (Dong et al.'s net alone)",
+    {"quad_remesh_net", "the same, the quad-dominant net as it is (no odd faces paired)", &harmonic_quad_net_workload},
+    {"quad_remesh_no_spectacles", "the net without spectacles (Dong et al.'s net alone)",
      &harmonic_quad_no_spectacles_workload},
     {"quad_remesh_delaunay", "the same on the intrinsic Delaunay Laplacian", &harmonic_quad_delaunay_workload},
     {"developable_flow_intrinsic",

@@ -41,6 +41,9 @@ const char* usage =
   "  --no-spectacles       no spectacles around the saddles (default: spectacles, Nagano & Imai: the\n"
   "                        function re-solved with a curve through each saddle held at one value;\n"
   "                        saddles where they do not fit are reported and left as they are)\n"
+  "  --quad-dominant       keep the net as it is: pentagons where lines end (T-junctions), triangles\n"
+  "                        (default: quads only; odd faces are paired by paths across the net whose\n"
+  "                        edges get a vertex, and every face is split into quads)\n"
   "  --solver ldlt|cholmod sparse solver (default ldlt)\n"
   "  --output OUT          the quad-dominant mesh (.off, .obj or .ply); required\n"
   "  --picture OUT.png     the new mesh's edges over the input; faces other than quads in orange\n"
@@ -51,7 +54,8 @@ struct Options
   std::string input, output, picture, up = "+Y", solver = "ldlt";
   std::vector<long> minima, maxima;
   double edge_length = 0.;
-  bool protrusions = true, intrinsic_delaunay = false, quad_poles = true, spectacles = true;
+  bool protrusions = true, intrinsic_delaunay = false, quad_poles = true, spectacles = true,
+       all_quads = true;
 };
 
 Options parse(int argc, char** argv)
@@ -78,6 +82,8 @@ Options parse(int argc, char** argv)
       o.quad_poles = false;
     else if(a == "--no-spectacles")
       o.spectacles = false;
+    else if(a == "--quad-dominant")
+      o.all_quads = false;
     else if(a == "--solver")
       o.solver = example::parse_choice(next(), a, {"ldlt", "cholmod"});
     else if(a == "--output")
@@ -211,8 +217,9 @@ int run(const Options& o, Traits traits)
   Mesh quads;
   const SD::Harmonic_quad_remeshing_report r =
     o.edge_length > 0.
-      ? remesher.remesh(quads, P::target_edge_length(o.edge_length, P::quad_poles(o.quad_poles, P::spectacles(o.spectacles))))
-      : remesher.remesh(quads, P::quad_poles(o.quad_poles, P::spectacles(o.spectacles)));
+      ? remesher.remesh(quads, P::target_edge_length(o.edge_length, P::quad_poles(o.quad_poles, P::spectacles(
+                                                                            o.spectacles, P::all_quads(o.all_quads)))))
+      : remesher.remesh(quads, P::quad_poles(o.quad_poles, P::spectacles(o.spectacles, P::all_quads(o.all_quads))));
   if(o.spectacles)
   {
     std::printf("spectacles: %zu of %zu saddles (%zu lines from bridges and junctions)\n", r.spectacles, r.saddles,
@@ -224,6 +231,9 @@ int run(const Options& o, Traits traits)
               "stopped, %zu met another)\n",
               r.target_edge_length, r.levels, r.isolines, r.saddle_levels, r.gradient_lines, r.started_lines,
               r.stopped_lines, r.merged_lines);
+  if(o.all_quads)
+    std::printf("quads only: %zu faces with an odd number of sides paired by %zu paths, %zu edges split\n",
+                r.odd_faces, r.odd_face_paths, r.split_edges);
   std::printf("times: harmonic %.3f s, spectacles (re-solve) %.3f s, curves %.3f s, meshing %.3f s\n",
               r.harmonic_seconds, r.spectacles_seconds, r.curves_seconds, r.meshing_seconds);
 

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The CGAL Surface Design authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Quad-dominant remeshing with the isolines and gradient lines of a harmonic function.
+// Quad remeshing with the isolines and gradient lines of a harmonic function.
 
 #ifndef CGAL_SURFACE_DESIGN_HARMONIC_QUAD_REMESHER_H
 #define CGAL_SURFACE_DESIGN_HARMONIC_QUAD_REMESHER_H
@@ -16,6 +16,7 @@
 #include <CGAL/Surface_design/internal/Core/named_parameters.h>
 #include <CGAL/Surface_design/internal/Core/validation.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/harmonic_function.h>
+#include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/odd_faces.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/quad_net.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/spectacles.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/trace_mesh.h>
@@ -94,17 +95,21 @@ struct Harmonic_quad_remeshing_report
   std::size_t spectacles_lines = 0; ///< lines from bridges and junctions
   /// saddles left without spectacles (input vertex index, reason), with `spectacles(true)`
   std::vector<std::pair<std::size_t, std::string>> skipped_saddles;
+  std::size_t odd_faces = 0;        ///< faces of the net with an odd number of sides
+  std::size_t odd_face_paths = 0;   ///< with `all_quads(true)`: paths that paired them (or led to the boundary)
+  std::size_t split_edges = 0;      ///< with `all_quads(true)`: edges of the net given a vertex
   std::size_t vertices = 0, faces = 0; ///< of the output
   double harmonic_seconds = 0.;    ///< Laplacian, factorization, solve (when they were done)
   double spectacles_seconds = 0.;  ///< spectacles: curves, insertion into the mesh, re-solve
   double curves_seconds = 0.;      ///< isolines and gradient lines
-  double meshing_seconds = 0.;     ///< faces of the net and the output mesh
+  double meshing_seconds = 0.;     ///< faces of the net, quads only (`all_quads`), the output mesh
+  double all_quads_seconds = 0.;   ///< of which quads only: pairing the odd faces, splitting
 };
 
 /// \ingroup PkgHarmonicQuadRemeshingRef
 ///
-/// Quad-dominant remeshing of a triangle mesh by the net of isolines and gradient lines of a
-/// harmonic function (Dong, Kircher & Garland 2005), with Nagano & Imai's spectacles at saddles.
+/// Quad remeshing of a triangle mesh by the net of isolines and gradient lines of a harmonic
+/// function (Dong, Kircher & Garland 2005), with Nagano & Imai's spectacles at saddles.
 ///
 /// **The function.** Given constraints u(c) = value at a few vertices C (at least one minimum
 /// and one maximum per connected component), u is the solution of L_FF u_F = -L_FC u_C, L the
@@ -128,6 +133,14 @@ struct Harmonic_quad_remeshing_report
 /// (the frames) are inserted into a copy of the mesh and held at one value while the function is
 /// solved again, so that the saddle's octagon-like cell gives way to one isoline graph with quads
 /// around it; saddles where this cannot be done are listed in the report with the reason.
+///
+/// **Quads only** (on by default). The net is quad-dominant: where a line stops on an isoline
+/// the cell beyond is a pentagon with a flat corner (a T-junction). Faces with an odd number of
+/// sides are paired by shortest paths across the net that run straight (a turn costs extra) and
+/// leave a pentagon opposite its flat corner, i.e. they continue the line that stopped until it
+/// meets another such cell (or the boundary); every edge crossed gets a vertex on the input
+/// surface, and every face, now with an even number of sides, is split into quads by diagonals or,
+/// where a path turns, by a centre vertex.
 ///
 /// The class factors the Laplacian once: new constraints on the same vertex set, or new edge
 /// lengths, reuse it (with spectacles, the refined copy of the mesh is factored for each remesh).
@@ -292,8 +305,9 @@ public:
     return out;
   }
 
-  /// Remeshes into `out` (the new vertices and faces are added to it): a quad-dominant polygon
-  /// mesh with the input's topology, consistently oriented like the input.
+  /// Remeshes into `out` (the new vertices and faces are added to it): a quad mesh (with
+  /// `all_quads(false)`: the quad-dominant net) with the input's topology, consistently oriented
+  /// like the input.
   ///
   /// \tparam PolygonMesh a model of `MutableFaceGraph` with an internal point property map
   /// \param np optional named parameters among:
@@ -310,6 +324,13 @@ public:
   ///   wedges reaching one isoline, crossing other spectacles) are listed in
   ///   `skipped_saddles` with the reason; when the net with spectacles is not a valid polygon
   ///   mesh, the net is built without them and all are listed there.
+  /// - `all_quads` (bool, default true): quads only. The net's faces with an odd number of
+  ///   sides (the pentagons where a line ends on an isoline, triangles) are paired by short,
+  ///   straight paths across the net (or led to the boundary); every edge a path crosses gets a
+  ///   vertex (on the input surface) and every face is split into quads by the diagonals that
+  ///   keep its corners closest to 90 degrees. A path continues the line that ended at a
+  ///   T-junction until it meets another one, so T-junctions become regular vertices. False: the
+  ///   quad-dominant net as it is.
   /// - `vertex_point_map`: of `out`
   /// \throws Invalid_parameter `target_edge_length` is not finite and positive, or so small that
   ///         the net would exceed 10 million vertices
@@ -390,6 +411,24 @@ public:
     if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup.faces))
       throw std::logic_error("CGAL::Surface_design::Harmonic_quad_remesher: the net of isolines and gradient "
                              "lines is not a valid polygon mesh (please report this with the input mesh)");
+    for(const auto& face : soup.faces)
+      report.odd_faces += face.size() % 2;
+    if(choose_parameter(get_parameter(np, internal_np::all_quads), true) && report.odd_faces > 0)
+    {
+      const auto quads_start = Clock::now();
+      const hq::Trace_mesh_projector project(*mesh);
+      hq::Polygon_soup quads = soup;
+      const hq::Odd_face_statistics pairing =
+        hq::Odd_face_pairing(quads, [&project](const Eigen::Vector3d& p) { return project(p); }).run();
+      // (kept only when valid: the pairing never breaks a valid mesh, this is a safety net)
+      if(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(quads.faces))
+      {
+        soup = std::move(quads);
+        report.odd_face_paths = pairing.paths + pairing.boundary_paths;
+        report.split_edges = pairing.split_edges;
+      }
+      report.all_quads_seconds = seconds_since(quads_start);
+    }
     using Out_vpm = typename CGAL::GetVertexPointMap<PolygonMesh, NamedParameters>::type;
     using Out_point = typename boost::property_traits<Out_vpm>::value_type;
     std::vector<Out_point> points;

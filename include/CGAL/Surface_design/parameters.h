@@ -56,6 +56,7 @@ enum target_edge_length_t { target_edge_length };
 enum quad_poles_t { quad_poles };
 enum hausdorff_error_bound_t { hausdorff_error_bound };
 enum spectacles_t { spectacles };
+enum all_quads_t { all_quads };
 } // namespace internal_np
 
 /// \ingroup PkgSurfaceDesignRef
@@ -125,6 +126,7 @@ CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(target_edge_length)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(quad_poles)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(hausdorff_error_bound)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(spectacles)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(all_quads)
 
 #undef CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER
 

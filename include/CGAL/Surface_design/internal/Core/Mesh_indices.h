@@ -28,6 +28,22 @@ namespace internal {
 /// "No element": an index that names nothing.
 constexpr std::size_t npos = (std::numeric_limits<std::size_t>::max)();
 
+namespace mesh_indices_detail {
+// Unqualified calls, found by argument-dependent lookup when instantiated: this header works
+// whether or not the graph's own header (Surface_mesh, Polyhedron_3) was included before it.
+template <class Edge, class Graph>
+auto halfedge_of_edge(Edge e, const Graph& g)
+{
+  return halfedge(e, g);
+}
+
+template <class Halfedge, class Graph>
+bool is_border_halfedge(Halfedge h, const Graph& g)
+{
+  return is_border(h, g);
+}
+} // namespace mesh_indices_detail
+
 /// Index maps for the four kinds of elements of a `FaceGraph`, plus the inverse maps
 /// (index -> descriptor).
 ///
@@ -102,7 +118,7 @@ public:
       if(i >= ne || seen[i])
         throw_not_bijective("edge", i, ne);
       seen[i] = true;
-      const halfedge_descriptor h = CGAL::halfedge(e, tm);
+      const halfedge_descriptor h = mesh_indices_detail::halfedge_of_edge(e, tm);
       m_edge_of_halfedge[index(h)] = m_edge_of_halfedge[index(opposite(h, tm))] = i;
       m_edges[i] = e;
       ++count;
@@ -123,7 +139,7 @@ public:
   /// Index of an element of the mesh. \pre the descriptor is an element of the mesh (see `find`).
   std::size_t index(vertex_descriptor v) const { return permuted(m_vertex_permutation, get(m_vim, v)); }
   std::size_t index(halfedge_descriptor h) const { return permuted(m_halfedge_permutation, get(m_him, h)); }
-  std::size_t index(edge_descriptor e) const { return m_edge_of_halfedge[index(CGAL::halfedge(e, *m_tm))]; }
+  std::size_t index(edge_descriptor e) const { return m_edge_of_halfedge[index(mesh_indices_detail::halfedge_of_edge(e, *m_tm))]; }
   std::size_t index(face_descriptor f) const { return permuted(m_face_permutation, get(m_fim, f)); }
 
   /// Index of `f` if it is a face of the mesh, else `npos` (e.g. a descriptor of another mesh or
@@ -150,7 +166,7 @@ public:
   /// The halfedge of edge `e` oriented like `e` (from the smaller to the larger vertex index).
   halfedge_descriptor oriented_halfedge(std::size_t e) const
   {
-    halfedge_descriptor h = CGAL::halfedge(m_edges[e], *m_tm);
+    halfedge_descriptor h = mesh_indices_detail::halfedge_of_edge(m_edges[e], *m_tm);
     return orientation_sign(h) > 0 ? h : opposite(h, *m_tm);
   }
 
@@ -163,7 +179,7 @@ public:
 
   bool is_border(halfedge_descriptor h) const
   {
-    return CGAL::is_border(h, *m_tm);
+    return mesh_indices_detail::is_border_halfedge(h, *m_tm);
   }
 
 private:
