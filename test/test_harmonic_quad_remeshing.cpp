@@ -10,10 +10,16 @@
 // - intrinsic Delaunay weights remove the spurious extrema of the cotangent weights (triceratops);
 // - isolines lie exactly on their level and run along n x grad u; gradient lines land on their
 //   isoline;
+// - odd faces: a line that stops on an isoline is continued through the next band into the next
+//   T-junction (eight unit squares, every corner 90 degrees, the flat corners now valence 4); a
+//   single pentagon is led to the boundary; two triangles are merged rather than split; even
+//   polygons split by the diagonal across, or by a centre where a path turns (45 degrees at worst
+//   where any diagonal leaves a flat corner), never repeating an edge;
 // - a cylinder with its rims as minimum and maximum becomes quads only; eight, kitten, fertility,
-//   a hemisphere and three components with boundaries become valid quad-dominant meshes of the
-//   same topology (>= 85% quads); so do a genus-3 mesh with 106 holes, 26 components and a mesh of
-//   slivers (>= 80% quads);
+//   a hemisphere and three components with boundaries become valid quad-dominant nets of the
+//   same topology (>= 85% quads) and, by default, valid meshes of quads only with at most a
+//   quarter of the net's T-junctions and at most 0.2 irregular vertices per face; so do a genus-3
+//   mesh with 106 holes, 26 components and a mesh of slivers (>= 80% quads);
 // - one factorization serves new values on the same constrained vertices and every remesh;
 // - bad input throws clear exceptions and leaves the meshes untouched.
 
@@ -334,8 +340,6 @@ void planar_soup_angles(const H::Polygon_soup& soup, std::vector<double>& angles
     }
 }
 
-const H::Odd_face_pairing::Project identity = [](const Eigen::Vector3d& p) { return p; };
-
 } // namespace
 
 TEST_CASE("Odd faces: a line that ends on an isoline is continued to the next T-junction", "[harmonic_quad][odd_faces]")
@@ -360,7 +364,7 @@ TEST_CASE("Odd faces: a line that ends on an isoline is continued to the next T-
                 {v[0][2], v[2][2], v[2][3], v[1][3], v[0][3]},
                 {v[0][3], v[1][3], v[1][4], v[0][4]},
                 {v[1][3], v[2][3], v[2][4], v[1][4]}};
-  const H::Odd_face_statistics s = H::Odd_face_pairing(soup, identity).run();
+  const H::Odd_face_statistics s = H::Odd_face_pairing(soup).run();
   CHECK(s.odd_faces == 2);
   CHECK(s.paths == 1); // straight up from one pentagon into the other, not to the boundary
   CHECK(s.boundary_paths == 0);
@@ -390,7 +394,7 @@ TEST_CASE("Odd faces: a single pentagon is led to the boundary; a triangle is me
   soup.points = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}, {0, 2, 0}, {2, 2, 0}};
   soup.kind.assign(soup.points.size(), 0);
   soup.faces = {{0, 1, 4, 3}, {1, 2, 5, 4}, {3, 4, 5, 7, 6}};
-  H::Odd_face_statistics s = H::Odd_face_pairing(soup, identity).run();
+  H::Odd_face_statistics s = H::Odd_face_pairing(soup).run();
   CHECK(s.odd_faces == 1);
   CHECK(s.boundary_paths == 1);
   CHECK(s.split_edges == 1);
@@ -409,7 +413,7 @@ TEST_CASE("Odd faces: a single pentagon is led to the boundary; a triangle is me
   tri.points = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}, {3, 1, 0}};
   tri.kind.assign(tri.points.size(), 0);
   tri.faces = {{0, 1, 5, 4}, {1, 2, 6}, {1, 6, 5}, {2, 3, 7, 6}};
-  s = H::Odd_face_pairing(tri, identity).run();
+  s = H::Odd_face_pairing(tri).run();
   CHECK(s.odd_faces == 2);
   CHECK(s.paths == 1);
   CHECK(s.merged_triangles == 1);
@@ -430,7 +434,7 @@ TEST_CASE("Even polygons split into quads: diagonals across, a centre where a pa
   soup.points = {{0, 0, 0}, {0.5, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0.5, 1, 0}, {0, 1, 0}, {1, 0.5, 0}};
   soup.kind.assign(soup.points.size(), 0);
   std::set<std::pair<std::size_t, std::size_t>> edges;
-  H::Even_polygon_splitter splitter(soup, identity, edges);
+  H::Even_polygon_splitter splitter(soup, edges);
   auto worst_corner = [&](const std::vector<std::array<std::size_t, 4>>& quads) {
     double worst = 0.;
     for(const auto& q : quads)
@@ -463,7 +467,7 @@ TEST_CASE("Even polygons split into quads: diagonals across, a centre where a pa
   // a diagonal that is an edge already is never taken: with all three taken, a centre
   std::set<std::pair<std::size_t, std::size_t>> taken{{1, 4}, {0, 3}, {2, 5}};
   H::Polygon_soup square = soup;
-  H::Even_polygon_splitter blocked(square, identity, taken);
+  H::Even_polygon_splitter blocked(square, taken);
   const auto other = blocked.split({0, 1, 2, 3, 4, 5});
   REQUIRE(other.size() == 3);
   for(const auto& q : other)

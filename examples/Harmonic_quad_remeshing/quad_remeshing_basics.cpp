@@ -30,7 +30,7 @@ int main(int argc, char** argv)
   const SD::Quad_mesh_quality q = SD::quad_mesh_quality(quads, kitten);
   std::printf("%zu faces, %.1f%% quads, Hausdorff %.2f%% of the diagonal, in %.3f s\n", q.faces,
               100. * q.quad_fraction, 100. * q.relative_hausdorff_distance,
-              r.harmonic_seconds + r.curves_seconds + r.meshing_seconds);
+              r.harmonic_seconds + r.spectacles_seconds + r.curves_seconds + r.meshing_seconds);
 
   // the class: a minimum and a maximum of our choice, on the intrinsic Delaunay Laplacian
   std::vector<std::pair<Mesh::Vertex_index, double>> extrema = {{Mesh::Vertex_index(0), 0.},

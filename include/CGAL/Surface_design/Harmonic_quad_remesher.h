@@ -416,10 +416,8 @@ public:
     if(choose_parameter(get_parameter(np, internal_np::all_quads), true) && report.odd_faces > 0)
     {
       const auto quads_start = Clock::now();
-      const hq::Trace_mesh_projector project(*mesh);
       hq::Polygon_soup quads = soup;
-      const hq::Odd_face_statistics pairing =
-        hq::Odd_face_pairing(quads, [&project](const Eigen::Vector3d& p) { return project(p); }).run();
+      const hq::Odd_face_statistics pairing = hq::Odd_face_pairing(quads).run();
       // (kept only when valid: the pairing never breaks a valid mesh, this is a safety net)
       if(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(quads.faces))
       {

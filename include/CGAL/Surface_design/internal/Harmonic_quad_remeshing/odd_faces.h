@@ -12,12 +12,8 @@
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/quad_net.h>
 
-#include <CGAL/AABB_traits.h>
 #include <CGAL/assertions.h>
 #include <CGAL/use.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -50,35 +46,6 @@ struct Odd_face_statistics
   std::size_t unpaired = 0;       ///< odd faces left (none on a valid mesh, but for unreachable ones)
 };
 
-/// Closest points on the triangles of a trace mesh (an AABB tree).
-class Trace_mesh_projector
-{
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using Triangles = std::vector<K::Triangle_3>;
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>>>;
-
-public:
-  explicit Trace_mesh_projector(const Trace_mesh& mesh)
-  {
-    auto point = [&](std::size_t v) { return K::Point_3(mesh.point[v].x(), mesh.point[v].y(), mesh.point[v].z()); };
-    m_triangles.reserve(mesh.number_of_faces());
-    for(const auto& t : mesh.tri)
-      m_triangles.emplace_back(point(t[0]), point(t[1]), point(t[2]));
-    m_tree.rebuild(m_triangles.begin(), m_triangles.end());
-    m_tree.accelerate_distance_queries();
-  }
-
-  Eigen::Vector3d operator()(const Eigen::Vector3d& p) const
-  {
-    const K::Point_3 q = m_tree.closest_point(K::Point_3(p.x(), p.y(), p.z()));
-    return {q.x(), q.y(), q.z()};
-  }
-
-private:
-  Triangles m_triangles;
-  Tree m_tree;
-};
-
 /// Interior angle in [0, 2 pi) at corner b of a polygon ... a, b, c ... counter-clockwise about n.
 inline double polygon_corner_angle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                                    const Eigen::Vector3d& n)
@@ -101,17 +68,15 @@ inline Eigen::Vector3d newell_normal(const std::vector<Eigen::Vector3d>& p)
 /// corner from 90 degrees (measured counter-clockwise about the polygon's normal, so that reflex
 /// corners count as such). Candidates: diagonals (every choice up to 12 sides, greedy beyond; a
 /// diagonal never duplicates an edge of `edges`, the mesh's edges, to which the chosen ones are
-/// added) and, up to 8 sides, a new vertex at the centre joined to every other corner. The centre
+/// added) and, up to 8 sides, a new vertex joined to every other corner, at their mean. The centre
 /// is taken only when it is better by `star_penalty` degrees, as it makes an irregular vertex in a
 /// hexagon; it is what turns a corner well: a quad with vertices added on two adjacent sides
 /// becomes three quads with corners of about 45 and 135 degrees instead of one flat corner.
 class Even_polygon_splitter
 {
 public:
-  using Project = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
-
-  Even_polygon_splitter(Polygon_soup& soup, const Project& project, std::set<std::pair<std::size_t, std::size_t>>& edges)
-    : m_soup(soup), m_points(soup.points), m_project(project), m_edges(edges)
+  Even_polygon_splitter(Polygon_soup& soup, std::set<std::pair<std::size_t, std::size_t>>& edges)
+    : m_soup(soup), m_points(soup.points), m_edges(edges)
   {}
 
   /// The quads of `polygon` (its own orientation), or nothing when no split avoids duplicate
@@ -158,7 +123,7 @@ public:
       }
       if(star.worst + star_penalty < r.worst)
       {
-        m_points[x] = m_project(star_centre);
+        m_points[x] = star_centre;
         m_soup.kind.push_back(0);
         return star.quads;
       }
@@ -242,7 +207,6 @@ private:
 
   Polygon_soup& m_soup;
   std::vector<Eigen::Vector3d>& m_points;
-  const Project& m_project;
   std::set<std::pair<std::size_t, std::size_t>>& m_edges;
   Eigen::Vector3d m_normal = Eigen::Vector3d::UnitZ();
 };
@@ -252,14 +216,14 @@ private:
 /// the boundary by a shortest dual path whose cost is one per crossed edge plus a penalty for
 /// turning (so that paths run straight across quads and leave a T-junction's pentagon opposite its
 /// flat corner, i.e. they continue the line that ended there). The crossed edges (each as often
-/// as paths cross it, mod 2) get a vertex, placed by `project` (the midpoint of the edge projected
-/// onto the input surface); then every face has an even number of sides and is split into quads.
+/// as paths cross it, mod 2) get a vertex at their middle, so that the surface of the polygon mesh
+/// does not change (projecting it onto the input changed the Hausdorff distance by less than 0.01%
+/// of the diagonal on eight, kitten, fertility and the camel head, for an AABB tree costing more than
+/// the rest of this step); then every face has an even number of sides and is split into quads.
 class Odd_face_pairing
 {
 public:
-  using Project = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
-
-  Odd_face_pairing(Polygon_soup& soup, Project project) : m_soup(soup), m_project(std::move(project)) {}
+  explicit Odd_face_pairing(Polygon_soup& soup) : m_soup(soup) {}
 
   Odd_face_statistics run()
   {
@@ -514,7 +478,7 @@ private:
       if(m_split[e])
       {
         new_vertex[e] = m_soup.points.size();
-        m_soup.points.push_back(m_project(m_mid[e]));
+        m_soup.points.push_back(m_mid[e]);
         m_soup.kind.push_back(m_edge_slots[e][1] == npos ? 2 : 0);
         ++stats.split_edges;
       }
@@ -535,7 +499,7 @@ private:
       }
       return polygon;
     };
-    Even_polygon_splitter splitter(m_soup, m_project, edges);
+    Even_polygon_splitter splitter(m_soup, edges);
     std::vector<std::vector<std::size_t>> faces;
     faces.reserve(m_faces + m_faces / 4);
     for(std::size_t f = 0; f < m_faces; ++f)
@@ -589,7 +553,6 @@ private:
   static constexpr double flat_corner_angle = 150. * pi / 180.; // corners flatter than this are T-junctions
 
   Polygon_soup& m_soup;
-  Project m_project;
   std::size_t m_faces = 0, m_slots = 0;
   std::vector<std::size_t> m_offset, m_slot_face, m_slot_edge, m_flat_corner;
   std::vector<std::array<std::size_t, 2>> m_edge_slots, m_edge_ends;
