@@ -38,6 +38,8 @@ configure_and_build() {
   local launcher=()
   if command -v ccache >/dev/null 2>&1; then
     launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+    # paths relative to the checkout, so that clones in other folders share the cache
+    export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$ROOT}" CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-true}"
   fi
   echo "== Configuring $dir"
   cmake -S "$ROOT" -B "$dir" "${launcher[@]}" "${cmake_args[@]}"

@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs the whole test suite.
 #   bash scripts/test.sh              Release build (warnings are errors), all tests
-#   bash scripts/test.sh --sanitize   the same tests under AddressSanitizer + UBSan (-O1, assertions on)
+#   bash scripts/test.sh --sanitize   the same tests under AddressSanitizer + UBSan (-O1, line tables
+#                                     only (-g1: enough for stack traces, faster to build), assertions on)
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 install_packages "${BUILD_PACKAGES[@]}"
 
 if [ "${1:-}" = "--sanitize" ]; then
   BUILD="$ROOT/build-sanitize"
-  configure_and_build "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g" \
+  configure_and_build "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1" \
     -DCGAL_SURFACE_DESIGN_SANITIZE=ON -DCGAL_SURFACE_DESIGN_WERROR=ON -DCGAL_SURFACE_DESIGN_REQUIRE_CHOLMOD=ON \
     -DCGAL_SURFACE_DESIGN_BUILD_EXAMPLES=OFF -DCGAL_SURFACE_DESIGN_BUILD_BENCHMARKS=OFF
   export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
