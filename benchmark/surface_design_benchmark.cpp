@@ -82,6 +82,8 @@ const std::vector<Workload>& workloads()
     {"quad_remesh_no_spectacles", "the net without spectacles (Dong et al.'s net alone)",
      &harmonic_quad_no_spectacles_workload},
     {"quad_remesh_delaunay", "the same on the intrinsic Delaunay Laplacian", &harmonic_quad_delaunay_workload},
+    {"quad_remesh_curvature", "quad_remesh with curvature-adapted spacing (curvature_adaptation 1)",
+     &harmonic_quad_curvature_workload},
     {"developable_flow_intrinsic",
      "make_piecewise_developable, intrinsic energy, 2 subdivisions; phases flow, metrics",
      &developable_flow_workload<CGAL::Surface_design::Developability_energy::intrinsic>, Solver_use::none, nullptr, true},

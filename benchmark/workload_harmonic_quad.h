@@ -23,7 +23,7 @@ namespace benchmark {
 
 template <class SolverTraits>
 void run_harmonic_quad(const Mesh& mesh, Run& run, CGAL::Surface_design::Harmonic_weights weights, bool spectacles,
-                       bool all_quads)
+                       bool all_quads, double curvature_adaptation = 0.)
 {
   namespace SD = CGAL::Surface_design;
   SolverTraits traits;
@@ -35,7 +35,9 @@ void run_harmonic_quad(const Mesh& mesh, Run& run, CGAL::Surface_design::Harmoni
   });
   Mesh out;
   const SD::Harmonic_quad_remeshing_report r =
-    remesher->remesh(out, SD::parameters::spectacles(spectacles, SD::parameters::all_quads(all_quads)));
+    remesher->remesh(out, SD::parameters::spectacles(
+                            spectacles, SD::parameters::all_quads(
+                                          all_quads, SD::parameters::curvature_adaptation(curvature_adaptation))));
   run.record("re-solve", 1e3 * r.spectacles_seconds); // the seed's 再計算: spectacles, insertion, re-solve
   run.record("curves", 1e3 * r.curves_seconds);
   run.record("meshing", 1e3 * r.meshing_seconds);
@@ -44,7 +46,7 @@ void run_harmonic_quad(const Mesh& mesh, Run& run, CGAL::Surface_design::Harmoni
   if(run.checks_enabled())
   {
     const SD::Quad_mesh_quality q = SD::quad_mesh_quality(out, mesh);
-    run.check("faces (thousands)", double(q.faces) / 1e3, 10.);
+    run.check("faces (thousands)", double(q.faces) / 1e3, curvature_adaptation > 0. ? 60. : 10.);
     run.check("non-quad fraction", 1. - q.quad_fraction, 0.15);
     run.check("non-quad area fraction", 1. - q.quad_area_fraction, 0.25);
     run.check("irregular vertices per face", double(q.irregular_vertices) / double(q.faces), 0.2);
@@ -88,6 +90,14 @@ inline void harmonic_quad_no_spectacles_workload(const Mesh& mesh, const std::st
   with_solver_traits(solver, [&](auto tag) {
     run_harmonic_quad<typename decltype(tag)::type>(mesh, run, CGAL::Surface_design::Harmonic_weights::cotangent, false,
                                                     false);
+  });
+}
+
+inline void harmonic_quad_curvature_workload(const Mesh& mesh, const std::string& solver, Run& run)
+{
+  with_solver_traits(solver, [&](auto tag) {
+    run_harmonic_quad<typename decltype(tag)::type>(mesh, run, CGAL::Surface_design::Harmonic_weights::cotangent, true,
+                                                    true, 1.);
   });
 }
 

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The CGAL Surface Design authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// quad_remesh: quad-dominant remeshing from the isolines and gradient lines of a harmonic
+// quad_remesh: quad remeshing from the isolines and gradient lines of a harmonic
 // function (Dong, Kircher & Garland 2005; Nagano & Imai). Run without arguments for the usage.
 
 #include "../common/example_support.h"
@@ -27,8 +27,8 @@ namespace {
 
 const char* usage =
   "usage: quad_remesh INPUT --output OUT.off [options]\n"
-  "  Remeshes a manifold triangle mesh into a quad-dominant polygon mesh: the net of the isolines\n"
-  "  and gradient lines of a harmonic function (Dong, Kircher & Garland 2005).\n"
+  "  Remeshes a manifold triangle mesh into a quad mesh: the net of the isolines and gradient\n"
+  "  lines of a harmonic function (Dong, Kircher & Garland 2005), its odd faces paired into quads.\n"
   "options:\n"
   "  --min V               vertex V is a minimum of the function (value 0); repeatable\n"
   "  --max V               vertex V is a maximum (value 1); repeatable. Without --min/--max:\n"
@@ -36,6 +36,9 @@ const char* usage =
   "                        component, and a maximum at every tip of the shape\n"
   "  --no-protrusions      default constraints without the maxima at the tips\n"
   "  --edge-length H       target edge length (default: sqrt(area / 3000), about 3000 faces)\n"
+  "  --curvature-adaptation A  spacing h / (1 + A h kappa), at least h / 4, kappa the curvature\n"
+  "                        across the input's edges: finer where the surface bends (default 0: uniform;\n"
+  "                        A in [0, 1000])\n"
   "  --intrinsic-delaunay  Laplacian of the intrinsic Delaunay triangulation (no spurious extrema)\n"
   "  --triangle-poles      fans of triangles around the extrema (default: fans of quads)\n"
   "  --no-spectacles       no spectacles around the saddles (default: spectacles, Nagano & Imai: the\n"
@@ -45,7 +48,7 @@ const char* usage =
   "                        (default: quads only; odd faces are paired by paths across the net whose\n"
   "                        edges get a vertex, and every face is split into quads)\n"
   "  --solver ldlt|cholmod sparse solver (default ldlt)\n"
-  "  --output OUT          the quad-dominant mesh (.off, .obj or .ply); required\n"
+  "  --output OUT          the quad mesh (.off, .obj or .ply); required\n"
   "  --picture OUT.png     the new mesh's edges over the input; faces other than quads in orange\n"
   "  --up +Y|+Z|...        up direction in the picture (default +Y)\n";
 
@@ -53,7 +56,7 @@ struct Options
 {
   std::string input, output, picture, up = "+Y", solver = "ldlt";
   std::vector<long> minima, maxima;
-  double edge_length = 0.;
+  double edge_length = 0., curvature_adaptation = 0.;
   bool protrusions = true, intrinsic_delaunay = false, quad_poles = true, spectacles = true,
        all_quads = true;
 };
@@ -76,6 +79,8 @@ Options parse(int argc, char** argv)
       o.protrusions = false;
     else if(a == "--edge-length")
       o.edge_length = example::parse_positive(next(), a);
+    else if(a == "--curvature-adaptation")
+      o.curvature_adaptation = example::parse_double(next(), a, 0., 1000.);
     else if(a == "--intrinsic-delaunay")
       o.intrinsic_delaunay = true;
     else if(a == "--triangle-poles")
@@ -215,11 +220,11 @@ int run(const Options& o, Traits traits)
     std::printf("  sum of the indices 1 - chi(lower link) = %ld = Euler characteristic\n", cp.index_sum);
 
   Mesh quads;
-  const SD::Harmonic_quad_remeshing_report r =
-    o.edge_length > 0.
-      ? remesher.remesh(quads, P::target_edge_length(o.edge_length, P::quad_poles(o.quad_poles, P::spectacles(
-                                                                            o.spectacles, P::all_quads(o.all_quads)))))
-      : remesher.remesh(quads, P::quad_poles(o.quad_poles, P::spectacles(o.spectacles, P::all_quads(o.all_quads))));
+  const auto options = P::quad_poles(
+    o.quad_poles, P::spectacles(o.spectacles, P::all_quads(o.all_quads, P::curvature_adaptation(o.curvature_adaptation))));
+  const SD::Harmonic_quad_remeshing_report r = o.edge_length > 0.
+                                                 ? remesher.remesh(quads, P::target_edge_length(o.edge_length, options))
+                                                 : remesher.remesh(quads, options);
   if(o.spectacles)
   {
     std::printf("spectacles: %zu of %zu saddles (%zu lines from bridges and junctions)\n", r.spectacles, r.saddles,

@@ -153,7 +153,8 @@ for args in "--min 0" "--max 5" "--min 0 --max 0" "--min -1 --max 5" "--min 0 --
             "--min 0 --max 5 --no-protrusions" "--edge-length 0" "--edge-length -1" "--edge-length nan" \
             "--edge-length 1e-9" "--edge-length 0.1 --edge-length 0.2" "--solver magic" "--up +Z" \
             "--output $O/q.stl" "--picture $O/q.jpg" "--bogus" "--triangle-poles --triangle-poles" "--no-spectacles --no-spectacles" \
-            "--no-spectacles 1" "--quad-dominant --quad-dominant" "--quad-dominant yes" "$E"; do
+            "--no-spectacles 1" "--quad-dominant --quad-dominant" "--quad-dominant yes" \
+            "--curvature-adaptation -1" "--curvature-adaptation nan" "--curvature-adaptation" "--curvature-adaptation 1e9" "$E"; do
   # shellcheck disable=SC2086
   refuse quad_remesh "$E" $args --output "$O/q.off"
 done
@@ -167,6 +168,7 @@ accept quad_remesh "$E" --min 0 --max 300 --edge-length 0.1 --intrinsic-delaunay
 accept quad_remesh "$DATA/hemisphere.off" --output "$O/ok.ply"
 accept quad_remesh "$DATA/torus.off" --no-spectacles --output "$O/ok_no_spectacles.off"
 accept quad_remesh "$DATA/torus.off" --quad-dominant --output "$O/ok_quad_dominant.off"
+accept quad_remesh "$DATA/torus.off" --curvature-adaptation 2 --output "$O/ok_curvature.off"
 
 echo "$checked runs checked, $failures failures"
 [ "$failures" -eq 0 ]

@@ -138,8 +138,8 @@ struct Harmonic_quad_remeshing_report
 /// the cell beyond is a pentagon with a flat corner (a T-junction). Faces with an odd number of
 /// sides are paired by shortest paths across the net that run straight (a turn costs extra) and
 /// leave a pentagon opposite its flat corner, i.e. they continue the line that stopped until it
-/// meets another such cell (or the boundary); every edge crossed gets a vertex on the input
-/// surface, and every face, now with an even number of sides, is split into quads by diagonals or,
+/// meets another such cell (or the boundary); every edge crossed gets a vertex at its middle, and
+/// every face, now with an even number of sides, is split into quads by diagonals or,
 /// where a path turns, by a centre vertex.
 ///
 /// The class factors the Laplacian once: new constraints on the same vertex set, or new edge
@@ -327,13 +327,17 @@ public:
   /// - `all_quads` (bool, default true): quads only. The net's faces with an odd number of
   ///   sides (the pentagons where a line ends on an isoline, triangles) are paired by short,
   ///   straight paths across the net (or led to the boundary); every edge a path crosses gets a
-  ///   vertex (on the input surface) and every face is split into quads by the diagonals that
+  ///   vertex at its middle and every face is split into quads by the diagonals that
   ///   keep its corners closest to 90 degrees. A path continues the line that ended at a
   ///   T-junction until it meets another one, so T-junctions become regular vertices. False: the
   ///   quad-dominant net as it is.
+  /// - `curvature_adaptation` (double >= 0, default 0): curvature-adapted spacing. The spacing
+  ///   of both families of curves becomes h / (1 + a h kappa), at least h / 4, with kappa the
+  ///   (smoothed) normal curvature across the input's edges: finer where the surface bends. 0:
+  ///   uniform spacing h.
   /// - `vertex_point_map`: of `out`
   /// \throws Invalid_parameter `target_edge_length` is not finite and positive, or so small that
-  ///         the net would exceed 10 million vertices
+  ///         the net would exceed 10 million vertices; `curvature_adaptation` negative or not finite
   /// \throws std::logic_error if the net is not a valid polygon mesh (a bug: please report it)
   template <class PolygonMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
   Harmonic_quad_remeshing_report remesh(PolygonMesh& out, const NamedParameters& np = CGAL::parameters::default_values())
@@ -352,6 +356,10 @@ public:
                                                       internal::to_text(area / (h * h)) +
                                                       " faces (the surface area is " + internal::to_text(area) +
                                                       "); at most 1e7");
+    const double adaptation = choose_parameter(get_parameter(np, internal_np::curvature_adaptation), 0.);
+    if(!std::isfinite(adaptation) || adaptation < 0.)
+      throw Invalid_parameter("curvature_adaptation",
+                              "must be finite and non-negative (got " + internal::to_text(adaptation) + ")");
     report.target_edge_length = h;
     solve();
     report.harmonic_seconds = m_setup_seconds + m_solve_seconds;
@@ -368,11 +376,12 @@ public:
     std::vector<double> refined_u;
     const hq::Trace_mesh* mesh = &m_mesh;
     const std::vector<double>* u = &m_u;
+    std::vector<std::size_t> spectacles_saddles; // the saddles given spectacles
     if(choose_parameter(get_parameter(np, internal_np::spectacles), true) && report.saddles > 0)
     {
       const auto start = Clock::now();
       options.levels = hq::Quad_net_builder(m_mesh, m_u, options).regular_levels();
-      if(insert_spectacles(critical, options, refined, refined_u, report))
+      if(insert_spectacles(critical, options, refined, refined_u, spectacles_saddles, report))
       {
         mesh = &refined;
         u = &refined_u;
@@ -383,16 +392,20 @@ public:
     }
 
     auto start = Clock::now();
+    if(adaptation > 0.)
+      options.spacing_scale = hq::curvature_spacing_scale(*mesh, h, adaptation);
     auto builder = std::make_unique<hq::Quad_net_builder>(*mesh, *u, options);
     internal::harmonic_quad::Polygon_soup soup = builder->build();
     if(!options.spectacles.empty() && !CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup.faces))
     {
       // the spectacles did not fit into the net (a case the method leaves open): without them
-      for(const auto& sp : m_last_spectacles_saddles)
+      for(std::size_t sp : spectacles_saddles)
         report.skipped_saddles.emplace_back(sp, "the net around its spectacles is not a valid polygon mesh");
       report.spectacles = 0;
       options.spectacles.clear();
       options.levels.clear();
+      if(adaptation > 0.)
+        options.spacing_scale = hq::curvature_spacing_scale(m_mesh, h, adaptation);
       builder = std::make_unique<hq::Quad_net_builder>(m_mesh, m_u, options);
       soup = builder->build();
     }
@@ -446,11 +459,12 @@ private:
 
   // Nagano & Imai: the spectacles of the saddles (planned on the function and the levels of
   // the net), inserted into a copy of the mesh; the function re-solved there with every
-  // spectacles vertex held at its value. False (every saddle reported as skipped) when no
-  // spectacles remain.
+  // spectacles vertex held at its value; `placed`: their saddles. False (every saddle reported as
+  // skipped) when no spectacles remain.
   bool insert_spectacles(const std::vector<internal::harmonic_quad::Critical_point>& critical,
                          internal::harmonic_quad::Net_options& options, internal::harmonic_quad::Trace_mesh& refined,
-                         std::vector<double>& refined_u, Harmonic_quad_remeshing_report& report)
+                         std::vector<double>& refined_u, std::vector<std::size_t>& placed,
+                         Harmonic_quad_remeshing_report& report)
   {
     namespace hq = internal::harmonic_quad;
     using internal::npos;
@@ -575,9 +589,9 @@ private:
     }
     options.spectacles = std::move(net);
     report.spectacles = options.spectacles.size();
-    m_last_spectacles_saddles.clear();
+    placed.clear();
     for(const auto& p : plans)
-      m_last_spectacles_saddles.push_back(p.saddle);
+      placed.push_back(p.saddle);
     return true;
   }
 
@@ -614,7 +628,6 @@ private:
   std::vector<char> m_constrained;
   std::vector<double> m_u;
   bool m_solved = false;
-  std::vector<std::size_t> m_last_spectacles_saddles; // the saddles of the last spectacles inserted
   double m_setup_seconds = 0., m_solve_seconds = 0.;
 };
 

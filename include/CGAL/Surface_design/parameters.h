@@ -57,6 +57,7 @@ enum quad_poles_t { quad_poles };
 enum hausdorff_error_bound_t { hausdorff_error_bound };
 enum spectacles_t { spectacles };
 enum all_quads_t { all_quads };
+enum curvature_adaptation_t { curvature_adaptation };
 } // namespace internal_np
 
 /// \ingroup PkgSurfaceDesignRef
@@ -127,6 +128,7 @@ CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(quad_poles)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(hausdorff_error_bound)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(spectacles)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(all_quads)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(curvature_adaptation)
 
 #undef CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER
 

@@ -44,6 +44,9 @@ struct Net_options
   double max_spacing = 1.4142;   ///< a gradient line starts in gaps wider than this * h
   bool quad_poles = true;        ///< every other line ends at an extremum: a fan of quads (else triangles)
   std::vector<double> levels;    ///< the levels (else chosen by `regular_levels()`); spectacles values among them
+  /// per face of the mesh: the local spacing is edge_length times this (empty: uniform; see
+  /// `curvature_spacing_scale()`)
+  std::vector<double> spacing_scale;
   std::vector<Net_spectacles> spectacles;
 };
 
@@ -54,6 +57,50 @@ struct Net_statistics
   std::size_t reordered_lines = 0, merged_lines = 0, refined_levels = 0, attached_loops = 0;
   std::size_t spectacles_lines = 0; ///< lines from bridges and junctions
 };
+
+/// A spacing scale per face for curvature-adapted spacing: h(f) = h / (1 + adaptation h kappa(f)),
+/// at least h / 4, with kappa the normal curvature across the face's edges (dihedral angle over
+/// the distance between the two face centroids, the largest of the three), smoothed by three
+/// area-weighted averages with the neighbours so that a noisy scan does not scatter it.
+inline std::vector<double> curvature_spacing_scale(const Trace_mesh& m, double h, double adaptation)
+{
+  const std::size_t nf = m.number_of_faces();
+  std::vector<Eigen::Vector3d> centroid(nf);
+  for(std::size_t f = 0; f < nf; ++f)
+    centroid[f] = (m.point[m.tri[f][0]] + m.point[m.tri[f][1]] + m.point[m.tri[f][2]]) / 3.;
+  std::vector<double> kappa(nf, 0.);
+  for(std::size_t f = 0; f < nf; ++f)
+    for(std::size_t i = 0; i < 3; ++i)
+    {
+      const std::size_t g = m.neighbour[f][i];
+      if(g == npos)
+        continue;
+      const double angle = std::atan2(m.normal[f].cross(m.normal[g]).norm(), m.normal[f].dot(m.normal[g]));
+      const double d = (centroid[f] - centroid[g]).norm();
+      if(d > 0.)
+        kappa[f] = (std::max)(kappa[f], angle / d);
+    }
+  for(int pass = 0; pass < 3; ++pass)
+  {
+    std::vector<double> next(nf);
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      double sum = m.area[f] * kappa[f], weight = m.area[f];
+      for(std::size_t g : m.neighbour[f])
+        if(g != npos)
+        {
+          sum += m.area[g] * kappa[g];
+          weight += m.area[g];
+        }
+      next[f] = weight > 0. ? sum / weight : kappa[f];
+    }
+    kappa.swap(next);
+  }
+  std::vector<double> scale(nf);
+  for(std::size_t f = 0; f < nf; ++f)
+    scale[f] = (std::max)(0.25, 1. / (1. + adaptation * h * kappa[f]));
+  return scale;
+}
 
 /// The output polygon mesh as a soup: vertex positions and counter-clockwise faces.
 struct Polygon_soup
@@ -380,9 +427,18 @@ private:
       // that the slow part of a band (around a saddle, on a protrusion) sets it
       const double slow = weighted_quantile(g, 0.1);
       const double width = slow > 0. ? (b - a) / slow : 0.;
-      if(!(width > 1.6 * h))
+      // the spacing where it is finest (the 10% quantile of the scale, by area)
+      double here = h;
+      if(!m_opt.spacing_scale.empty())
+      {
+        std::vector<std::pair<double, double>> scale;
+        for(std::size_t f : faces)
+          scale.emplace_back(m_opt.spacing_scale[f], m_m.area[f]);
+        here = h * weighted_quantile(scale, 0.1);
+      }
+      if(!(width > 1.6 * here))
         continue;
-      const std::size_t parts = (std::min<std::size_t>)(std::size_t(std::lround(width / h)), 64);
+      const std::size_t parts = (std::min<std::size_t>)(std::size_t(std::lround(width / here)), 64);
       std::vector<char> inside(m_m.number_of_faces(), 0);
       for(std::size_t f : faces)
         inside[f] = 1;
@@ -640,16 +696,33 @@ private:
   {
     const Isoline& iso = m_iso[c];
     auto& cr = m_crossings[c];
-    const double h = m_opt.edge_length, L = iso.length();
+    const double L = iso.length();
     if(cr.empty())
     {
       // a first isoline (around a minimum or above a boundary): evenly spaced lines, traced both
       // ways; an even number on a loop, so that the fan at the pole below becomes quads
-      std::size_t n = std::size_t(std::lround(L / h));
+      // (at equal steps of the number of cells, the integral of ds / local h, when the spacing varies)
+      std::vector<double> cells(iso.segments() + 1, 0.);
+      for(std::size_t j = 0; j < iso.segments(); ++j)
+        cells[j + 1] = cells[j] + (iso.arc[j + 1] - iso.arc[j]) / local_h_on_segment(iso, j);
+      const double total = cells.back();
+      std::size_t n = std::size_t(std::lround(total));
       if(iso.closed)
         n = (std::max)(n + n % 2, std::size_t(4));
       for(std::size_t k = iso.closed ? 0 : 1; k < n; ++k)
-        add_crossing(c, double(k) * L / double(n));
+      {
+        if(!(total > 0.) || iso.segments() == 0)
+        {
+          add_crossing(c, double(k) * L / double(n));
+          continue;
+        }
+        const double target = double(k) * total / double(n);
+        std::size_t j = std::size_t(std::upper_bound(cells.begin(), cells.end(), target) - cells.begin());
+        j = j == 0 ? 0 : (std::min)(j - 1, iso.segments() - 1);
+        const double span = cells[j + 1] - cells[j];
+        const double t = span > 0. ? std::clamp((target - cells[j]) / span, 0., 1.) : 0.;
+        add_crossing(c, iso.arc[j] + t * (iso.arc[j + 1] - iso.arc[j]));
+      }
       m_trace_down.push_back(c);
       return;
     }
@@ -683,7 +756,7 @@ private:
       for(std::size_t j = 0; j < f.gaps(); ++j)
         if((movable(j) || movable((j + 1) % f.size())) && (k == npos || f.gap(j) < f.gap(k)))
           k = j;
-      if(k == npos || !(f.gap(k) < m_opt.min_spacing * h))
+      if(k == npos || !(f.gap(k) < m_opt.min_spacing * local_h_at(iso, f.pos[k] + 0.5 * f.gap(k))))
         break;
       const std::size_t left = k, right = (k + 1) % f.size();
       const std::size_t left_other = iso.closed ? (k + f.gaps() - 1) % f.gaps() : k - 1; // gap before `left`
@@ -702,10 +775,10 @@ private:
     const Fences f = fences(iso, cr);
     for(std::size_t k = 0; k < f.gaps(); ++k)
     {
-      const double g = f.gap(k);
-      if(!(g > m_opt.max_spacing * h))
+      const double g = f.gap(k), here = local_h_at(iso, f.pos[k] + 0.5 * g);
+      if(!(g > m_opt.max_spacing * here))
         continue;
-      const std::size_t parts = (std::max)(std::size_t(2), std::size_t(std::lround(g / h)));
+      const std::size_t parts = (std::max)(std::size_t(2), std::size_t(std::lround(g / here)));
       for(std::size_t j = 1; j < parts; ++j)
         add_crossing(c, f.pos[k] + double(j) * g / double(parts));
     }
@@ -1057,11 +1130,7 @@ private:
       const std::size_t next = frame[(at + 1) % frame.size()], prev = frame[(at + frame.size() - 1) % frame.size()];
       const std::size_t along = j == 0 ? sp.bridge[1] : sp.bridge[sp.bridge.size() - 2];
       const Eigen::Vector3d n = vertex_normal(v);
-      auto tangent = [&](std::size_t w) {
-        Eigen::Vector3d d = m_m.point[w] - m_m.point[v];
-        d -= d.dot(n) * n;
-        return Eigen::Vector3d(d.normalized());
-      };
+      auto tangent = [&](std::size_t w) { return tangent_of(m_m.point[w] - m_m.point[v], n); };
       const Eigen::Vector3d db = tangent(along), dn = tangent(next), dp = tangent(prev);
       for(int next_side = 1; next_side >= 0; --next_side)
       {
@@ -1095,6 +1164,19 @@ private:
         spectacles_line(junction_code[std::size_t(j)], key, best, start, m_m.barycentric(best, start).dot(Eigen::Vector3d(m_u[t[0]], m_u[t[1]], m_u[t[2]])), sp.sigma, walker);
       }
     }
+  }
+
+  // the spacing at arc length s of an isoline (on segment j for the second form)
+  double local_h_at(const Isoline& iso, double s) const
+  {
+    return m_opt.spacing_scale.empty() ? m_opt.edge_length : local_h_on_segment(iso, iso.at(s).second);
+  }
+
+  double local_h_on_segment(const Isoline& iso, std::size_t j) const
+  {
+    if(m_opt.spacing_scale.empty() || j >= iso.faces.size() || iso.faces[j] >= m_opt.spacing_scale.size())
+      return m_opt.edge_length;
+    return m_opt.edge_length * m_opt.spacing_scale[iso.faces[j]];
   }
 
   static Eigen::Vector3d tangent_of(const Eigen::Vector3d& d, const Eigen::Vector3d& n)
