@@ -95,6 +95,7 @@
 
 #include <CGAL/Surface_design/developability_energy.h>
 #include <CGAL/Surface_design/internal/Core/angles.h>
+#include <CGAL/Surface_design/internal/Core/parallel.h>
 #include <CGAL/Surface_design/internal/Developability/vertex_stars.h>
 
 #include <CGAL/assertions.h>
@@ -104,11 +105,6 @@
 #include <Eigen/Geometry>
 
 #include <boost/container/small_vector.hpp>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#endif
 
 #include <algorithm>
 #include <array>
@@ -780,27 +776,6 @@ inline double star_energy(Developability_energy e, const Eigen::Vector3d& center
   if(s && !s->zero_gradient)
     pull_back(g, *s, gradient);
   return energy;
-}
-
-/// Runs `f(i)` for i in [0, n), with tbb::parallel_for when `parallel` and TBB is linked.
-/// `f` must only write to data owned by index i.
-template <class Function>
-void for_each_index(std::size_t n, bool parallel, const Function& f)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  if(parallel)
-  {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&f](const tbb::blocked_range<std::size_t>& r) {
-      for(std::size_t i = r.begin(); i != r.end(); ++i)
-        f(i);
-    });
-    return;
-  }
-#else
-  (void)parallel;
-#endif
-  for(std::size_t i = 0; i < n; ++i)
-    f(i);
 }
 
 /// The star of vertex v, its ring positions gathered from `x`.
