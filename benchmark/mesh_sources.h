@@ -113,9 +113,10 @@ inline const std::vector<Preset>& presets()
      {"octahedron:8", "octahedron:50", "octahedron:100", "octahedron:144", "bundled:pebble_design.off"},
      {"flatten"}},
     {"harmonic_quad", "harmonic quad remeshing: the seed's eight and kitten (Table 2), genus 0 to 4 with and without "
-     "boundary, and input sizes up to 240k faces",
+     "boundary (a serrated one: mech-holes-shark), and input sizes up to 240k faces",
      {"bundled:eight.off", "bundled:kitten.off", "bundled:fertility.off", "bundled:hemisphere.off",
-      "bundled:camelhead.off", "bundled:blobby_3cc.off", "shared:bunny_60k.off", "shared:bunny_loop1_239k.off"},
+      "bundled:camelhead.off", "bundled:blobby_3cc.off", "bundled:mech-holes-shark.off", "shared:bunny_60k.off",
+      "shared:bunny_loop1_239k.off"},
      {"quad_remesh", "quad_remesh_net", "quad_remesh_no_spectacles", "quad_remesh_delaunay", "quad_remesh_curvature"}},
     {"embedding_sizes", "barycentric embedding scaling: octahedra of ~62k, 241k and 1M vertices",
      {"octahedron:50", "octahedron:100", "octahedron:204"},

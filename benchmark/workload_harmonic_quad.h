@@ -4,7 +4,7 @@
 // Workloads of the harmonic-function quad remeshing, as the CLI `quad_remesh` runs it (default
 // constraints, about 3000 faces in the net). Phases as in Nagano & Imai's Table 2: harmonic
 // (validation, Laplacian, factorization, solve), re-solve (spectacles), curves (isolines and
-// gradient lines), meshing (the faces of the net, quads only, the output mesh); full = harmonic +
+// gradient lines), meshing (the faces of the net, quads only, feature snapping, the output mesh); full = harmonic +
 // re-solve + curves + meshing. Checks (untimed): the quality of the output against the input.
 
 #ifndef CGAL_SURFACE_DESIGN_BENCHMARK_WORKLOAD_HARMONIC_QUAD_H
@@ -42,6 +42,7 @@ void run_harmonic_quad(const Mesh& mesh, Run& run, CGAL::Surface_design::Harmoni
   run.record("curves", 1e3 * r.curves_seconds);
   run.record("meshing", 1e3 * r.meshing_seconds);
   run.record("quads only", 1e3 * r.all_quads_seconds); // part of meshing
+  run.record("snapping", 1e3 * r.snapping_seconds);    // part of meshing
   run.sum_phase("full", {"harmonic", "re-solve", "curves", "meshing"});
   if(run.checks_enabled())
   {
@@ -66,6 +67,8 @@ void run_harmonic_quad(const Mesh& mesh, Run& run, CGAL::Surface_design::Harmoni
               double(SD::count_non_quads_near(out, saddles, 2. * r.target_edge_length)), 1e9);
     run.check("spurious extrema", double(cp.spurious_extrema), 0.5);
     run.check("odd faces of the net", double(r.odd_faces), 1e9);
+    run.check("boundary detail vertices", double(r.boundary_detail_vertices), 1e9);
+    run.check("snapped vertices", double(r.snapped_vertices), 1e9);
   }
 }
 

@@ -47,6 +47,9 @@ const char* usage =
   "  --quad-dominant       keep the net as it is: pentagons where lines end (T-junctions), triangles\n"
   "                        (default: quads only; odd faces are paired by paths across the net whose\n"
   "                        edges get a vertex, and every face is split into quads)\n"
+  "  --no-feature-snapping keep the net's positions (default: interior input vertices farther than\n"
+  "                        h / 4 from the result, a pit or a spike narrower than h, pull the nearest\n"
+  "                        vertex onto them)\n"
   "  --solver ldlt|cholmod sparse solver (default ldlt)\n"
   "  --output OUT          the quad mesh (.off, .obj or .ply); required\n"
   "  --picture OUT.png     the new mesh's edges over the input; faces other than quads in orange\n"
@@ -58,7 +61,7 @@ struct Options
   std::vector<long> minima, maxima;
   double edge_length = 0., curvature_adaptation = 0.;
   bool protrusions = true, intrinsic_delaunay = false, quad_poles = true, spectacles = true,
-       all_quads = true;
+       all_quads = true, feature_snapping = true;
 };
 
 Options parse(int argc, char** argv)
@@ -89,6 +92,8 @@ Options parse(int argc, char** argv)
       o.spectacles = false;
     else if(a == "--quad-dominant")
       o.all_quads = false;
+    else if(a == "--no-feature-snapping")
+      o.feature_snapping = false;
     else if(a == "--solver")
       o.solver = example::parse_choice(next(), a, {"ldlt", "cholmod"});
     else if(a == "--output")
@@ -221,7 +226,10 @@ int run(const Options& o, Traits traits)
 
   Mesh quads;
   const auto options = P::quad_poles(
-    o.quad_poles, P::spectacles(o.spectacles, P::all_quads(o.all_quads, P::curvature_adaptation(o.curvature_adaptation))));
+    o.quad_poles,
+    P::spectacles(o.spectacles,
+                  P::all_quads(o.all_quads, P::curvature_adaptation(o.curvature_adaptation,
+                                                                    P::feature_snapping(o.feature_snapping)))));
   const SD::Harmonic_quad_remeshing_report r = o.edge_length > 0.
                                                  ? remesher.remesh(quads, P::target_edge_length(o.edge_length, options))
                                                  : remesher.remesh(quads, options);
@@ -233,14 +241,20 @@ int run(const Options& o, Traits traits)
       std::printf("  saddle at vertex %zu skipped: %s\n", v, why.c_str());
   }
   std::printf("net (h = %.4g): %zu levels, %zu isolines (%zu between saddles), %zu gradient lines (%zu started, %zu "
-              "stopped, %zu met another)\n",
+              "stopped, %zu met another), %zu vertices on boundary detail\n",
               r.target_edge_length, r.levels, r.isolines, r.saddle_levels, r.gradient_lines, r.started_lines,
-              r.stopped_lines, r.merged_lines);
+              r.stopped_lines, r.merged_lines, r.boundary_detail_vertices);
   if(o.all_quads)
     std::printf("quads only: %zu faces with an odd number of sides paired by %zu paths, %zu edges split\n",
                 r.odd_faces, r.odd_face_paths, r.split_edges);
-  std::printf("times: harmonic %.3f s, spectacles (re-solve) %.3f s, curves %.3f s, meshing %.3f s\n",
-              r.harmonic_seconds, r.spectacles_seconds, r.curves_seconds, r.meshing_seconds);
+  if(o.feature_snapping)
+    std::printf("feature snapping: %zu of %zu input vertices farther than h / 4 from the result pulled a vertex "
+                "onto them (the farthest was %.3g away)\n",
+                r.snapped_vertices, r.far_input_vertices, r.largest_input_distance);
+  std::printf("times: harmonic %.3f s, spectacles (re-solve) %.3f s, curves %.3f s, meshing %.3f s (quads only %.3f s, "
+              "snapping %.3f s)\n",
+              r.harmonic_seconds, r.spectacles_seconds, r.curves_seconds, r.meshing_seconds, r.all_quads_seconds,
+              r.snapping_seconds);
 
   const SD::Quad_mesh_quality q = SD::quad_mesh_quality(quads, input);
   std::printf("output: %zu vertices, %zu faces: %zu triangles, %zu quads, %zu pentagons, %zu hexagons, %zu larger; "

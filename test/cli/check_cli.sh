@@ -154,6 +154,7 @@ for args in "--min 0" "--max 5" "--min 0 --max 0" "--min -1 --max 5" "--min 0 --
             "--edge-length 1e-9" "--edge-length 0.1 --edge-length 0.2" "--solver magic" "--up +Z" \
             "--output $O/q.stl" "--picture $O/q.jpg" "--bogus" "--triangle-poles --triangle-poles" "--no-spectacles --no-spectacles" \
             "--no-spectacles 1" "--quad-dominant --quad-dominant" "--quad-dominant yes" \
+            "--no-feature-snapping --no-feature-snapping" "--no-feature-snapping 1" \
             "--curvature-adaptation -1" "--curvature-adaptation nan" "--curvature-adaptation" "--curvature-adaptation 1e9" "$E"; do
   # shellcheck disable=SC2086
   refuse quad_remesh "$E" $args --output "$O/q.off"
@@ -169,6 +170,15 @@ accept quad_remesh "$DATA/hemisphere.off" --output "$O/ok.ply"
 accept quad_remesh "$DATA/torus.off" --no-spectacles --output "$O/ok_no_spectacles.off"
 accept quad_remesh "$DATA/torus.off" --quad-dominant --output "$O/ok_quad_dominant.off"
 accept quad_remesh "$DATA/torus.off" --curvature-adaptation 2 --output "$O/ok_curvature.off"
+accept quad_remesh "$DATA/torus.off" --no-feature-snapping --output "$O/ok_no_snapping.off"
+# item 7 of the remeshing issue on an open mesh with a serrated boundary loop and a narrow pit:
+# with no options, all quads and a Hausdorff distance of at most 1.5% of the diagonal
+accept quad_remesh "$DATA/mech-holes-shark.off" --output "$O/shark.off"
+if ! grep -q "100.0% quads" "$WORK/stdout" ||
+   ! awk '/Hausdorff distance/ { gsub("%", "", $3); exit !($3 <= 1.5) }' "$WORK/stdout"; then
+  echo "FAILED: quad_remesh mech-holes-shark.off: $(grep -E "quads|Hausdorff" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
 
 echo "$checked runs checked, $failures failures"
 [ "$failures" -eq 0 ]

@@ -18,6 +18,7 @@
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/harmonic_function.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/odd_faces.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/quad_net.h>
+#include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/snap.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/spectacles.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/trace_mesh.h>
 #include <CGAL/Surface_design/parameters.h>
@@ -93,17 +94,25 @@ struct Harmonic_quad_remeshing_report
   std::size_t saddles = 0;         ///< saddle vertices of the harmonic function
   std::size_t spectacles = 0;      ///< saddles given spectacles
   std::size_t spectacles_lines = 0; ///< lines from bridges and junctions
+  /// net vertices added at the input's boundary vertices where the boundary leaves the chord
+  /// between two net vertices by more than h / 4 (serrated or sharply bent boundaries)
+  std::size_t boundary_detail_vertices = 0;
   /// saddles left without spectacles (input vertex index, reason), with `spectacles(true)`
   std::vector<std::pair<std::size_t, std::string>> skipped_saddles;
   std::size_t odd_faces = 0;        ///< faces of the net with an odd number of sides
   std::size_t odd_face_paths = 0;   ///< with `all_quads(true)`: paths that paired them (or led to the boundary)
   std::size_t split_edges = 0;      ///< with `all_quads(true)`: edges of the net given a vertex
+  /// interior input vertices farther than h / 4 from the remeshed surface before feature snapping
+  std::size_t far_input_vertices = 0;
+  std::size_t snapped_vertices = 0; ///< with `feature_snapping(true)`: output vertices moved onto them
+  double largest_input_distance = 0.; ///< the largest of those distances, before snapping (0 without it)
   std::size_t vertices = 0, faces = 0; ///< of the output
   double harmonic_seconds = 0.;    ///< Laplacian, factorization, solve (when they were done)
   double spectacles_seconds = 0.;  ///< spectacles: curves, insertion into the mesh, re-solve
   double curves_seconds = 0.;      ///< isolines and gradient lines
   double meshing_seconds = 0.;     ///< faces of the net, quads only (`all_quads`), the output mesh
   double all_quads_seconds = 0.;   ///< of which quads only: pairing the odd faces, splitting
+  double snapping_seconds = 0.;    ///< of which feature snapping (distances through an AABB tree)
 };
 
 /// \ingroup PkgHarmonicQuadRemeshingRef
@@ -335,6 +344,14 @@ public:
   ///   of both families of curves becomes h / (1 + a h kappa), at least h / 4, with kappa the
   ///   (smoothed) normal curvature across the input's edges: finer where the surface bends. 0:
   ///   uniform spacing h.
+  /// - `feature_snapping` (bool, default true): the curves pass over features narrower than
+  ///   their spacing (a pit, a spike, the apex of a cone, a sharp crease). Interior input vertices
+  ///   farther than h / 4 from the result, farthest first, pull the nearest corner of the face
+  ///   closest to them onto them (a corner not on the boundary, at most 2h away, no face around it
+  ///   turned over or moved before). The boundary needs no snapping: where the input's boundary
+  ///   leaves the chord between two vertices of the net by more than h / 4 (a serrated or sharply
+  ///   bent boundary), its vertices become vertices of the net (an even number per edge, see
+  ///   `boundary_detail_vertices`).
   /// - `vertex_point_map`: of `out`
   /// \throws Invalid_parameter `target_edge_length` is not finite and positive, or so small that
   ///         the net would exceed 10 million vertices; `curvature_adaptation` negative or not finite
@@ -418,15 +435,20 @@ public:
     report.merged_lines = s.merged_lines;
     report.saddle_levels = s.saddle_levels;
     report.spectacles_lines = s.spectacles_lines;
+    report.boundary_detail_vertices = s.boundary_detail_nodes;
     report.curves_seconds = seconds_since(start);
 
     start = Clock::now();
     if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup.faces))
       throw std::logic_error("CGAL::Surface_design::Harmonic_quad_remesher: the net of isolines and gradient "
                              "lines is not a valid polygon mesh (please report this with the input mesh)");
+    bool only_quads = true;
     for(const auto& face : soup.faces)
+    {
       report.odd_faces += face.size() % 2;
-    if(choose_parameter(get_parameter(np, internal_np::all_quads), true) && report.odd_faces > 0)
+      only_quads = only_quads && face.size() == 4;
+    }
+    if(choose_parameter(get_parameter(np, internal_np::all_quads), true) && !only_quads)
     {
       const auto quads_start = Clock::now();
       hq::Polygon_soup quads = soup;
@@ -439,6 +461,15 @@ public:
         report.split_edges = pairing.split_edges;
       }
       report.all_quads_seconds = seconds_since(quads_start);
+    }
+    if(choose_parameter(get_parameter(np, internal_np::feature_snapping), true))
+    {
+      const auto snap_start = Clock::now();
+      const hq::Snap_statistics snap = hq::snap_to_far_vertices(soup, m_mesh, h / 4., 2. * h, true);
+      report.far_input_vertices = snap.far_vertices;
+      report.snapped_vertices = snap.snapped;
+      report.largest_input_distance = snap.largest_distance;
+      report.snapping_seconds = seconds_since(snap_start);
     }
     using Out_vpm = typename CGAL::GetVertexPointMap<PolygonMesh, NamedParameters>::type;
     using Out_point = typename boost::property_traits<Out_vpm>::value_type;

@@ -22,7 +22,8 @@ namespace Surface_design {
 /// \param np optional named parameters: those of the `Harmonic_quad_remesher` constructor
 ///        (`vertex_point_map`, `sparse_linear_solver`, `harmonic_weights`,
 ///        `harmonic_constraints`, `protrusion_maxima`, index maps) and of its `remesh()`
-///        (`target_edge_length`, `quad_poles`, `spectacles`, `all_quads`, `curvature_adaptation`);
+///        (`target_edge_length`, `quad_poles`, `spectacles`, `all_quads`, `curvature_adaptation`,
+///        `feature_snapping`);
 ///        `out`'s point map is its internal one
 /// \returns the report of `remesh()`; `report.harmonic_seconds` includes building the Laplacian
 /// \throws Invalid_mesh, Invalid_constraints, Invalid_parameter, Linear_solver_failure; `out` is
@@ -42,8 +43,12 @@ Harmonic_quad_remeshing_report harmonic_quad_remeshing(const TriangleMesh& tm, P
     CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::all_quads), true);
   const double adaptation =
     CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::curvature_adaptation), 0.);
+  const bool snapping =
+    CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::feature_snapping), true);
   const auto rest = parameters::quad_poles(
-    poles, parameters::spectacles(spectacles, parameters::all_quads(all_quads, parameters::curvature_adaptation(adaptation))));
+    poles, parameters::spectacles(
+             spectacles, parameters::all_quads(all_quads, parameters::curvature_adaptation(
+                                                            adaptation, parameters::feature_snapping(snapping)))));
   const auto h = CGAL::parameters::get_parameter(np, internal_np::target_edge_length);
   if constexpr(std::is_same<std::decay_t<decltype(h)>, CGAL::internal_np::Param_not_found>::value)
     return remesher.remesh(out, rest);

@@ -58,6 +58,7 @@ enum hausdorff_error_bound_t { hausdorff_error_bound };
 enum spectacles_t { spectacles };
 enum all_quads_t { all_quads };
 enum curvature_adaptation_t { curvature_adaptation };
+enum feature_snapping_t { feature_snapping };
 } // namespace internal_np
 
 /// \ingroup PkgSurfaceDesignRef
@@ -129,6 +130,7 @@ CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(hausdorff_error_bound)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(spectacles)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(all_quads)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(curvature_adaptation)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(feature_snapping)
 
 #undef CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER
 

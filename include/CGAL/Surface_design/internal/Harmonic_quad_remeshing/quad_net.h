@@ -56,6 +56,7 @@ struct Net_statistics
   std::size_t lost_lines = 0, removed_dangling_edges = 0, extra_boundary_levels = 0, saddle_levels = 0;
   std::size_t reordered_lines = 0, merged_lines = 0, refined_levels = 0, attached_loops = 0;
   std::size_t spectacles_lines = 0; ///< lines from bridges and junctions
+  std::size_t boundary_detail_nodes = 0; ///< nodes at the input's boundary vertices where it leaves the chords
 };
 
 /// A spacing scale per face for curvature-adapted spacing: h(f) = h / (1 + adaptation h kappa(f)),
@@ -1387,9 +1388,125 @@ private:
         std::sort(q.begin(), q.end());
       }
       for(std::size_t k = 0; k < q.size(); ++k)
-        edges.push_back({q[k].second, q[(k + 1) % q.size()].second, 2, nan, nan});
+      {
+        // the input's boundary between two nodes, where it leaves the chord by more than h / 4
+        // (a serrated or sharply bent boundary), gets nodes at its vertices
+        std::size_t from = q[k].second;
+        const double end = k + 1 < q.size() ? q[k + 1].first : q[0].first + double(loop.size());
+        for(double t : boundary_detail(l, q[k].first, end))
+        {
+          Node n;
+          n.kind = 2;
+          n.loop = l;
+          n.loop_position = std::fmod(t, double(loop.size()));
+          n.point = loop_point(l, n.loop_position);
+          m_nodes.push_back(n);
+          edges.push_back({from, m_nodes.size() - 1, 2, nan, nan});
+          from = m_nodes.size() - 1;
+          ++m_stats.boundary_detail_nodes;
+        }
+        edges.push_back({from, q[(k + 1) % q.size()].second, 2, nan, nan});
+      }
     }
     return faces_of(edges);
+  }
+
+  // the point at `position` (vertex index + fraction of the next edge) along boundary loop `l`
+  Eigen::Vector3d loop_point(std::size_t l, double position) const
+  {
+    const auto& loop = m_m.boundary_loop[l];
+    const std::size_t n = loop.size();
+    const double w = std::fmod(position, double(n));
+    const std::size_t i = (std::min)(std::size_t(w), n - 1);
+    const double f = w - double(i);
+    return (1. - f) * m_m.point[loop[i]] + f * m_m.point[loop[(i + 1) % n]];
+  }
+
+  // Douglas-Peucker on boundary loop `l` between loop positions `begin` < `end` (`end` may
+  // exceed the loop's size: it wraps): the positions (increasing, between them) of the loop's
+  // vertices to keep so that the boundary between consecutive kept points stays within h / 4 of
+  // their chord; vertices closer than h / 8 to a kept point are not taken. An even number, so
+  // that the face along it keeps the parity of its sides: an odd count gets the next farthest
+  // vertex, or the middle of the longest piece when no vertex is left.
+  std::vector<double> boundary_detail(std::size_t l, double begin, double end) const
+  {
+    const double h = m_opt.edge_length;
+    std::vector<double> position{begin}; // the loop's vertices strictly inside (begin, end)
+    for(double i = std::floor(begin) + 1.; i < end - 1e-9; i += 1.)
+      if(i > begin + 1e-9)
+        position.push_back(i);
+    position.push_back(end);
+    if(position.size() == 2)
+      return {};
+    std::vector<Eigen::Vector3d> p;
+    for(double t : position)
+      p.push_back(loop_point(l, t));
+    const auto distance_to_chord = [&](std::size_t i, std::size_t a, std::size_t b) {
+      const Eigen::Vector3d d = p[b] - p[a];
+      const double t = d.squaredNorm() > 0. ? std::clamp((p[i] - p[a]).dot(d) / d.squaredNorm(), 0., 1.) : 0.;
+      return (p[i] - p[a] - t * d).norm();
+    };
+    // split the piece (a, b) at its farthest point while that is beyond the tolerance
+    std::vector<char> kept(p.size(), 0);
+    kept.front() = kept.back() = 1;
+    std::size_t count = 0;
+    double best_left = 0.;
+    std::size_t best_left_at = npos;
+    std::vector<std::pair<std::size_t, std::size_t>> pieces{{0, p.size() - 1}};
+    while(!pieces.empty())
+    {
+      const auto [a, b] = pieces.back();
+      pieces.pop_back();
+      double far = -1.;
+      std::size_t at = npos;
+      for(std::size_t i = a + 1; i < b; ++i)
+      {
+        if((p[i] - p[a]).norm() < h / 8. || (p[i] - p[b]).norm() < h / 8.)
+          continue;
+        const double d = distance_to_chord(i, a, b);
+        if(d > far)
+        {
+          far = d;
+          at = i;
+        }
+      }
+      if(at == npos)
+        continue;
+      if(far > h / 4.)
+      {
+        kept[at] = 1;
+        ++count;
+        pieces.emplace_back(a, at);
+        pieces.emplace_back(at, b);
+      }
+      else if(far > best_left)
+      {
+        best_left = far;
+        best_left_at = at;
+      }
+    }
+    std::vector<double> out;
+    if(count % 2 == 1 && best_left_at != npos)
+      kept[best_left_at] = 1;
+    double longest = -1., middle = 0.;
+    for(std::size_t i = 1, last = 0; i < p.size(); ++i)
+      if(kept[i])
+      {
+        if(i + 1 < p.size())
+          out.push_back(position[i]);
+        if((p[i] - p[last]).norm() > longest)
+        {
+          longest = (p[i] - p[last]).norm();
+          middle = 0.5 * (position[i] + position[last]);
+        }
+        last = i;
+      }
+    if(out.size() % 2 == 1)
+    {
+      out.push_back(middle);
+      std::sort(out.begin(), out.end());
+    }
+    return out;
   }
 
   std::size_t boundary_node(std::size_t mesh_edge, const Eigen::Vector3d& p)
