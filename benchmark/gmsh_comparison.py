@@ -18,6 +18,7 @@ certifies its Hausdorff distance there), and for ours the remeshing alone from i
 import json
 import math
 import os
+import re
 import shutil
 import statistics
 import subprocess
@@ -171,8 +172,11 @@ def main(argv):
             ours["seconds"] = seconds
             # the remeshing alone (the program also certifies its Hausdorff distance): its own times
             for line in result.stdout.splitlines():
-                if line.startswith("times:"):
-                    ours["remesh_seconds"] = sum(float(w) for w in line.replace(",", " ").split() if w[0].isdigit())
+                # the four phases (quads only and snapping, in brackets, are part of meshing)
+                phases = re.match(r"times: harmonic ([\d.]+) s, spectacles \(re-solve\) ([\d.]+) s, "
+                                  r"curves ([\d.]+) s, meshing ([\d.]+) s", line)
+                if phases:
+                    ours["remesh_seconds"] = sum(float(x) for x in phases.groups())
             stl = os.path.join(work, name + ".stl")
             write_stl(points, faces, stl)
             vtk = os.path.join(work, name + "_gmsh.vtk")

@@ -60,6 +60,20 @@ using test::from_soup;
 using test::Soup_points;
 using test::Soup_triangles;
 
+// the triangles of an nx x ny grid of points numbered i * ny + j (two per cell)
+Soup_triangles grid_triangles(std::size_t nx, std::size_t ny)
+{
+  Soup_triangles triangles;
+  for(std::size_t i = 0; i + 1 < nx; ++i)
+    for(std::size_t j = 0; j + 1 < ny; ++j)
+    {
+      const std::size_t a = i * ny + j, b = (i + 1) * ny + j;
+      triangles.push_back({a, b, b + 1});
+      triangles.push_back({a, b + 1, a + 1});
+    }
+  return triangles;
+}
+
 template <class Mesh>
 long euler_characteristic(const Mesh& m)
 {
@@ -532,7 +546,6 @@ TEMPLATE_TEST_CASE("Curvature-adapted spacing refines where the surface bends, a
   // 4 radians; arc length is kept, so with its two ends as minimum and maximum u is x / 4 on both
   // halves and the uniform net is alike on both
   Soup_points points;
-  Soup_triangles triangles;
   const std::size_t nx = 161, ny = 41;
   for(std::size_t i = 0; i < nx; ++i)
     for(std::size_t j = 0; j < ny; ++j)
@@ -543,14 +556,7 @@ TEMPLATE_TEST_CASE("Curvature-adapted spacing refines where the surface bends, a
       else
         points.push_back({2. + 0.5 * std::sin(2. * (x - 2.)), y, 0.5 * (1. - std::cos(2. * (x - 2.)))});
     }
-  for(std::size_t i = 0; i + 1 < nx; ++i)
-    for(std::size_t j = 0; j + 1 < ny; ++j)
-    {
-      const std::size_t a = i * ny + j, b = (i + 1) * ny + j;
-      triangles.push_back({a, b, b + 1});
-      triangles.push_back({a, b + 1, a + 1});
-    }
-  const Mesh mesh = from_soup<Mesh>(points, triangles);
+  const Mesh mesh = from_soup<Mesh>(points, grid_triangles(nx, ny));
   std::vector<std::pair<typename boost::graph_traits<Mesh>::vertex_descriptor, double>> ends;
   const double end_x = 2. + 0.5 * std::sin(4.), end_z = 0.5 * (1. - std::cos(4.));
   for(auto v : vertices(mesh))
@@ -630,7 +636,6 @@ TEMPLATE_TEST_CASE("A serrated boundary is followed and a narrow spike is reache
   // spike 0.04 wide between the net's curves (u = x at levels 0.1 apart, lines along y about 0.1
   // apart), which they pass by
   Soup_points points;
-  Soup_triangles triangles;
   const std::size_t n = 51;
   const double h = 0.1;
   for(std::size_t i = 0; i < n; ++i)
@@ -639,14 +644,7 @@ TEMPLATE_TEST_CASE("A serrated boundary is followed and a narrow spike is reache
       const double x = double(i) / double(n - 1), y = double(j) / double(n - 1);
       points.push_back({x, j == 0 && i % 2 == 1 ? -0.06 : y, i == 27 && j == 27 ? 0.15 : 0.});
     }
-  for(std::size_t i = 0; i + 1 < n; ++i)
-    for(std::size_t j = 0; j + 1 < n; ++j)
-    {
-      const std::size_t a = i * n + j, b = (i + 1) * n + j;
-      triangles.push_back({a, b, b + 1});
-      triangles.push_back({a, b + 1, a + 1});
-    }
-  const Mesh mesh = from_soup<Mesh>(points, triangles);
+  const Mesh mesh = from_soup<Mesh>(points, grid_triangles(n, n));
   // u = 0 on the left side, 1 on the right one (the default constraints would put a maximum, so a
   // vertex of the net, on the spike's tip)
   std::vector<std::pair<typename boost::graph_traits<Mesh>::vertex_descriptor, double>> sides;
