@@ -11,8 +11,11 @@
 //   sheet with holes and several components open into disks (2g generator loops);
 // - a design made by the developability flow, cut at epsilon = 1e-3, flattens with mean
 //   |log area scale| <= 0.01 and no flipped face;
+// - pieces whose flattening overlaps itself are split: a developable cone of 1.34 turns into two
+//   disks of less than a turn each, still isometric; the design until no piece overlaps;
 // - the pattern: pieces inside their sheets and apart, seam labels in pairs, the SVG parses;
-// - bad input throws clear exceptions (not a disk, not triangles, empty, bad parameters).
+// - bad input throws clear exceptions (not a disk, not triangles, empty, bad parameters, uv not
+//   finite).
 
 #include <test_support.h>
 
@@ -22,9 +25,11 @@
 #include <CGAL/Surface_design/fabrication_pattern.h>
 #include <CGAL/Surface_design/flattening_distortion.h>
 #include <CGAL/Surface_design/mesh_generators.h>
+#include <CGAL/Surface_design/overlap_splitting_cut.h>
 
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
 #include <boost/property_map/property_map.hpp>
@@ -33,11 +38,13 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <complex>
 #include <limits>
 #include <map>
+#include <memory>
 #include <set>
 #include <type_traits>
 #include <sstream>
@@ -173,6 +180,46 @@ SD::Flattening_distortion cut_and_flatten(const Mesh& mesh, double epsilon, SD::
   REQUIRE(CGAL::is_valid_polygon_mesh(pieces));
   SD::boundary_first_flattening(pieces, boost::make_assoc_property_map(uv));
   return SD::flattening_distortion(pieces, boost::make_assoc_property_map(uv));
+}
+
+// `pieces` cut along `cut`, `original` following (a vertex of the new pieces -> the vertex of
+// the first mesh it copies). On the heap: copying a Polyhedron_3 would change its handles.
+template <class Mesh>
+std::unique_ptr<Mesh> cut_apart(const Mesh& pieces,
+                                const std::vector<typename boost::graph_traits<Mesh>::edge_descriptor>& cut,
+                                std::map<Vertex<Mesh>, Vertex<Mesh>>& original)
+{
+  auto split = std::make_unique<Mesh>();
+  std::vector<std::pair<Vertex<Mesh>, Vertex<Mesh>>> pairs;
+  SD::cut_mesh_along_edges(pieces, cut, *split, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(pairs)));
+  std::map<Vertex<Mesh>, Vertex<Mesh>> next;
+  for(const auto& [in, out] : pairs)
+    next[out] = original.empty() ? in : original.at(in);
+  original = std::move(next);
+  return split;
+}
+
+// A developable cone over a wavy spherical curve (three waves of amplitude 1/2), radii 1 to 2,
+// open along one ruling: its development is an annular sector of 1.34 turns, which overlaps
+// itself. The cone over a spherical polygon has planar quads: exactly developable.
+void wavy_cone_soup(std::size_t n, std::size_t m, Soup_points& points, Soup_triangles& triangles)
+{
+  points.clear();
+  triangles.clear();
+  for(std::size_t j = 0; j <= m; ++j)
+    for(std::size_t i = 0; i <= n; ++i)
+    {
+      const double t = 2. * CGAL_PI * double(i) / double(n), r = 1. + double(j) / double(m);
+      const Eigen::Vector3d g = Eigen::Vector3d(std::cos(t), std::sin(t), 0.5 * std::sin(3. * t)).normalized();
+      points.push_back({r * g.x(), r * g.y(), r * g.z()});
+    }
+  auto id = [&](std::size_t i, std::size_t j) { return j * (n + 1) + i; };
+  for(std::size_t j = 0; j < m; ++j)
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
 }
 
 } // namespace
@@ -433,6 +480,146 @@ TEMPLATE_TEST_CASE("A design of the developability flow, cut at epsilon = 1e-3, 
   }
 }
 
+TEMPLATE_TEST_CASE("A developable cone of more than one turn is split into two pieces that do not overlap",
+                   "[flattening][overlap]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  Soup_points points;
+  Soup_triangles triangles;
+  const std::size_t n = 96, m = 6;
+  wavy_cone_soup(n, m, points, triangles);
+  const Mesh cone = from_soup<Mesh>(points, triangles);
+  // the development's angle: the length of the spherical polygon
+  double turn = 0.;
+  const auto at = [&](std::size_t i) { return Eigen::Vector3d(points[i][0], points[i][1], points[i][2]); };
+  for(std::size_t i = 0; i < n; ++i) // the first row: radius 1
+    turn += std::acos(std::clamp(at(i).dot(at(i + 1)), -1., 1.));
+  turn /= 2. * CGAL_PI;
+  REQUIRE(turn > 1.3);
+  Uv_map<Mesh> uv;
+  SD::boundary_first_flattening(cone, boost::make_assoc_property_map(uv));
+  CHECK(edge_length_error(cone, uv) <= 1e-6); // developable: an isometry
+  SD::Flattening_distortion d = SD::flattening_distortion(cone, boost::make_assoc_property_map(uv));
+  CHECK(d.self_overlapping_pieces == 1);
+
+  std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> cut;
+  const SD::Overlap_splitting_report r =
+    SD::compute_overlap_splitting_cut(cone, boost::make_assoc_property_map(uv), std::back_inserter(cut));
+  CHECK(r.overlapping_pieces == 1);
+  CHECK(r.split_pieces == 1);
+  CHECK(r.cut_edges == cut.size());
+  REQUIRE(!cut.empty());
+  // the cut runs across the strip, from the inner rim (r = 1) to the outer one (r = 2), through
+  // the interior
+  double r_min = 3., r_max = 0.;
+  for(auto e : cut)
+  {
+    CHECK(!is_border(e, cone));
+    for(auto v : {source(halfedge(e, cone), cone), target(halfedge(e, cone), cone)})
+    {
+      const double radius = eigen(get(CGAL::vertex_point, cone, v)).norm();
+      r_min = (std::min)(r_min, radius);
+      r_max = (std::max)(r_max, radius);
+    }
+  }
+  CHECK(r_min == Approx(1.).margin(1e-12));
+  CHECK(r_max == Approx(2.).margin(1e-12));
+  std::map<Vertex<Mesh>, Vertex<Mesh>> original;
+  const std::unique_ptr<Mesh> halves = cut_apart(cone, cut, original);
+  const Mesh& pieces = *halves;
+  uv.clear();
+  SD::boundary_first_flattening(pieces, boost::make_assoc_property_map(uv));
+  d = SD::flattening_distortion(pieces, boost::make_assoc_property_map(uv));
+  CHECK(d.pieces == 2);
+  CHECK(d.self_overlapping_pieces == 0);
+  CHECK(d.flipped_faces == 0);
+  CHECK(edge_length_error(pieces, uv) <= 1e-6);
+  // each part is an annular sector of less than a turn: its share of the area is below 1 / turn
+  std::map<std::size_t, double> area;
+  double total = 0.;
+  std::map<typename boost::graph_traits<Mesh>::face_descriptor, std::size_t> face_piece;
+  CGAL::Polygon_mesh_processing::connected_components(pieces, boost::make_assoc_property_map(face_piece));
+  for(auto f : faces(pieces))
+  {
+    const auto h = halfedge(f, pieces);
+    const Eigen::Vector3d a = eigen(get(CGAL::vertex_point, pieces, source(h, pieces))),
+                          b = eigen(get(CGAL::vertex_point, pieces, target(h, pieces))),
+                          c = eigen(get(CGAL::vertex_point, pieces, target(next(h, pieces), pieces)));
+    const double t = 0.5 * (b - a).cross(c - a).norm();
+    area[face_piece.at(f)] += t;
+    total += t;
+  }
+  REQUIRE(area.size() == 2);
+  for(const auto& [piece, a] : area)
+    CHECK(a / total < 1. / turn);
+  // nothing more to split
+  cut.clear();
+  const SD::Overlap_splitting_report again =
+    SD::compute_overlap_splitting_cut(pieces, boost::make_assoc_property_map(uv), std::back_inserter(cut));
+  CHECK(again.overlapping_pieces == 0);
+  CHECK(cut.empty());
+}
+
+TEMPLATE_TEST_CASE("The design's pieces that overlap themselves are split until none does", "[flattening][overlap]",
+                   SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  const Mesh design = test::load_mesh<Mesh>("pebble_design.off");
+  SD::Developable_cut_report report;
+  auto pieces = std::make_unique<Mesh>();
+  std::map<Vertex<Mesh>, Vertex<Mesh>> original;
+  Uv_map<Mesh> uv;
+  SD::Flattening_distortion d = cut_and_flatten(design, 1e-3, report, *pieces, original, uv);
+  REQUIRE(d.self_overlapping_pieces > 0); // measured: the single piece curls over itself
+  std::size_t rounds = 0;
+  for(; rounds < 16 && d.self_overlapping_pieces > 0; ++rounds)
+  {
+    std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> cut;
+    const std::size_t before = d.pieces;
+    const SD::Overlap_splitting_report r =
+      SD::compute_overlap_splitting_cut(*pieces, boost::make_assoc_property_map(uv), std::back_inserter(cut));
+    CHECK(r.overlapping_pieces == d.self_overlapping_pieces);
+    REQUIRE(r.split_pieces == r.overlapping_pieces);
+    pieces = cut_apart(*pieces, cut, original);
+    uv.clear();
+    SD::boundary_first_flattening(*pieces, boost::make_assoc_property_map(uv)); // every piece a disk
+    d = SD::flattening_distortion(*pieces, boost::make_assoc_property_map(uv));
+    CHECK(d.pieces == before + r.split_pieces); // each split piece in two
+  }
+  CHECK(d.self_overlapping_pieces == 0);
+  CHECK(d.flipped_faces == 0);
+  CHECK(d.area_log_mean <= 0.01);
+  CHECK(d.boundary_length_error <= 1e-5);
+  // the pieces still cover the design: every face once, every vertex copied from the design
+  CHECK(num_faces(*pieces) == num_faces(design));
+  std::set<Vertex<Mesh>> covered;
+  for(const auto& [out, in] : original)
+    covered.insert(in);
+  CHECK(covered.size() == num_vertices(design));
+}
+
+TEST_CASE("Crossings of a closed polygon", "[flattening][overlap]")
+{
+  std::vector<std::pair<std::size_t, std::size_t>> found;
+  const auto collect = [&](std::size_t i, std::size_t k) {
+    found.emplace_back(i, k);
+    return true;
+  };
+  // a square: none
+  SDI::for_each_polygon_self_intersection({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, collect);
+  CHECK(found.empty());
+  // a figure eight: edge 1 (1,0)-(0,1) crosses edge 3 (1,1)-(0,0) at (1/2, 1/2)
+  SDI::for_each_polygon_self_intersection({{0, 0}, {1, 0}, {0, 1}, {1, 1}}, collect);
+  REQUIRE(!found.empty());
+  for(const auto& [i, k] : found)
+  {
+    CHECK(i == 1);
+    CHECK(k == 3);
+  }
+  CHECK(SDI::polygon_self_intersects({{0, 0}, {1, 0}, {0, 1}, {1, 1}}));
+  CHECK(!SDI::polygon_self_intersects({{0, 0}, {2, 0}, {2, 2}, {1, 0.5}, {0, 2}})); // not convex, simple
+}
+
 TEMPLATE_TEST_CASE("The cutting pattern: pieces inside their sheets and apart, seams labelled in pairs, valid SVG",
                    "[flattening][pattern]", SD_MESH_TYPES)
 {
@@ -607,6 +794,9 @@ TEMPLATE_TEST_CASE("Bad input to cutting and flattening throws clear exceptions"
     expect_defect([&] { SD::boundary_first_flattening(quad, uv_map); }, SD::Mesh_defect::not_triangle);
     std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> cut;
     expect_defect([&] { SD::compute_developable_cut(quad, std::back_inserter(cut)); }, SD::Mesh_defect::not_triangle);
+    expect_defect([&] { SD::compute_overlap_splitting_cut(quad, uv_map, std::back_inserter(cut)); },
+                  SD::Mesh_defect::not_triangle);
+    CHECK(cut.empty());
   }
   {
     Mesh empty;
@@ -644,6 +834,14 @@ TEMPLATE_TEST_CASE("Bad input to cutting and flattening throws clear exceptions"
   // layout: a piece too large for the sheet at the given scale; bad sizes
   SD::boundary_first_flattening(disk, uv_map);
   const Uv_map<Mesh> before = uv;
+  {
+    // splitting: a coordinate that is not finite
+    Uv_map<Mesh> bad = uv;
+    bad.begin()->second = Point_2(nan, 0.);
+    CHECK_THROWS_AS(SD::compute_overlap_splitting_cut(disk, boost::make_assoc_property_map(bad), std::back_inserter(cut)),
+                    SD::Invalid_parameter);
+    CHECK(cut.empty());
+  }
   CHECK_THROWS_AS(SD::lay_out_flattened_pieces(disk, uv_map, P::pattern_scale(1e4)), SD::Invalid_parameter);
   CHECK_THROWS_AS(SD::lay_out_flattened_pieces(disk, uv_map, P::sheet_size(std::make_pair(nan, 100.))),
                   SD::Invalid_parameter);

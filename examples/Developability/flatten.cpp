@@ -11,6 +11,7 @@
 #include <CGAL/Surface_design/developable_cutting.h>
 #include <CGAL/Surface_design/fabrication_pattern.h>
 #include <CGAL/Surface_design/flattening_distortion.h>
+#include <CGAL/Surface_design/overlap_splitting_cut.h>
 
 #include <cmath>
 #include <cstdio>
@@ -38,6 +39,8 @@ const char* usage =
   "                        smaller cuts more and distorts less)\n"
   "  --alignment W         weight of the alignment of cuts with the rulings (default 1; 0: shortest)\n"
   "  --no-cut              flatten the input as it is: every component must be a disk\n"
+  "  --no-split            keep pieces whose flattening overlaps itself (default: split them in\n"
+  "                        two between the overlapping parts and flatten again, until none does)\n"
   "  --sheet WxH           sheet size in mm (default 210x297, A4)\n"
   "  --scale S             mm on the sheet per model unit (default: the largest round scale at\n"
   "                        which every piece fits on a sheet)\n"
@@ -57,7 +60,7 @@ struct Options
   std::string input, output, pattern, picture, up = "+Y", solver = "ldlt";
   double epsilon = 1e-3, alignment = 1., margin = 10., fold_angle = 5., scale = 0.;
   double sheet_width = 210., sheet_height = 297.;
-  bool cut = true;
+  bool cut = true, split = true;
 };
 
 Options parse(int argc, char** argv)
@@ -76,6 +79,8 @@ Options parse(int argc, char** argv)
       o.alignment = example::parse_double(next(), a, 0., 1e3);
     else if(a == "--no-cut")
       o.cut = false;
+    else if(a == "--no-split")
+      o.split = false;
     else if(a == "--sheet")
     {
       const std::string value = next();
@@ -114,8 +119,8 @@ Options parse(int argc, char** argv)
     throw example::Usage_error("--output PIECES.obj is required");
   if(o.pattern.empty())
     throw example::Usage_error("--pattern PATTERN.svg is required");
-  if(!o.cut && (once.contains("--epsilon") || once.contains("--alignment")))
-    throw example::Usage_error("--epsilon and --alignment apply to the cut, not to --no-cut");
+  if(!o.cut && (once.contains("--epsilon") || once.contains("--alignment") || once.contains("--no-split")))
+    throw example::Usage_error("--epsilon, --alignment and --no-split apply to the cut, not to --no-cut");
   if(!(2. * o.margin < std::min(o.sheet_width, o.sheet_height)))
     throw example::Usage_error("--margin " + example::text(o.margin) + " leaves no room on a " +
                                example::text(o.sheet_width) + " x " + example::text(o.sheet_height) + " mm sheet");
@@ -274,13 +279,52 @@ int run(const Options& o, Traits traits)
   }
 
   auto uv = pieces.add_property_map<Mesh::Vertex_index, Uv>("v:uv").first;
-  SD::Boundary_first_flattener flattener(pieces, CGAL::parameters::sparse_linear_solver(traits));
-  const double factor_ms = clock.lap();
-  flattener.flatten(uv);
-  std::printf("flattened %zu pieces by BFF: %zu interior and %zu boundary vertices (factorization %.1f ms, "
-              "solves %.1f ms)\n",
-              flattener.number_of_pieces(), flattener.number_of_interior_vertices(),
-              flattener.number_of_boundary_vertices(), factor_ms, clock.lap());
+  // flatten; while a piece overlaps itself in the plane, split it and flatten again (a design
+  // needs a few rounds; a tree of thin strips, such as a minimal surface cut through every
+  // vertex, about log2 of its length)
+  const std::size_t max_split_rounds = 64;
+  for(std::size_t round = 0;; ++round)
+  {
+    {
+      SD::Boundary_first_flattener flattener(pieces, CGAL::parameters::sparse_linear_solver(traits));
+      const double factor_ms = clock.lap();
+      flattener.flatten(uv);
+      std::printf("flattened %zu pieces by BFF: %zu interior and %zu boundary vertices (factorization %.1f ms, "
+                  "solves %.1f ms)\n",
+                  flattener.number_of_pieces(), flattener.number_of_interior_vertices(),
+                  flattener.number_of_boundary_vertices(), factor_ms, clock.lap());
+    }
+    if(!o.split)
+      break;
+    std::vector<Mesh::Edge_index> split_cut;
+    const SD::Overlap_splitting_report r = SD::compute_overlap_splitting_cut(pieces, uv, std::back_inserter(split_cut));
+    if(r.overlapping_pieces == 0)
+      break;
+    if(r.split_pieces == 0 || round == max_split_rounds)
+    {
+      std::printf("  %zu piece(s) overlap themselves and %s\n", r.overlapping_pieces,
+                  r.split_pieces == 0 ? "cannot be split into disks" : "are left after the last round of splitting");
+      break;
+    }
+    for(auto e : split_cut)
+    {
+      const auto h = halfedge(e, pieces);
+      cut_edge[std::size_t(edge(halfedge(original[std::size_t(source(h, pieces))],
+                                         original[std::size_t(target(h, pieces))], input).first, input))] = true;
+    }
+    Mesh split;
+    std::vector<std::pair<Mesh::Vertex_index, Mesh::Vertex_index>> pairs;
+    SD::cut_mesh_along_edges(pieces, split_cut, split,
+                             CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(pairs)));
+    std::vector<Mesh::Vertex_index> split_original(num_vertices(split));
+    for(const auto& [in, out] : pairs)
+      split_original[std::size_t(out)] = original[std::size_t(in)];
+    std::printf("split %zu of %zu overlapping piece(s) along %zu edges (%.1f ms)\n", r.split_pieces,
+                r.overlapping_pieces, r.cut_edges, clock.lap());
+    pieces = std::move(split);
+    original = std::move(split_original);
+    uv = pieces.add_property_map<Mesh::Vertex_index, Uv>("v:uv").first;
+  }
 
   auto log_area = pieces.add_property_map<Mesh::Face_index, double>("f:log_area", 0.).first;
   const SD::Flattening_distortion d = SD::flattening_distortion(pieces, uv, P::face_log_area_scale_map(log_area));

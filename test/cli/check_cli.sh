@@ -135,7 +135,7 @@ for args in "--epsilon -1" "--epsilon nan" "--epsilon 1x" "--alignment -2" "--sh
             "--sheet 5x5" "--sheet 210x297x3" "--scale 0" "--scale -1" "--scale nan" "--margin 200" "--margin -1" \
             "--fold-angle 200" "--fold-angle nan" "--solver magic" "--no-cut --epsilon 0.01" "--up +Z" \
             "--epsilon 0.1 --epsilon 0.2" "--output $O/p.off" "--pattern $O/p.pdf" "--picture $O/p.jpg" "--bogus" \
-            "--scale 1e6"; do
+            "--scale 1e6" "--no-cut --no-split" "--no-split --no-split"; do
   # shellcheck disable=SC2086
   refuse flatten "$D" $args --output "$O/p.obj" --pattern "$O/p.svg"
 done
@@ -145,6 +145,16 @@ refuse flatten "$D" --output "$O/p.obj" --pattern "$O/p.obj"
 refuse flatten "$WORK/quad.off" --output "$O/p.obj" --pattern "$O/p.svg"
 refuse flatten "$B1K" --no-cut --output "$O/p.obj" --pattern "$O/p.svg"
 accept flatten "$D" --output "$O/ok.obj" --pattern "$O/ok.svg"
+# the design's single piece overlaps itself in the plane: split until no piece does
+if ! grep -q "^split " "$WORK/stdout" || ! grep -q " 0 piece(s) overlapping themselves" "$WORK/stdout"; then
+  echo "FAILED: flatten pebble_design.off leaves overlapping pieces: $(grep -E "overlap" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
+accept flatten "$D" --no-split --output "$O/ok.obj" --pattern "$O/ok.svg"
+if grep -q "^split " "$WORK/stdout" || grep -q " 0 piece(s) overlapping themselves" "$WORK/stdout"; then
+  echo "FAILED: flatten --no-split split pieces: $(grep -E "split|overlap" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
 accept flatten "$DATA/hemisphere.off" --no-cut --output "$O/ok.obj" --pattern "$O/ok.svg"
 
 # --- quad_remesh

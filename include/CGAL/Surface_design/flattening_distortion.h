@@ -68,15 +68,7 @@ Flattening_distortion flattening_distortion(const TriangleMesh& tm, const UVMap&
   const auto vpm = internal::const_vertex_point_map(tm, np);
   const internal::Mesh_indices<TriangleMesh> idx(tm, np);
   internal::validate_mesh(idx, vpm);
-  const std::size_t nv = idx.number_of_vertices();
-  std::vector<Eigen::Vector2d> p(nv);
-  for(std::size_t v = 0; v < nv; ++v)
-  {
-    const auto& q = get(uv, idx.vertex(v));
-    p[v] = Eigen::Vector2d(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
-    if(!p[v].allFinite())
-      throw Invalid_parameter("uv", "the 2-D coordinates of vertex " + std::to_string(v) + " are not finite");
-  }
+  const std::vector<Eigen::Vector2d> p = internal::plane_coordinates(idx, uv);
   const auto& mesh = idx.mesh();
   Flattening_distortion d;
   d.faces = idx.number_of_faces();

@@ -7,11 +7,16 @@
 #ifndef CGAL_SURFACE_DESIGN_INTERNAL_FLATTENING_DISTORTION_H
 #define CGAL_SURFACE_DESIGN_INTERNAL_FLATTENING_DISTORTION_H
 
+#include <CGAL/Surface_design/exceptions.h>
+
+#include <CGAL/number_utils.h>
+
 #include <Eigen/Core>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <string>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -19,6 +24,22 @@
 namespace CGAL {
 namespace Surface_design {
 namespace internal {
+
+/// The 2-D coordinates of every vertex from a readable vertex -> `Point_2` map.
+/// \throws Invalid_parameter a coordinate is not finite
+template <class Indices, class UVMap>
+std::vector<Eigen::Vector2d> plane_coordinates(const Indices& idx, const UVMap& uv)
+{
+  std::vector<Eigen::Vector2d> p(idx.number_of_vertices());
+  for(std::size_t v = 0; v < p.size(); ++v)
+  {
+    const auto& q = get(uv, idx.vertex(v));
+    p[v] = Eigen::Vector2d(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
+    if(!p[v].allFinite())
+      throw Invalid_parameter("uv", "the 2-D coordinates of vertex " + std::to_string(v) + " are not finite");
+  }
+  return p;
+}
 
 /// Singular values s1 >= s2 >= 0 and the sign of the determinant of the linear map sending
 /// triangle (a, b, c) in space to (p, q, r) in the plane.
@@ -79,14 +100,16 @@ inline bool segments_intersect(const Eigen::Vector2d& a, const Eigen::Vector2d& 
   return false;
 }
 
-/// Whether the closed polygon `loop` (vertices in order) intersects itself, i.e. whether two of
-/// its edges that do not share a vertex of the loop intersect. Uniform grid of the mean edge
-/// length: about linear for boundaries of evenly sized edges.
-inline bool polygon_self_intersects(const std::vector<Eigen::Vector2d>& loop)
+/// Calls `visit(i, k)` (i < k) for every pair of edges of the closed polygon `loop` (edge i from
+/// loop[i] to loop[i + 1]) that intersect and do not share a vertex of the loop, until `visit`
+/// returns false. Uniform grid of the mean edge length: about linear for boundaries of evenly
+/// sized edges. A pair may be visited more than once (once per grid cell both edges cross).
+template <class Visitor>
+void for_each_polygon_self_intersection(const std::vector<Eigen::Vector2d>& loop, Visitor visit)
 {
   const std::size_t n = loop.size();
   if(n < 4)
-    return false;
+    return;
   double mean = 0.;
   Eigen::Vector2d lo = loop[0], hi = loop[0];
   for(std::size_t i = 0; i < n; ++i)
@@ -115,13 +138,24 @@ inline bool polygon_self_intersects(const std::vector<Eigen::Vector2d>& loop)
           // edges sharing a loop vertex are adjacent
           if(k == i || (k + 1) % n == i || (i + 1) % n == k)
             continue;
-          if(segments_intersect(a, b, loop[k], loop[(k + 1) % n]))
-            return true;
+          if(segments_intersect(a, b, loop[k], loop[(k + 1) % n]) && !visit((std::min)(i, k), (std::max)(i, k)))
+            return;
         }
         bucket.push_back(i);
       }
   }
-  return false;
+}
+
+/// Whether the closed polygon `loop` (vertices in order) intersects itself, i.e. whether two of
+/// its edges that do not share a vertex of the loop intersect.
+inline bool polygon_self_intersects(const std::vector<Eigen::Vector2d>& loop)
+{
+  bool found = false;
+  for_each_polygon_self_intersection(loop, [&](std::size_t, std::size_t) {
+    found = true;
+    return false;
+  });
+  return found;
 }
 
 } // namespace internal
