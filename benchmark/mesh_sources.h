@@ -111,7 +111,7 @@ inline const std::vector<Preset>& presets()
     {"flattening", "cutting and BFF: the octahedron membrane (6 boundary loops joined into one disk), ~1k to "
      "~1M faces, and a developable design",
      {"octahedron:8", "octahedron:50", "octahedron:100", "octahedron:144", "bundled:pebble_design.off"},
-     {"flatten"}},
+     {"flatten", "flatten_split", "flatten_arap"}},
     {"harmonic_quad", "harmonic quad remeshing: the seed's eight and kitten (Table 2), genus 0 to 4 with and without "
      "boundary (a serrated one: mech-holes-shark), and input sizes up to 240k faces",
      {"bundled:eight.off", "bundled:kitten.off", "bundled:fertility.off", "bundled:hemisphere.off",
