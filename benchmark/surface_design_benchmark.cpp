@@ -72,14 +72,14 @@ const std::vector<Workload>& workloads()
     {"flatten",
      "developable cut (epsilon 1e-3) + Boundary First Flattening (u_B = 0); phases cut, factor, flatten, "
      "full = factor + flatten",
-     &flatten_workload},
+     &flatten_workload, Solver_use::compared, "flatten_arap"},
     {"flatten_split",
      "the CLI's loop: developable cut, BFF, then while a piece overlaps itself in the plane, split it "
      "(compute_overlap_splitting_cut) and flatten again; phases cut, flatten and split; up to 200k faces",
      &flatten_split_workload},
     {"flatten_arap",
      "the same pieces flattened by CGAL's ARAP parameterizer (Surface_mesh_parameterization defaults: lambda 1000, "
-     "50 iterations); phases cut, arap; up to 300k faces",
+     "50 iterations; its own solver, whichever is selected); phases cut, arap, full = arap; up to 300k faces",
      &flatten_arap_workload},
     {"quad_remesh",
      "harmonic-function quad remeshing, default constraints, spectacles, quads only, ~3000 faces in the net (as the "

@@ -114,6 +114,7 @@ inline void flatten_arap_workload(const Mesh& mesh, const std::string&, Run& run
     for(Mesh::Halfedge_index h : borders)
       status.push_back(SMP::parameterize(pieces, SMP::ARAP_parameterizer_3<Mesh>(), h, uv));
   });
+  run.sum_phase("full", {"arap"}); // paired with flatten's full (factor + flatten)
   if(run.checks_enabled())
   {
     const SD::Flattening_distortion d = SD::flattening_distortion(pieces, uv);
