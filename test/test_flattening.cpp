@@ -835,12 +835,18 @@ TEMPLATE_TEST_CASE("Bad input to cutting and flattening throws clear exceptions"
   SD::boundary_first_flattening(disk, uv_map);
   const Uv_map<Mesh> before = uv;
   {
-    // splitting: a coordinate that is not finite
+    // splitting and the SVG: a coordinate that is not finite
     Uv_map<Mesh> bad = uv;
     bad.begin()->second = Point_2(nan, 0.);
     CHECK_THROWS_AS(SD::compute_overlap_splitting_cut(disk, boost::make_assoc_property_map(bad), std::back_inserter(cut)),
                     SD::Invalid_parameter);
     CHECK(cut.empty());
+    Uv_map<Mesh> laid_out = uv; // the layout moves the pieces
+    const SD::Fabrication_layout layout = SD::lay_out_flattened_pieces(disk, boost::make_assoc_property_map(laid_out));
+    std::ostringstream svg;
+    CHECK_THROWS_AS(SD::write_fabrication_pattern_svg(svg, disk, boost::make_assoc_property_map(bad), layout),
+                    SD::Invalid_parameter);
+    CHECK(svg.str().empty());
   }
   CHECK_THROWS_AS(SD::lay_out_flattened_pieces(disk, uv_map, P::pattern_scale(1e4)), SD::Invalid_parameter);
   CHECK_THROWS_AS(SD::lay_out_flattened_pieces(disk, uv_map, P::sheet_size(std::make_pair(nan, 100.))),

@@ -11,6 +11,7 @@
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/Core/named_parameters.h>
 #include <CGAL/Surface_design/internal/Core/topology.h>
+#include <CGAL/Surface_design/internal/Flattening/distortion.h>
 #include <CGAL/Surface_design/internal/Flattening/pattern_layout.h>
 #include <CGAL/Surface_design/parameters.h>
 
@@ -91,14 +92,7 @@ Fabrication_layout lay_out_flattened_pieces(const TriangleMesh& tm, UVMap uv,
   const internal::Mesh_indices<TriangleMesh> idx(tm, np);
   const internal::Boundary_loops loops = internal::boundary_loops(idx);
   const internal::Components comps = internal::connected_components(idx, loops);
-  std::vector<Eigen::Vector2d> p(idx.number_of_vertices());
-  for(std::size_t v = 0; v < p.size(); ++v)
-  {
-    const auto& q = get(uv, idx.vertex(v));
-    p[v] = Eigen::Vector2d(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
-    if(!p[v].allFinite())
-      throw Invalid_parameter("uv", "the 2-D coordinates of vertex " + std::to_string(v) + " are not finite");
-  }
+  const std::vector<Eigen::Vector2d> p = internal::plane_coordinates(idx, uv);
   internal::Pattern_packing packing;
   packing.sheet_width = layout.sheet_width;
   packing.sheet_height = layout.sheet_height;
@@ -148,7 +142,8 @@ Fabrication_layout lay_out_flattened_pieces(const TriangleMesh& tm, UVMap uv,
 ///   Without it no seam is labelled.
 /// - `fold_angle` (double in [0, pi], radians): default 5 degrees; pi draws no fold line
 ///
-/// \throws Invalid_parameter (`fold_angle`); std::ios_base::failure is not thrown, check `os`
+/// \throws Invalid_parameter (`fold_angle`, or a coordinate of `uv` that is not finite; nothing
+///         is written then); std::ios_base::failure is not thrown, check `os`
 template <class TriangleMesh, class UVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
 void write_fabrication_pattern_svg(std::ostream& os, const TriangleMesh& tm, const UVMap& uv,
                                    const Fabrication_layout& layout,
@@ -169,14 +164,10 @@ void write_fabrication_pattern_svg(std::ostream& os, const TriangleMesh& tm, con
   drawing.layout.sheets = layout.sheets;
   drawing.fold_angle = fold_angle;
   const std::size_t nv = idx.number_of_vertices();
-  drawing.uv.resize(nv);
+  drawing.uv = internal::plane_coordinates(idx, uv);
   drawing.position.resize(nv);
   for(std::size_t v = 0; v < nv; ++v)
-  {
-    const auto& q = get(uv, idx.vertex(v));
-    drawing.uv[v] = Eigen::Vector2d(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
     drawing.position[v] = internal::position(vpm, idx.vertex(v));
-  }
   const auto seam_map = get_parameter(np, internal_np::seam_vertex_index_map);
   if constexpr(!std::is_same<std::decay_t<decltype(seam_map)>, CGAL::internal_np::Param_not_found>::value)
   {
