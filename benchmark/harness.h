@@ -8,6 +8,7 @@
 #ifndef CGAL_SURFACE_DESIGN_BENCHMARK_HARNESS_H
 #define CGAL_SURFACE_DESIGN_BENCHMARK_HARNESS_H
 
+#include <CGAL/Surface_design/nested_dissection_ordering.h>
 #include <CGAL/Surface_design/solver_traits.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -187,6 +188,8 @@ inline const std::vector<Solver_info>& known_solvers()
 #endif
   static const std::vector<Solver_info> table{
     {"ldlt", "Default_solver_traits: Eigen SimplicialLDLT, AMD ordering", true, ""},
+    {"ldlt-nd", "Nested_dissection_ldlt_solver_traits: Eigen SimplicialLDLT, the library's nested dissection",
+     true, ""},
     {"ldlt-metis", "Metis_ldlt_solver_traits: Eigen SimplicialLDLT, METIS nested dissection",
      has_metis, "built without METIS: CGAL_SURFACE_DESIGN_HAS_METIS is not defined"},
     {"cholmod", "Cholmod_solver_traits: CHOLMOD supernodal LLT, AMD ordering, on the loaded BLAS", has_cholmod,
@@ -217,7 +220,7 @@ struct Solver_tag
 };
 
 /// Calls `f(Solver_tag<Traits>())` with the traits named `solver` ("ldlt": the library's
-/// `Default_solver_traits`, "ldlt-metis": `Metis_ldlt_solver_traits`, "cholmod":
+/// `Default_solver_traits`, "ldlt-nd": `Nested_dissection_ldlt_solver_traits`, "ldlt-metis": `Metis_ldlt_solver_traits`, "cholmod":
 /// `Cholmod_solver_traits`).
 /// \throws std::invalid_argument for a name that is not in `compiled_solvers()`.
 template <class F>
@@ -225,6 +228,8 @@ void with_solver_traits(const std::string& solver, F&& f)
 {
   if(solver == "ldlt")
     f(Solver_tag<CGAL::Surface_design::Default_solver_traits>());
+  else if(solver == "ldlt-nd")
+    f(Solver_tag<CGAL::Surface_design::Nested_dissection_ldlt_solver_traits>());
 #if defined(CGAL_SURFACE_DESIGN_HAS_METIS)
   else if(solver == "ldlt-metis")
     f(Solver_tag<CGAL::Surface_design::Metis_ldlt_solver_traits>());
