@@ -108,6 +108,11 @@ inline const std::vector<Preset>& presets()
     {"developability_evaluation", "energy + gradient evaluations on ~8k to ~250k faces",
      {"bundled:bunny_8k.off", "sphere:63000", "sphere:250000"},
      {"developability_evaluation"}},
+    {"factorization", "the first solve in phases (ordering, symbolic, numeric, solve) for each ordering and "
+     "kernel, with fill and flops: bunnies and the kitten, 8k to 955k faces",
+     {"bundled:bunny_8k.off", "bundled:kitten.off", "shared:bunny_60k.off", "shared:bunny_loop1_239k.off",
+      "shared:bunny_loop2_955k.off.gz"},
+     {"factorization"}},
     {"flattening", "cutting and BFF: the octahedron membrane (6 boundary loops joined into one disk), ~1k to "
      "~1M faces, and a developable design",
      {"octahedron:8", "octahedron:50", "octahedron:100", "octahedron:144", "bundled:pebble_design.off"},

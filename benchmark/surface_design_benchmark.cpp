@@ -8,6 +8,7 @@
 #include "machine_info.h"
 #include "mesh_sources.h"
 #include "report.h"
+#include "workload_factorization.h"
 #include "workload_laplacian.h"
 #include "workload_stripes.h"
 #include "workload_direction_fields.h"
@@ -33,6 +34,9 @@ const std::vector<Workload>& workloads()
   static const std::vector<Workload> table{
     {"laplacian", "cotangent Laplacian L + eps M; phases assemble, factor, solve",
      &laplacian_workload},
+    {"factorization", "first solve of L + eps M in phases ordering, symbolic, numeric, solve; fill and flops "
+     "(ldlt: AMD, ldlt-nd: nested dissection, ldlt-metis: METIS, cholmod: supernodal with nested dissection)",
+     &factorization_workload},
     {"stripes",
      "field-aligned stripes, vertex space (Field_aligned_parameterizer); phases factor, field, "
      "solve, resolve, full = factor + field + solve",

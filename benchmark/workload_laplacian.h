@@ -62,6 +62,20 @@ inline Eigen::VectorXd right_hand_side(const SDI::Mesh_indices<Mesh>& idx)
   return b;
 }
 
+/// A = L + eps M (see `regularization`).
+inline SDI::Sparse_matrix regularized_laplacian(const Mesh& mesh, const SDI::Mesh_indices<Mesh>& idx)
+{
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  const std::vector<double> weights = SDI::cotangent_weights(idx, SDI::halfedge_cotangents(idx, vpm));
+  const SDI::Sparse_matrix l = SDI::weighted_laplacian(idx, weights);
+  const std::vector<double> mass = SDI::vertex_areas(idx, SDI::face_areas(idx, vpm));
+  double total_mass = 0.;
+  for(double m : mass)
+    total_mass += m;
+  const double eps = regularization * l.diagonal().sum() / total_mass;
+  return l + eps * SDI::diagonal_matrix(mass);
+}
+
 template <class SolverTraits>
 void run_laplacian(const Mesh& mesh, Run& run)
 {
@@ -69,16 +83,7 @@ void run_laplacian(const Mesh& mesh, Run& run)
   SDI::Sparse_matrix a;
   run.phase("assemble", [&] {
     idx.emplace(mesh);
-    const auto vpm = get(CGAL::vertex_point, mesh);
-    const std::vector<double> weights =
-      SDI::cotangent_weights(*idx, SDI::halfedge_cotangents(*idx, vpm));
-    const SDI::Sparse_matrix l = SDI::weighted_laplacian(*idx, weights);
-    const std::vector<double> mass = SDI::vertex_areas(*idx, SDI::face_areas(*idx, vpm));
-    double total_mass = 0.;
-    for(double m : mass)
-      total_mass += m;
-    const double eps = regularization * l.diagonal().sum() / total_mass;
-    a = l + eps * SDI::diagonal_matrix(mass);
+    a = regularized_laplacian(mesh, *idx);
   });
 
   // untimed: the right-hand side, and a copy of A for the residual (factor() takes A over)

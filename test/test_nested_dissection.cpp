@@ -12,12 +12,14 @@
 #include <CGAL/Surface_design/nested_dissection_ordering.h>
 #include <CGAL/Surface_design/internal/Core/dec.h>
 #include <CGAL/Surface_design/internal/Core/Factored_system.h>
+#include <CGAL/Surface_design/internal/Core/Hermitian_system.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 
 #include <Eigen/SparseCholesky>
 
 #include <complex>
+#include <type_traits>
 #include <random>
 
 namespace SD = CGAL::Surface_design;
@@ -232,16 +234,21 @@ TEMPLATE_TEST_CASE("Nested dissection LDLT: the same solutions as the default so
 
 TEST_CASE("Nested dissection LDLT: Hermitian systems in complex arithmetic", "[ordering]")
 {
-  // a Hermitian positive definite matrix on the kitten's graph: L + i (antisymmetric part) + shift
+  // a Hermitian positive definite matrix on the kitten's graph: a magnetic graph Laplacian
+  // (off-diagonal -e^{+-0.3 i}) plus the identity, diagonally dominant
   const SDI::Sparse_matrix l = screened_laplacian(test::load_mesh<test::Surface_mesh>("kitten.off"));
   using Complex_matrix = Eigen::SparseMatrix<std::complex<double>>;
   std::vector<Eigen::Triplet<std::complex<double>>> t;
+  std::vector<double> degree(std::size_t(l.rows()), 0.);
   for(int k = 0; k < l.outerSize(); ++k)
     for(SDI::Sparse_matrix::InnerIterator it(l, k); it; ++it)
-    {
-      const double phase = it.row() < it.col() ? 0.3 : (it.row() > it.col() ? -0.3 : 0.);
-      t.emplace_back(it.row(), it.col(), std::polar(it.value(), phase));
-    }
+      if(it.row() != it.col())
+      {
+        t.emplace_back(it.row(), it.col(), -std::polar(1., it.row() < it.col() ? 0.3 : -0.3));
+        degree[std::size_t(it.row())] += 1.;
+      }
+  for(Eigen::Index i = 0; i < l.rows(); ++i)
+    t.emplace_back(i, i, degree[std::size_t(i)] + 1.);
   Complex_matrix a(l.rows(), l.cols());
   a.setFromTriplets(t.begin(), t.end());
   Eigen::VectorXcd b(a.rows());
@@ -254,6 +261,21 @@ TEST_CASE("Nested dissection LDLT: Hermitian systems in complex arithmetic", "[o
   const Eigen::VectorXcd x = nd.solve(b);
   REQUIRE((a * x - b).norm() <= 1e-10 * a.norm() * x.norm());
   REQUIRE((x - amd.solve(b)).norm() <= 1e-10 * x.norm());
+
+  // the library's Hermitian systems take the complex path with these traits, as with the default
+  static_assert(!std::is_void<SDI::Complex_solver_of<SD::Nested_dissection_ldlt_solver_traits>::type>::value);
+  SDI::Hermitian_system<SD::Nested_dissection_ldlt_solver_traits> system(SD::Nested_dissection_ldlt_solver_traits(),
+                                                                        "Hermitian test system");
+  system.factor(Complex_matrix(a));
+  Eigen::VectorXd interleaved(2 * b.size()), y;
+  for(Eigen::Index i = 0; i < b.size(); ++i)
+  {
+    interleaved[2 * i] = b[i].real();
+    interleaved[2 * i + 1] = b[i].imag();
+  }
+  system.solve(interleaved, y);
+  for(Eigen::Index i = 0; i < b.size(); ++i)
+    REQUIRE(std::abs(std::complex<double>(y[2 * i], y[2 * i + 1]) - x[i]) <= 1e-10 * x.norm());
 }
 
 TEMPLATE_TEST_CASE("Nested dissection LDLT through a package: BFF flattens exactly as with the default",
