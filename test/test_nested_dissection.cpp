@@ -20,7 +20,6 @@
 
 #include <complex>
 #include <type_traits>
-#include <random>
 
 namespace SD = CGAL::Surface_design;
 namespace SDI = CGAL::Surface_design::internal;
@@ -125,13 +124,12 @@ Fill fill_of(const SDI::Sparse_matrix& a, const Permutation& order)
   return f;
 }
 
-Eigen::VectorXd random_vector(Eigen::Index n, unsigned seed)
+// a fixed right-hand side with entries spread over [-1, 1]
+Eigen::VectorXd test_vector(Eigen::Index n, unsigned seed)
 {
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> normal;
   Eigen::VectorXd b(n);
   for(Eigen::Index i = 0; i < n; ++i)
-    b[i] = normal(rng);
+    b[i] = std::sin(0.7 * double(i) + 1.3 * double(seed));
   return b;
 }
 
@@ -224,7 +222,7 @@ TEMPLATE_TEST_CASE("Nested dissection LDLT: the same solutions as the default so
     nd.factor(SDI::Sparse_matrix(a));
     for(unsigned seed = 1; seed <= 3; ++seed)
     {
-      const Eigen::VectorXd b = random_vector(a.rows(), seed);
+      const Eigen::VectorXd b = test_vector(a.rows(), seed);
       const Eigen::VectorXd x = nd.solve(b);
       REQUIRE((a * x - b).norm() <= 1e-10 * a.norm() * x.norm());
       REQUIRE((x - amd.solve(b)).norm() <= 1e-10 * x.norm());
@@ -252,7 +250,7 @@ TEST_CASE("Nested dissection LDLT: Hermitian systems in complex arithmetic", "[o
   Complex_matrix a(l.rows(), l.cols());
   a.setFromTriplets(t.begin(), t.end());
   Eigen::VectorXcd b(a.rows());
-  const Eigen::VectorXd re = random_vector(a.rows(), 7), im = random_vector(a.rows(), 8);
+  const Eigen::VectorXd re = test_vector(a.rows(), 7), im = test_vector(a.rows(), 8);
   for(Eigen::Index i = 0; i < b.size(); ++i)
     b[i] = {re[i], im[i]};
   Eigen::SimplicialLDLT<Complex_matrix, Eigen::Lower, SD::Nested_dissection_ordering<int>> nd(a);

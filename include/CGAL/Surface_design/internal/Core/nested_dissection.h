@@ -5,19 +5,21 @@
 //
 // Why: on the graph of a surface mesh (a planar-like graph of bounded degree) nested dissection
 // gives a Cholesky factor with O(n log n) entries and O(n^1.5) flops (Lipton, Rose & Tarjan 1979),
-// against visibly more for minimum-degree orderings on large meshes; METIS computes such an ordering
-// but its multilevel partitioner costs about as much as the factorization it saves. The graphs met
-// here are meshes, whose breadth-first level sets are rings of O(sqrt n) vertices around the root,
-// so George's level-structure separators (George & Liu 1981, ch. 8) are small and take O(n) to find.
+// against visibly more for minimum-degree orderings on large meshes; METIS computes better
+// separators still, but its multilevel partitioner costs 2 to 5 times this ordering (measured by
+// the benchmark's `factorization` workload). The graphs met here are meshes, whose breadth-first
+// level sets are rings of O(sqrt n) vertices around the root, so George's level-structure
+// separators (George & Liu 1981, ch. 8) are small and take O(n) to find.
 //
 // The algorithm, for a connected part of the graph:
-//  1. root: a pseudo-peripheral vertex (repeated breadth-first sweeps from the part's first vertex
-//     while the eccentricity grows, each from a vertex of least degree in the last level);
-//  2. separator: the level set of the root's level structure with the least size relative to the
-//     balance of the two sides, among the levels that leave at least a third of the part on each
-//     side;
+//  1. root: a pseudo-peripheral vertex (breadth-first sweeps from the part's first vertex, each
+//     from a vertex of least degree in the last level, while the eccentricity grows);
+//  2. separator: the smallest level set of the root's level structure among those that leave at
+//     least a third of the rest of the part on each side (if none does, the smallest per vertex
+//     on its smaller side);
 //  3. thinning: a separator vertex with no neighbour on one side is moved to the other side (it is
-//     not needed to separate them);
+//     not needed to separate them); then Fiduccia-Mattheyses passes move separator vertices into
+//     the lighter side where that shrinks the separator (refine_separator());
 //  4. the two sides are ordered recursively, then the separator; disconnected parts are split into
 //     their components first; parts of at most 64 vertices are ordered by exact minimum degree on
 //     their elimination graph (bit sets), counting the neighbours outside the part (the ancestors'
