@@ -22,6 +22,8 @@
 #include <cholmod.h>
 #endif
 
+#include <algorithm>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -143,6 +145,11 @@ inline void run_cholmod(const SDI::Sparse_matrix& a, const Eigen::VectorXd& b, R
     rhs.dtype = CHOLMOD_DOUBLE;
     run.phase("solve", [&] {
       cholmod_dense* solution = cholmod_solve(CHOLMOD_A, factor, &rhs, &common);
+      if(solution == nullptr)
+      {
+        x.setConstant(std::numeric_limits<double>::quiet_NaN()); // the residual check reports it
+        return;
+      }
       std::copy(static_cast<double*>(solution->x), static_cast<double*>(solution->x) + b.size(), x.data());
       cholmod_free_dense(&solution, &common);
     });
