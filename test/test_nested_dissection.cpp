@@ -6,10 +6,12 @@
 // factorizations with it that solve exactly like the default ones (real and Hermitian systems,
 // through the solver traits and through a package).
 
+#include <sparse_test_matrices.h>
 #include <test_support.h>
 
 #include <CGAL/Surface_design/Boundary_first_flattener.h>
 #include <CGAL/Surface_design/nested_dissection_ordering.h>
+#include <CGAL/Surface_design/supernodal_cholesky.h>
 #include <CGAL/Surface_design/internal/Core/dec.h>
 #include <CGAL/Surface_design/internal/Core/Factored_system.h>
 #include <CGAL/Surface_design/internal/Core/Hermitian_system.h>
@@ -28,48 +30,10 @@ namespace {
 
 using Permutation = Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>;
 
-// the symmetric pattern of a graph given by its edges, with a dominant diagonal (SPD)
-SDI::Sparse_matrix graph_matrix(int n, const std::vector<std::pair<int, int>>& edges)
-{
-  std::vector<Eigen::Triplet<double>> t;
-  std::vector<double> degree(std::size_t(n), 0.);
-  for(const auto& [i, j] : edges)
-  {
-    t.emplace_back(i, j, -1.);
-    t.emplace_back(j, i, -1.);
-    degree[std::size_t(i)] += 1.;
-    degree[std::size_t(j)] += 1.;
-  }
-  for(int i = 0; i < n; ++i)
-    t.emplace_back(i, i, degree[std::size_t(i)] + 1.);
-  SDI::Sparse_matrix a(n, n);
-  a.setFromTriplets(t.begin(), t.end());
-  return a;
-}
-
-// a k x k grid of squares, each split into two triangles: the graph of a planar triangle mesh
-SDI::Sparse_matrix triangulated_grid(int k)
-{
-  std::vector<std::pair<int, int>> edges;
-  auto id = [k](int i, int j) { return i * k + j; };
-  for(int i = 0; i < k; ++i)
-    for(int j = 0; j < k; ++j)
-    {
-      if(j + 1 < k) edges.push_back({id(i, j), id(i, j + 1)});
-      if(i + 1 < k) edges.push_back({id(i, j), id(i + 1, j)});
-      if(i + 1 < k && j + 1 < k) edges.push_back({id(i, j), id(i + 1, j + 1)});
-    }
-  return graph_matrix(k * k, edges);
-}
-
-template <class Mesh>
-SDI::Sparse_matrix screened_laplacian(const Mesh& mesh)
-{
-  const auto vpm = get(CGAL::vertex_point, mesh);
-  SDI::Mesh_indices<Mesh> idx(mesh);
-  const SDI::Sparse_matrix L = SDI::weighted_laplacian(idx, SDI::cotangent_weights(idx, vpm));
-  return L + 1e-2 * SDI::diagonal_matrix(SDI::vertex_areas(idx, SDI::face_areas(idx, vpm)));
-}
+using test::graph_matrix;
+using test::screened_laplacian;
+using test::test_vector;
+using test::triangulated_grid;
 
 void require_permutation(const Permutation& p, Eigen::Index n)
 {
@@ -122,15 +86,6 @@ Fill fill_of(const SDI::Sparse_matrix& a, const Permutation& order)
     f.flops += c * c;
   }
   return f;
-}
-
-// a fixed right-hand side with entries spread over [-1, 1]
-Eigen::VectorXd test_vector(Eigen::Index n, unsigned seed)
-{
-  Eigen::VectorXd b(n);
-  for(Eigen::Index i = 0; i < n; ++i)
-    b[i] = std::sin(0.7 * double(i) + 1.3 * double(seed));
-  return b;
 }
 
 } // namespace
@@ -234,25 +189,9 @@ TEST_CASE("Nested dissection LDLT: Hermitian systems in complex arithmetic", "[o
 {
   // a Hermitian positive definite matrix on the kitten's graph: a magnetic graph Laplacian
   // (off-diagonal -e^{+-0.3 i}) plus the identity, diagonally dominant
-  const SDI::Sparse_matrix l = screened_laplacian(test::load_mesh<test::Surface_mesh>("kitten.off"));
-  using Complex_matrix = Eigen::SparseMatrix<std::complex<double>>;
-  std::vector<Eigen::Triplet<std::complex<double>>> t;
-  std::vector<double> degree(std::size_t(l.rows()), 0.);
-  for(int k = 0; k < l.outerSize(); ++k)
-    for(SDI::Sparse_matrix::InnerIterator it(l, k); it; ++it)
-      if(it.row() != it.col())
-      {
-        t.emplace_back(it.row(), it.col(), -std::polar(1., it.row() < it.col() ? 0.3 : -0.3));
-        degree[std::size_t(it.row())] += 1.;
-      }
-  for(Eigen::Index i = 0; i < l.rows(); ++i)
-    t.emplace_back(i, i, degree[std::size_t(i)] + 1.);
-  Complex_matrix a(l.rows(), l.cols());
-  a.setFromTriplets(t.begin(), t.end());
-  Eigen::VectorXcd b(a.rows());
-  const Eigen::VectorXd re = test_vector(a.rows(), 7), im = test_vector(a.rows(), 8);
-  for(Eigen::Index i = 0; i < b.size(); ++i)
-    b[i] = {re[i], im[i]};
+  using test::Complex_matrix;
+  const Complex_matrix a = test::magnetic_laplacian(screened_laplacian(test::load_mesh<test::Surface_mesh>("kitten.off")));
+  const Eigen::VectorXcd b = test::complex_test_vector(a.rows(), 7);
   Eigen::SimplicialLDLT<Complex_matrix, Eigen::Lower, SD::Nested_dissection_ordering<int>> nd(a);
   Eigen::SimplicialLDLT<Complex_matrix> amd(a);
   REQUIRE(nd.info() == Eigen::Success);
@@ -276,8 +215,8 @@ TEST_CASE("Nested dissection LDLT: Hermitian systems in complex arithmetic", "[o
     REQUIRE(std::abs(std::complex<double>(y[2 * i], y[2 * i + 1]) - x[i]) <= 1e-10 * x.norm());
 }
 
-TEMPLATE_TEST_CASE("Nested dissection LDLT through a package: BFF flattens exactly as with the default",
-                   "[ordering]", SD_MESH_TYPES)
+TEMPLATE_TEST_CASE("Nested dissection LDLT and the supernodal Cholesky through a package: BFF flattens exactly as "
+                   "with the default", "[ordering]", SD_MESH_TYPES)
 {
   // the hemisphere is a disk: one Dirichlet and one Neumann factorization
   const TestType mesh = test::load_mesh<TestType>("hemisphere.off");
@@ -291,13 +230,15 @@ TEMPLATE_TEST_CASE("Nested dissection LDLT through a package: BFF flattens exact
     return uv;
   };
   const Uv reference = flatten(SD::Default_solver_traits());
-  const Uv nd = flatten(SD::Nested_dissection_ldlt_solver_traits());
-  REQUIRE(nd.size() == reference.size());
-  double largest = 0., difference = 0.;
-  for(const auto& [v, p] : reference)
+  for(const Uv& other : {flatten(SD::Nested_dissection_ldlt_solver_traits()), flatten(SD::Supernodal_solver_traits())})
   {
-    largest = std::max(largest, std::abs(p.x()) + std::abs(p.y()));
-    difference = std::max(difference, std::abs(p.x() - nd.at(v).x()) + std::abs(p.y() - nd.at(v).y()));
+    REQUIRE(other.size() == reference.size());
+    double largest = 0., difference = 0.;
+    for(const auto& [v, p] : reference)
+    {
+      largest = std::max(largest, std::abs(p.x()) + std::abs(p.y()));
+      difference = std::max(difference, std::abs(p.x() - other.at(v).x()) + std::abs(p.y() - other.at(v).y()));
+    }
+    REQUIRE(difference <= 1e-10 * largest);
   }
-  REQUIRE(difference <= 1e-10 * largest);
 }

@@ -1,0 +1,620 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Multifrontal supernodal Cholesky factorization A = L L^H of sparse symmetric (real) or Hermitian
+// (complex) positive definite matrices, with Eigen's dense kernels on the supernodes.
+//
+// Symbolic analysis (pattern only, reusable for any matrix with the same pattern):
+//  1. a fill-reducing order (an Eigen ordering functor, the library's nested dissection by default),
+//     composed with a postorder of the elimination tree of the permuted matrix (Liu's algorithm);
+//  2. column counts of L by row subtrees; fundamental supernodes (chains of columns with nested
+//     structures), then relaxed amalgamation: a supernode absorbs the child that precedes it when the
+//     explicit zeros this adds stay small (the thresholds of CHOLMOD's defaults: always up to 4
+//     columns, 80% zeros up to 16 columns, 10% up to 48, 5% beyond);
+//  3. the row structure of every supernode (its columns, then the union of its columns' entries and
+//     its children's structures below it), the position of each child's rows in its parent's front,
+//     the destination of every stored entry of A in the factor, and the workspace sizes.
+// Numeric factorization, supernodes in postorder: the entries of A are scattered into the dense
+// panels of L (ncols x nrows each), the update matrices of the children are added to the panel and to
+// the supernode's own update matrix (extend-add, from a stack), then the panel is factored by dense
+// blocked kernels: L11 = chol(A11), L21 = A21 L11^-H, U -= L21 L21^H (one symmetric rank-k update), and
+// U is pushed. The dense kernels do almost all the flops at the speed of Eigen's matrix products,
+// where a simplicial factorization spends its time on indirect addressing.
+
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_SUPERNODAL_CHOLESKY_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_CORE_SUPERNODAL_CHOLESKY_H
+
+#include <CGAL/Surface_design/internal/Core/nested_dissection.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <limits>
+#include <memory>
+#include <new>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+namespace CGAL {
+namespace Surface_design {
+namespace internal {
+
+/// The pattern-only part of a supernodal Cholesky factorization, shared by every matrix with the
+/// same pattern (same stored entries, in the same order). Indices of unknowns after permutation are
+/// called "permuted".
+struct Supernodal_symbolic
+{
+  int n = 0;
+  std::vector<int> old_of_new;              // old_of_new[k]: original index of permuted unknown k
+  std::vector<int> first;                   // supernode s holds permuted columns [first[s], first[s+1])
+  std::vector<int> parent;                  // parent supernode, -1 for roots
+  std::vector<std::int64_t> row_offsets;    // rows of s: rows[row_offsets[s] .. row_offsets[s+1])
+  std::vector<int> rows;                    // its columns first, then the rows below them, ascending
+  std::vector<int> relative;                // aligned with rows: position of a row below s in its parent's rows
+  std::vector<std::int64_t> panel_offsets;  // the dense panel of s (nrows x ncols, column-major) in L's values
+  std::vector<std::int64_t> entry_target;   // per stored lower entry of A (iteration order): its place in L
+  std::vector<unsigned char> entry_conjugated; // 1 when the entry lands in the other triangle after permutation
+  std::size_t update_size = 0;              // largest update matrix (entries)
+  std::size_t stack_size = 0;               // peak of the update matrices stacked at once (entries)
+  std::size_t largest_below = 0;            // most rows below a supernode (the solve's workspace)
+  double factor_nonzeros = 0.;              // entries of L stored (explicit zeros of amalgamation included)
+  double factor_flops = 0.;                 // multiply-adds of the factorization, sum over columns of count^2
+
+  int supernode_count() const { return int(first.size()) - 1; }
+  int columns(int s) const { return first[std::size_t(s) + 1] - first[std::size_t(s)]; }
+  int row_count(int s) const { return int(row_offsets[std::size_t(s) + 1] - row_offsets[std::size_t(s)]); }
+};
+
+namespace supernodal_detail {
+
+/// A zero-initialized array for the factor's large buffers. On Linux it is aligned to 2 MB and
+/// advised for transparent huge pages: a factor is written once right after allocation, and with
+/// 4 kB pages the page faults of that first touch cost as much as the factorization itself on the
+/// virtual machines we measured (7 us per fault: 35 ms for the 15 MB factor of a 30k-vertex mesh).
+template <class T>
+class Large_buffer
+{
+  static_assert(std::is_trivially_copyable<T>::value, "plain numbers only");
+  static constexpr std::size_t alignment = std::size_t(1) << 21;
+
+public:
+  Large_buffer() = default;
+  Large_buffer(const Large_buffer&) = delete;
+  Large_buffer& operator=(const Large_buffer&) = delete;
+  Large_buffer(Large_buffer&& other) noexcept { swap(other); }
+  Large_buffer& operator=(Large_buffer&& other) noexcept
+  {
+    Large_buffer(std::move(other)).swap(*this);
+    return *this;
+  }
+  ~Large_buffer() { std::free(m_data); }
+
+  /// Makes room for `n` values, all zero.
+  void assign_zero(std::size_t n)
+  {
+    if(n > m_capacity)
+    {
+      std::free(m_data);
+      m_data = nullptr;
+      m_capacity = 0;
+      const std::size_t bytes = (n * sizeof(T) + alignment - 1) / alignment * alignment;
+      m_data = static_cast<T*>(std::aligned_alloc(alignment, bytes));
+      if(m_data == nullptr)
+        throw std::bad_alloc();
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+      madvise(m_data, bytes, MADV_HUGEPAGE); // advice only: failure leaves ordinary pages
+#endif
+      m_capacity = bytes / sizeof(T);
+    }
+    m_size = n;
+    std::fill(m_data, m_data + n, T(0));
+  }
+
+  T* data() { return m_data; }
+  const T* data() const { return m_data; }
+  std::size_t size() const { return m_size; }
+
+private:
+  void swap(Large_buffer& other) noexcept
+  {
+    std::swap(m_data, other.m_data);
+    std::swap(m_size, other.m_size);
+    std::swap(m_capacity, other.m_capacity);
+  }
+
+  T* m_data = nullptr;
+  std::size_t m_size = 0, m_capacity = 0;
+};
+
+/// The lower-triangle entries of a sparse matrix (row >= column), visited in storage order.
+template <class SparseMatrixType, class Function>
+void for_each_lower_entry(const SparseMatrixType& a, const Function& f)
+{
+  for(Eigen::Index j = 0; j < a.outerSize(); ++j)
+    for(typename SparseMatrixType::InnerIterator it(a, j); it; ++it)
+      if(it.row() >= it.col())
+        f(int(it.row()), int(it.col()), it.value());
+}
+
+/// Compressed lists: list v is items[offsets[v] .. offsets[v+1]).
+struct Lists
+{
+  std::vector<int> offsets;
+  std::vector<int> items;
+};
+
+/// The strictly-lower pattern of the permuted matrix, by columns (`lower`: rows > column) and by
+/// rows (`upper`: columns < row). The stored lower entries of `a` are numbered in their iteration
+/// order: `lower_entry` (aligned with `lower.items`) and `diagonal_entry` (per permuted column, -1
+/// when absent) give the number of each, `conjugated[e]` tells whether entry e lands above the
+/// diagonal after permutation (so that its mirror, the conjugate, is the one in L's triangle).
+struct Permuted_pattern
+{
+  Lists lower, upper;
+  std::vector<int> lower_entry, diagonal_entry;
+  std::vector<unsigned char> conjugated;
+};
+
+template <class SparseMatrixType>
+void permuted_pattern(const SparseMatrixType& a, const std::vector<int>& new_of_old, Permuted_pattern& pattern)
+{
+  Lists& lower = pattern.lower;
+  Lists& upper = pattern.upper;
+  const std::size_t n = new_of_old.size();
+  lower.offsets.assign(n + 1, 0);
+  upper.offsets.assign(n + 1, 0);
+  std::size_t entries = 0;
+  for_each_lower_entry(a, [&](int i, int j, const auto&) {
+    ++entries;
+    if(i == j)
+      return;
+    const int pi = new_of_old[std::size_t(i)], pj = new_of_old[std::size_t(j)];
+    ++lower.offsets[std::size_t(std::min(pi, pj)) + 1];
+    ++upper.offsets[std::size_t(std::max(pi, pj)) + 1];
+  });
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    lower.offsets[v + 1] += lower.offsets[v];
+    upper.offsets[v + 1] += upper.offsets[v];
+  }
+  lower.items.resize(std::size_t(lower.offsets[n]));
+  pattern.lower_entry.resize(lower.items.size());
+  upper.items.resize(std::size_t(upper.offsets[n]));
+  pattern.diagonal_entry.assign(n, -1);
+  pattern.conjugated.assign(entries, 0);
+  std::vector<int> lower_fill(lower.offsets.begin(), lower.offsets.end() - 1);
+  std::vector<int> upper_fill(upper.offsets.begin(), upper.offsets.end() - 1);
+  int e = 0;
+  for_each_lower_entry(a, [&](int i, int j, const auto&) {
+    const int pi = new_of_old[std::size_t(i)], pj = new_of_old[std::size_t(j)];
+    if(i == j)
+      pattern.diagonal_entry[std::size_t(pi)] = e;
+    else
+    {
+      const int lo = std::min(pi, pj), hi = std::max(pi, pj);
+      pattern.conjugated[std::size_t(e)] = pi < pj ? 1 : 0;
+      pattern.lower_entry[std::size_t(lower_fill[std::size_t(lo)])] = e;
+      lower.items[std::size_t(lower_fill[std::size_t(lo)]++)] = hi;
+      upper.items[std::size_t(upper_fill[std::size_t(hi)]++)] = lo;
+    }
+    ++e;
+  });
+}
+
+/// Elimination tree of the permuted matrix from its rows (Liu's algorithm with path compression).
+inline std::vector<int> elimination_tree(const Lists& upper)
+{
+  const std::size_t n = upper.offsets.size() - 1;
+  std::vector<int> parent(n, -1), ancestor(n, -1);
+  for(std::size_t k = 0; k < n; ++k)
+    for(int p = upper.offsets[k]; p < upper.offsets[k + 1]; ++p)
+    {
+      int i = upper.items[std::size_t(p)];
+      while(i != -1 && i < int(k))
+      {
+        const int next = ancestor[std::size_t(i)];
+        ancestor[std::size_t(i)] = int(k);
+        if(next == -1)
+          parent[std::size_t(i)] = int(k);
+        i = next;
+      }
+    }
+  return parent;
+}
+
+/// A postorder of a forest: post[k] is the k-th node visited; children in increasing order.
+inline std::vector<int> postorder(const std::vector<int>& parent)
+{
+  const std::size_t n = parent.size();
+  std::vector<int> head(n, -1), next(n, -1);
+  for(std::size_t j = n; j-- > 0;) // children lists in increasing order
+    if(parent[j] != -1)
+    {
+      next[j] = head[std::size_t(parent[j])];
+      head[std::size_t(parent[j])] = int(j);
+    }
+  std::vector<int> post;
+  post.reserve(n);
+  std::vector<int> stack;
+  for(std::size_t root = 0; root < n; ++root)
+  {
+    if(parent[root] != -1)
+      continue;
+    stack.push_back(int(root));
+    while(!stack.empty())
+    {
+      const int v = stack.back();
+      const int child = head[std::size_t(v)];
+      if(child == -1)
+      {
+        post.push_back(v);
+        stack.pop_back();
+      }
+      else
+      {
+        head[std::size_t(v)] = next[std::size_t(child)]; // visit the next child next time
+        stack.push_back(child);
+      }
+    }
+  }
+  return post;
+}
+
+/// Entries of the trapezoid of a supernode of `c` columns with `b` rows below them.
+inline double trapezoid(double c, double b) { return c * (c + 1.) / 2. + c * b; }
+
+/// Relaxed amalgamation rule (CHOLMOD's default thresholds).
+inline bool merge_allowed(int columns, double zeros, double total)
+{
+  const double fraction = zeros / total;
+  return columns <= 4 || (columns <= 16 && fraction < 0.8) || (columns <= 48 && fraction < 0.1) ||
+         fraction < 0.05;
+}
+
+} // namespace supernodal_detail
+
+/// Symbolic analysis of the lower triangle of `a` (square) with the fill-reducing order
+/// `old_of_new` (a permutation of 0..n-1: the k-th unknown eliminated).
+template <class SparseMatrixType>
+std::shared_ptr<Supernodal_symbolic> supernodal_analysis(const SparseMatrixType& a, std::vector<int> old_of_new)
+{
+  using namespace supernodal_detail;
+  auto result = std::make_shared<Supernodal_symbolic>();
+  Supernodal_symbolic& sym = *result;
+  const int n = int(a.rows());
+  const std::size_t un = std::size_t(n);
+  sym.n = n;
+
+  // 1. the order, composed with a postorder of the elimination tree
+  std::vector<int> new_of_old(un);
+  for(int k = 0; k < n; ++k)
+    new_of_old[std::size_t(old_of_new[std::size_t(k)])] = k;
+  Permuted_pattern pattern;
+  const Lists& lower = pattern.lower;
+  const Lists& upper = pattern.upper;
+  permuted_pattern(a, new_of_old, pattern);
+  {
+    const std::vector<int> post = postorder(elimination_tree(upper));
+    std::vector<int> composed(un);
+    for(std::size_t k = 0; k < un; ++k)
+      composed[k] = old_of_new[std::size_t(post[k])];
+    old_of_new = std::move(composed);
+    for(int k = 0; k < n; ++k)
+      new_of_old[std::size_t(old_of_new[std::size_t(k)])] = k;
+    permuted_pattern(a, new_of_old, pattern);
+  }
+  const std::vector<int> etree = elimination_tree(upper);
+
+  // 2. column counts (strictly below the diagonal) by row subtrees, O(nnz(L))
+  std::vector<int> count(un, 0), mark(un, -1), children(un, 0);
+  for(int k = 0; k < n; ++k)
+  {
+    mark[std::size_t(k)] = k;
+    for(int p = upper.offsets[std::size_t(k)]; p < upper.offsets[std::size_t(k) + 1]; ++p)
+      for(int j = upper.items[std::size_t(p)]; mark[std::size_t(j)] != k; j = etree[std::size_t(j)])
+      {
+        ++count[std::size_t(j)];
+        mark[std::size_t(j)] = k;
+      }
+    if(etree[std::size_t(k)] != -1)
+      ++children[std::size_t(etree[std::size_t(k)])];
+  }
+
+  // fundamental supernodes, then relaxed amalgamation in postorder: the supernode that ends just
+  // before a supernode's first column is its last child when its parent column lies in it
+  struct Node { int first, columns, below; double zeros; };
+  std::vector<Node> nodes;
+  for(int j = 0; j < n;)
+  {
+    int last = j;
+    while(last + 1 < n && etree[std::size_t(last)] == last + 1 && children[std::size_t(last) + 1] == 1 &&
+          count[std::size_t(last)] == count[std::size_t(last) + 1] + 1)
+      ++last;
+    Node node{j, last - j + 1, count[std::size_t(last)], 0.};
+    while(!nodes.empty())
+    {
+      const Node& child = nodes.back();
+      const int child_parent = etree[std::size_t(child.first + child.columns - 1)];
+      if(child_parent < node.first || child_parent >= node.first + node.columns)
+        break;
+      const int columns = child.columns + node.columns;
+      const double total = trapezoid(columns, node.below);
+      const double zeros = total - (trapezoid(child.columns, child.below) - child.zeros) -
+                           (trapezoid(node.columns, node.below) - node.zeros);
+      if(!merge_allowed(columns, zeros, total))
+        break;
+      node = Node{child.first, columns, node.below, zeros};
+      nodes.pop_back();
+    }
+    nodes.push_back(node);
+    j = last + 1;
+  }
+  const int ns = int(nodes.size());
+  const std::size_t uns = std::size_t(ns);
+  sym.first.resize(uns + 1);
+  std::vector<int> supernode_of(un);
+  for(int s = 0; s < ns; ++s)
+  {
+    sym.first[std::size_t(s)] = nodes[std::size_t(s)].first;
+    for(int c = 0; c < nodes[std::size_t(s)].columns; ++c)
+      supernode_of[std::size_t(nodes[std::size_t(s)].first + c)] = s;
+  }
+  sym.first[uns] = n;
+  sym.parent.assign(uns, -1);
+  std::vector<int> child_offsets(uns + 1, 0);
+  for(int s = 0; s < ns; ++s)
+  {
+    const int up = etree[std::size_t(sym.first[std::size_t(s) + 1] - 1)];
+    if(up != -1)
+    {
+      sym.parent[std::size_t(s)] = supernode_of[std::size_t(up)];
+      ++child_offsets[std::size_t(sym.parent[std::size_t(s)]) + 1];
+    }
+  }
+  for(std::size_t s = 0; s < uns; ++s)
+    child_offsets[s + 1] += child_offsets[s];
+  std::vector<int> child_list(std::size_t(child_offsets[uns]), 0);
+  {
+    std::vector<int> fill(child_offsets.begin(), child_offsets.end() - 1);
+    for(int s = 0; s < ns; ++s)
+      if(sym.parent[std::size_t(s)] != -1)
+        child_list[std::size_t(fill[std::size_t(sym.parent[std::size_t(s)])]++)] = s;
+  }
+
+  // 3. row structures, children's relative positions, panels, workspaces
+  sym.row_offsets.assign(uns + 1, 0);
+  sym.panel_offsets.assign(uns + 1, 0);
+  std::vector<int> position(un, -1);
+  {
+    std::size_t total_rows = 0;
+    for(const Node& node : nodes)
+      total_rows += std::size_t(node.columns + node.below);
+    sym.rows.reserve(total_rows);
+    sym.relative.assign(total_rows, -1);
+  }
+  sym.entry_target.resize(pattern.conjugated.size());
+  sym.entry_conjugated = std::move(pattern.conjugated);
+  std::fill(mark.begin(), mark.end(), -1);
+  std::size_t stack = 0;
+  for(int s = 0; s < ns; ++s)
+  {
+    const int f = sym.first[std::size_t(s)], l = sym.first[std::size_t(s) + 1];
+    const std::size_t begin = sym.rows.size();
+    for(int j = f; j < l; ++j)
+    {
+      sym.rows.push_back(j);
+      mark[std::size_t(j)] = s;
+    }
+    auto add = [&](int i) {
+      if(mark[std::size_t(i)] != s)
+      {
+        mark[std::size_t(i)] = s;
+        sym.rows.push_back(i);
+      }
+    };
+    for(int j = f; j < l; ++j)
+      for(int p = lower.offsets[std::size_t(j)]; p < lower.offsets[std::size_t(j) + 1]; ++p)
+        add(lower.items[std::size_t(p)]);
+    for(int p = child_offsets[std::size_t(s)]; p < child_offsets[std::size_t(s) + 1]; ++p)
+    {
+      const int c = child_list[std::size_t(p)];
+      for(std::int64_t q = sym.row_offsets[std::size_t(c)] + sym.columns(c); q < sym.row_offsets[std::size_t(c) + 1]; ++q)
+        add(sym.rows[std::size_t(q)]);
+    }
+    std::sort(sym.rows.begin() + std::ptrdiff_t(begin) + (l - f), sym.rows.end());
+    sym.row_offsets[std::size_t(s) + 1] = std::int64_t(sym.rows.size());
+    for(std::size_t q = begin; q < sym.rows.size(); ++q)
+      position[std::size_t(sym.rows[q])] = int(q - begin);
+    std::size_t popped = 0;
+    for(int p = child_offsets[std::size_t(s)]; p < child_offsets[std::size_t(s) + 1]; ++p)
+    {
+      const int c = child_list[std::size_t(p)];
+      for(std::int64_t q = sym.row_offsets[std::size_t(c)] + sym.columns(c); q < sym.row_offsets[std::size_t(c) + 1]; ++q)
+        sym.relative[std::size_t(q)] = position[std::size_t(sym.rows[std::size_t(q)])];
+      const std::size_t below = std::size_t(sym.row_count(c) - sym.columns(c));
+      popped += below * below;
+    }
+    const std::size_t columns = std::size_t(l - f), row_count = std::size_t(sym.row_count(s)), below = row_count - columns;
+    sym.panel_offsets[std::size_t(s) + 1] = sym.panel_offsets[std::size_t(s)] + std::int64_t(row_count * columns);
+    // destination of the stored entries of A in the panel: row max(pi, pj) of column min(pi, pj)
+    for(int j = f; j < l; ++j)
+    {
+      const std::int64_t column_start = sym.panel_offsets[std::size_t(s)] + std::int64_t(j - f) * std::int64_t(row_count);
+      if(pattern.diagonal_entry[std::size_t(j)] != -1)
+        sym.entry_target[std::size_t(pattern.diagonal_entry[std::size_t(j)])] = column_start + (j - f);
+      for(int p = lower.offsets[std::size_t(j)]; p < lower.offsets[std::size_t(j) + 1]; ++p)
+        sym.entry_target[std::size_t(pattern.lower_entry[std::size_t(p)])] =
+          column_start + position[std::size_t(lower.items[std::size_t(p)])];
+    }
+    sym.update_size = std::max(sym.update_size, below * below);
+    sym.largest_below = std::max(sym.largest_below, below);
+    stack = stack - popped + below * below;
+    sym.stack_size = std::max(sym.stack_size, stack);
+    for(std::size_t t = 0; t < columns; ++t)
+    {
+      const double c = double(row_count - t - 1); // below the diagonal in column t
+      sym.factor_nonzeros += c;
+      sym.factor_flops += c * c;
+    }
+  }
+
+  sym.old_of_new = std::move(old_of_new);
+  return result;
+}
+
+/// The numeric factor L of a supernodal symbolic analysis, and its solves.
+template <class Scalar>
+class Supernodal_factor
+{
+public:
+  using RealScalar = typename Eigen::NumTraits<Scalar>::Real;
+  using Dense = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
+  using Map = Eigen::Map<Dense>;
+  using Const_map = Eigen::Map<const Dense>;
+
+  /// Index of the first column (permuted) whose pivot is not positive, or -1 on success.
+  template <class SparseMatrixType>
+  Eigen::Index factorize(std::shared_ptr<const Supernodal_symbolic> symbolic, const SparseMatrixType& a)
+  {
+    m_symbolic = std::move(symbolic);
+    const Supernodal_symbolic& sym = *m_symbolic;
+    m_values.assign_zero(std::size_t(sym.panel_offsets.back()));
+    std::size_t e = 0;
+    supernodal_detail::for_each_lower_entry(a, [&](int, int, const Scalar& v) {
+      m_values.data()[sym.entry_target[e]] += sym.entry_conjugated[e] ? Eigen::numext::conj(v) : v;
+      ++e;
+    });
+    m_update.assign_zero(sym.update_size);
+    m_stack.assign_zero(sym.stack_size);
+    std::vector<std::pair<int, std::size_t>> stacked; // (supernode, offset of its update matrix)
+    std::size_t top = 0;
+    for(int s = 0; s < sym.supernode_count(); ++s)
+    {
+      const Eigen::Index columns = sym.columns(s), row_count = sym.row_count(s), below = row_count - columns;
+      Map panel(m_values.data() + sym.panel_offsets[std::size_t(s)], row_count, columns);
+      Map update(m_update.data(), below, below);
+      update.template triangularView<Eigen::Lower>().setZero();
+      // extend-add of the children's update matrices (on top of the stack)
+      while(!stacked.empty() && sym.parent[std::size_t(stacked.back().first)] == s)
+      {
+        const int c = stacked.back().first;
+        const Eigen::Index child_below = sym.row_count(c) - sym.columns(c);
+        const Const_map child_update(m_stack.data() + stacked.back().second, child_below, child_below);
+        const int* relative = sym.relative.data() + sym.row_offsets[std::size_t(c)] + sym.columns(c);
+        for(Eigen::Index q = 0; q < child_below; ++q)
+        {
+          const Eigen::Index target = relative[q];
+          if(target < columns)
+            for(Eigen::Index r = q; r < child_below; ++r)
+              panel(relative[r], target) += child_update(r, q);
+          else
+            for(Eigen::Index r = q; r < child_below; ++r)
+              update(relative[r] - columns, target - columns) += child_update(r, q);
+        }
+        top = stacked.back().second;
+        stacked.pop_back();
+      }
+      // dense partial factorization of the front
+      auto diagonal = panel.topRows(columns);
+      Eigen::LLT<Eigen::Ref<Dense>, Eigen::Lower> llt(diagonal);
+      if(llt.info() != Eigen::Success)
+      {
+        m_symbolic.reset();
+        return sym.first[std::size_t(s)];
+      }
+      if(below > 0)
+      {
+        auto off_diagonal = panel.bottomRows(below);
+        diagonal.template triangularView<Eigen::Lower>().adjoint().template solveInPlace<Eigen::OnTheRight>(off_diagonal);
+        update.template selfadjointView<Eigen::Lower>().rankUpdate(off_diagonal, RealScalar(-1));
+        std::copy(m_update.data(), m_update.data() + below * below, m_stack.data() + top);
+        stacked.emplace_back(s, top);
+        top += std::size_t(below * below);
+      }
+    }
+    return -1;
+  }
+
+  bool is_factored() const { return m_symbolic != nullptr; }
+  const Supernodal_symbolic& symbolic() const { return *m_symbolic; }
+
+  /// The pivots |L_jj|^2 in the original order of the unknowns (those of an LDL^T factorization
+  /// with the same order).
+  Eigen::Matrix<RealScalar, Eigen::Dynamic, 1> pivots() const
+  {
+    const Supernodal_symbolic& sym = *m_symbolic;
+    Eigen::Matrix<RealScalar, Eigen::Dynamic, 1> d(sym.n);
+    for(int s = 0; s < sym.supernode_count(); ++s)
+    {
+      const Const_map panel(m_values.data() + sym.panel_offsets[std::size_t(s)], sym.row_count(s), sym.columns(s));
+      for(Eigen::Index t = 0; t < sym.columns(s); ++t)
+        d[sym.old_of_new[std::size_t(sym.first[std::size_t(s)] + t)]] = Eigen::numext::abs2(panel(t, t));
+    }
+    return d;
+  }
+
+  /// x = A^-1 b for every column of b.
+  template <class Rhs, class Dest>
+  void solve(const Eigen::MatrixBase<Rhs>& b, Eigen::MatrixBase<Dest>& x) const
+  {
+    const Supernodal_symbolic& sym = *m_symbolic;
+    const Eigen::Index n = sym.n, k = b.cols();
+    Dense y(n, k), gathered(Eigen::Index(sym.largest_below), k);
+    for(Eigen::Index i = 0; i < n; ++i)
+      y.row(i) = b.row(sym.old_of_new[std::size_t(i)]);
+    const int ns = sym.supernode_count();
+    for(int s = 0; s < ns; ++s) // L y = b
+    {
+      const Eigen::Index columns = sym.columns(s), below = sym.row_count(s) - columns;
+      const Const_map panel(m_values.data() + sym.panel_offsets[std::size_t(s)], sym.row_count(s), columns);
+      auto block = y.middleRows(sym.first[std::size_t(s)], columns);
+      panel.topRows(columns).template triangularView<Eigen::Lower>().solveInPlace(block);
+      if(below == 0)
+        continue;
+      auto product = gathered.topRows(below);
+      product.noalias() = panel.bottomRows(below) * block;
+      const int* rows = sym.rows.data() + sym.row_offsets[std::size_t(s)] + columns;
+      for(Eigen::Index r = 0; r < below; ++r)
+        y.row(rows[r]) -= product.row(r);
+    }
+    for(int s = ns; s-- > 0;) // L^H x = y
+    {
+      const Eigen::Index columns = sym.columns(s), below = sym.row_count(s) - columns;
+      const Const_map panel(m_values.data() + sym.panel_offsets[std::size_t(s)], sym.row_count(s), columns);
+      auto block = y.middleRows(sym.first[std::size_t(s)], columns);
+      if(below > 0)
+      {
+        auto values = gathered.topRows(below);
+        const int* rows = sym.rows.data() + sym.row_offsets[std::size_t(s)] + columns;
+        for(Eigen::Index r = 0; r < below; ++r)
+          values.row(r) = y.row(rows[r]);
+        block.noalias() -= panel.bottomRows(below).adjoint() * values;
+      }
+      panel.topRows(columns).template triangularView<Eigen::Lower>().adjoint().solveInPlace(block);
+    }
+    x.derived().resize(n, k);
+    for(Eigen::Index i = 0; i < n; ++i)
+      x.row(sym.old_of_new[std::size_t(i)]) = y.row(i);
+  }
+
+private:
+  std::shared_ptr<const Supernodal_symbolic> m_symbolic;
+  supernodal_detail::Large_buffer<Scalar> m_values; // the panels of L
+  supernodal_detail::Large_buffer<Scalar> m_update, m_stack;
+};
+
+} // namespace internal
+} // namespace Surface_design
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_CORE_SUPERNODAL_CHOLESKY_H

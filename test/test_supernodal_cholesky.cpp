@@ -1,0 +1,272 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The supernodal multifrontal Cholesky factorization: the same factor as a simplicial one with the
+// same order (pivot by pivot), the same solutions as the default solver, every pattern (single,
+// diagonal, dense, path and star, several components, one or both triangles stored), Hermitian
+// matrices, an analysis shared between matrices, refactorization, several right-hand sides, and
+// clear failures (indefinite, singular, missing diagonal, wrong size or pattern).
+
+#include <sparse_test_matrices.h>
+#include <test_support.h>
+
+#include <CGAL/Surface_design/direction_fields.h>
+#include <CGAL/Surface_design/supernodal_cholesky.h>
+#include <CGAL/Surface_design/internal/Core/Factored_system.h>
+#include <CGAL/Surface_design/internal/Core/Hermitian_system.h>
+
+#include <Eigen/OrderingMethods>
+#include <Eigen/SparseCholesky>
+
+#include <complex>
+#include <map>
+#include <string>
+#include <type_traits>
+
+namespace SD = CGAL::Surface_design;
+namespace SDI = CGAL::Surface_design::internal;
+
+namespace {
+
+using Real_matrix = Eigen::SparseMatrix<double>;
+using test::Complex_matrix;
+
+// Checks A x = b to 1e-10 relative for several right-hand sides, against a reference solver.
+template <class Solver, class Reference, class Matrix>
+void require_same_solutions(const Solver& solver, const Reference& reference, const Matrix& a)
+{
+  using Vector = Eigen::Matrix<typename Matrix::Scalar, Eigen::Dynamic, 1>;
+  for(unsigned seed = 1; seed <= 3; ++seed)
+  {
+    Vector b;
+    if constexpr(std::is_same<typename Matrix::Scalar, double>::value)
+      b = test::test_vector(a.rows(), seed);
+    else
+      b = test::complex_test_vector(a.rows(), seed);
+    const Vector x = solver.solve(b);
+    const Matrix full = a.template selfadjointView<Eigen::Lower>();
+    REQUIRE((full * x - b).norm() <= 1e-10 * full.norm() * x.norm());
+    REQUIRE((x - reference.solve(b)).norm() <= 1e-10 * x.norm());
+  }
+}
+
+// The supernodal factor against Eigen's simplicial LDL^T with the same order: a postorder of the
+// elimination tree is an equivalent order, so every pivot |L_jj|^2 must equal D_jj of the same
+// unknown; the stored entries cover the simplicial factor's nonzeros (supernodes add explicit zeros).
+template <class Matrix>
+void require_factor_of_simplicial(const Matrix& a)
+{
+  SD::Supernodal_cholesky<Matrix> supernodal(a);
+  REQUIRE(supernodal.info() == Eigen::Success);
+  Eigen::SimplicialLDLT<Matrix, Eigen::Lower, SD::Nested_dissection_ordering<int>> simplicial(a);
+  REQUIRE(simplicial.info() == Eigen::Success);
+  const Eigen::VectorXd d_supernodal = supernodal.vectorD();
+  // Eigen's D is in elimination order: back to the original order of the unknowns
+  Eigen::VectorXd d_simplicial(a.rows());
+  for(Eigen::Index i = 0; i < a.rows(); ++i)
+    d_simplicial[i] = std::real(simplicial.vectorD()[simplicial.permutationP().indices()[i]]);
+  REQUIRE(d_supernodal.size() == a.rows());
+  REQUIRE((d_supernodal - d_simplicial).cwiseAbs().maxCoeff() <= 1e-10 * d_simplicial.cwiseAbs().maxCoeff());
+  REQUIRE(supernodal.factor_nonzeros() >= double(simplicial.matrixL().nestedExpression().nonZeros()) - double(a.rows()));
+  REQUIRE(supernodal.supernode_count() >= 1);
+  REQUIRE(supernodal.supernode_count() <= a.rows());
+  require_same_solutions(supernodal, simplicial, a);
+}
+
+} // namespace
+
+TEST_CASE("Supernodal Cholesky: the simplicial factor, pivot by pivot, on grids", "[supernodal]")
+{
+  for(int k : {1, 2, 7, 60, CGAL_SURFACE_DESIGN_TESTS_UNDER_SANITIZERS ? 80 : 200})
+  {
+    INFO("grid " << k << " x " << k);
+    require_factor_of_simplicial(test::triangulated_grid(k));
+  }
+}
+
+TEMPLATE_TEST_CASE("Supernodal Cholesky: mesh Laplacians with holes, several components, skinny triangles",
+                   "[supernodal]", SD_MESH_TYPES)
+{
+  for(const std::string name : {"bunny_8k.off", "blobby_3cc.off", "mech-holes-shark.off", "bones.off"})
+  {
+    INFO(name);
+    require_factor_of_simplicial(test::screened_laplacian(test::load_mesh<TestType>(name)));
+  }
+}
+
+TEST_CASE("Supernodal Cholesky: every pattern", "[supernodal]")
+{
+  SECTION("one unknown") {
+    const Real_matrix a = test::graph_matrix(1, {});
+    SD::Supernodal_cholesky<Real_matrix> s(a);
+    REQUIRE(s.info() == Eigen::Success);
+    REQUIRE(s.supernode_count() == 1);
+    Eigen::VectorXd b(1);
+    b << 3.;
+    REQUIRE(std::abs(s.solve(b)[0] - 3.) <= 1e-15); // the diagonal is 1
+  }
+  SECTION("1000 isolated unknowns (a diagonal matrix)") {
+    require_factor_of_simplicial(test::graph_matrix(1000, {}));
+  }
+  SECTION("a complete graph of 150 vertices: one dense supernode") {
+    std::vector<std::pair<int, int>> edges;
+    for(int i = 0; i < 150; ++i)
+      for(int j = i + 1; j < 150; ++j)
+        edges.push_back({i, j});
+    const Real_matrix a = test::graph_matrix(150, edges);
+    require_factor_of_simplicial(a);
+    REQUIRE(SD::Supernodal_cholesky<Real_matrix>(a).supernode_count() == 1);
+  }
+  SECTION("a path of 5000 vertices and a star of 300 (long chains, many leaves)") {
+    std::vector<std::pair<int, int>> edges;
+    for(int i = 0; i + 1 < 5000; ++i)
+      edges.push_back({i, i + 1});
+    for(int i = 1; i < 300; ++i)
+      edges.push_back({5000, 5000 + i});
+    require_factor_of_simplicial(test::graph_matrix(5300, edges));
+  }
+  SECTION("one triangle or both stored; the upper triangle is not read") {
+    const Real_matrix a = test::triangulated_grid(30);
+    const Real_matrix lower = a.triangularView<Eigen::Lower>();
+    Real_matrix garbage_above = a;
+    for(int k = 0; k < garbage_above.outerSize(); ++k)
+      for(Real_matrix::InnerIterator it(garbage_above, k); it; ++it)
+        if(it.row() < it.col())
+          it.valueRef() = 1e6;
+    SD::Supernodal_cholesky<Real_matrix> from_lower(lower), from_full(a), from_garbage(garbage_above);
+    const Eigen::VectorXd b = test::test_vector(a.rows(), 1);
+    const Eigen::VectorXd x = from_lower.solve(b);
+    REQUIRE((a * x - b).norm() <= 1e-12 * a.norm() * x.norm());
+    REQUIRE((from_full.solve(b) - x).norm() <= 1e-14 * x.norm());
+    REQUIRE((from_garbage.solve(b) - x).norm() <= 1e-14 * x.norm());
+  }
+  SECTION("with Eigen's AMD ordering") {
+    const Real_matrix a = test::triangulated_grid(50);
+    SD::Supernodal_cholesky<Real_matrix, Eigen::AMDOrdering<int>> amd(a);
+    REQUIRE(amd.info() == Eigen::Success);
+    require_same_solutions(amd, Eigen::SimplicialLDLT<Real_matrix>(a), a);
+  }
+}
+
+TEST_CASE("Supernodal Cholesky: several right-hand sides, refactorization, shared analysis", "[supernodal]")
+{
+  const Real_matrix a = test::screened_laplacian(test::load_mesh<test::Surface_mesh>("bunny_1k.off"));
+  SD::Supernodal_cholesky<Real_matrix> s(a);
+  REQUIRE(s.info() == Eigen::Success);
+
+  Eigen::MatrixXd b(a.rows(), 3);
+  for(unsigned k = 0; k < 3; ++k)
+    b.col(k) = test::test_vector(a.rows(), k + 1);
+  const Eigen::MatrixXd x = s.solve(b);
+  for(Eigen::Index k = 0; k < 3; ++k)
+    REQUIRE((x.col(k) - s.solve(Eigen::VectorXd(b.col(k)))).norm() <= 1e-14 * x.col(k).norm());
+
+  // new values on the same pattern: factorize only
+  Real_matrix shifted = a;
+  shifted.diagonal().array() += 2.;
+  s.factorize(shifted);
+  REQUIRE(s.info() == Eigen::Success);
+  require_same_solutions(s, Eigen::SimplicialLDLT<Real_matrix>(shifted), shifted);
+
+  // the analysis of the real Laplacian serves a complex Hermitian matrix with the same pattern
+  const Complex_matrix h = test::magnetic_laplacian(a);
+  SD::Supernodal_cholesky<Complex_matrix> own(h), shared;
+  shared.set_analysis(s.analysis());
+  shared.factorize(h);
+  REQUIRE(shared.info() == Eigen::Success);
+  REQUIRE(shared.analysis() == s.analysis());
+  const Eigen::VectorXcd c = test::complex_test_vector(h.rows(), 4);
+  REQUIRE((shared.solve(c) - own.solve(c)).norm() <= 1e-12 * own.solve(c).norm());
+}
+
+TEST_CASE("Supernodal Cholesky: Hermitian systems, in complex arithmetic through the traits", "[supernodal]")
+{
+  const Complex_matrix h =
+    test::magnetic_laplacian(test::screened_laplacian(test::load_mesh<test::Surface_mesh>("kitten.off")));
+  require_factor_of_simplicial(h);
+
+  static_assert(SDI::Hermitian_system<SD::Supernodal_solver_traits>::uses_complex_arithmetic());
+  SDI::Hermitian_system<SD::Supernodal_solver_traits> system(SD::Supernodal_solver_traits(), "Hermitian test system");
+  system.factor(Complex_matrix(h));
+  const Eigen::VectorXcd b = test::complex_test_vector(h.rows(), 7);
+  const Eigen::VectorXcd reference = Eigen::SimplicialLDLT<Complex_matrix>(h).solve(b);
+  Eigen::VectorXd interleaved(2 * b.size()), y;
+  for(Eigen::Index i = 0; i < b.size(); ++i)
+  {
+    interleaved[2 * i] = b[i].real();
+    interleaved[2 * i + 1] = b[i].imag();
+  }
+  system.solve(interleaved, y);
+  for(Eigen::Index i = 0; i < b.size(); ++i)
+    REQUIRE(std::abs(std::complex<double>(y[2 * i], y[2 * i + 1]) - reference[i]) <= 1e-10 * reference.norm());
+}
+
+TEST_CASE("Supernodal Cholesky: clear failures, nothing solved with a bad factor", "[supernodal]")
+{
+  const Real_matrix good = test::triangulated_grid(20);
+  SECTION("indefinite") {
+    Real_matrix a = good;
+    a.coeffRef(210, 210) = -50.;
+    SD::Supernodal_cholesky<Real_matrix> s(a);
+    REQUIRE(s.info() == Eigen::NumericalIssue);
+    SDI::Factored_system<SD::Supernodal_solver_traits> system(SD::Supernodal_solver_traits(), "test system");
+    REQUIRE_THROWS_WITH(system.factor(Real_matrix(a)), Catch::Contains("not positive definite"));
+    REQUIRE_FALSE(system.is_factored());
+  }
+  SECTION("singular: the Laplacian of a closed mesh without screening") {
+    const Real_matrix a = test::screened_laplacian(test::load_mesh<test::Surface_mesh>("bunny_1k.off"), 0.);
+    REQUIRE(SD::Supernodal_cholesky<Real_matrix>(a).info() == Eigen::NumericalIssue);
+  }
+  SECTION("a missing diagonal entry") {
+    Real_matrix a = good;
+    a.coeffRef(5, 5) = 0.;
+    a.prune(0.);
+    REQUIRE(SD::Supernodal_cholesky<Real_matrix>(a).info() == Eigen::NumericalIssue);
+  }
+  SECTION("not square") {
+    REQUIRE(SD::Supernodal_cholesky<Real_matrix>(Real_matrix(4, 5)).info() == Eigen::InvalidInput);
+  }
+  SECTION("factorize with another pattern than the analysed one") {
+    SD::Supernodal_cholesky<Real_matrix> s;
+    s.analyzePattern(good);
+    s.factorize(test::triangulated_grid(21));
+    REQUIRE(s.info() == Eigen::InvalidInput);
+    Real_matrix extra = good;
+    extra.coeffRef(399, 0) = -0.5;
+    s.factorize(extra);
+    REQUIRE(s.info() == Eigen::InvalidInput);
+    s.factorize(good);
+    REQUIRE(s.info() == Eigen::Success);
+  }
+  SECTION("no analysis") {
+    SD::Supernodal_cholesky<Real_matrix> s;
+    s.factorize(good);
+    REQUIRE(s.info() == Eigen::InvalidInput);
+  }
+}
+
+TEMPLATE_TEST_CASE("Supernodal Cholesky through a package: the smoothest field as with the default solver",
+                   "[supernodal]", SD_MESH_TYPES)
+{
+  // the Lanczos iteration is deterministic given the solves: the same field to 1e-9 when the
+  // solves agree to 1e-10 (the fields are unit vectors with a fixed global phase from the same
+  // start vector)
+  for(const std::string name : {"bunny_1k.off", "hemisphere.off"})
+  {
+    INFO(name);
+    const TestType mesh = test::load_mesh<TestType>(name);
+    using Field = std::map<typename boost::graph_traits<TestType>::vertex_descriptor, test::Kernel::Vector_3>;
+    Field reference, supernodal;
+    const auto a = SD::smoothest_direction_field(mesh, boost::make_assoc_property_map(reference),
+                                                 SD::parameters::symmetry_order(4));
+    const auto b = SD::smoothest_direction_field(
+      mesh, boost::make_assoc_property_map(supernodal),
+      SD::parameters::symmetry_order(4, SD::parameters::sparse_linear_solver(SD::Supernodal_solver_traits())));
+    REQUIRE(a.iterations == b.iterations);
+    REQUIRE(std::abs(a.eigenvalues[0] - b.eigenvalues[0]) <= 1e-10 * a.eigenvalues[0]);
+    double difference = 0.;
+    for(const auto& [v, u] : reference)
+      difference = std::max(difference, std::sqrt((u - supernodal.at(v)).squared_length()));
+    REQUIRE(difference <= 1e-9);
+  }
+}
