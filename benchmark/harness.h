@@ -9,6 +9,7 @@
 #define CGAL_SURFACE_DESIGN_BENCHMARK_HARNESS_H
 
 #include <CGAL/Surface_design/nested_dissection_ordering.h>
+#include <CGAL/Surface_design/supernodal_cholesky.h>
 #include <CGAL/Surface_design/solver_traits.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -190,6 +191,7 @@ inline const std::vector<Solver_info>& known_solvers()
     {"ldlt", "Default_solver_traits: Eigen SimplicialLDLT, AMD ordering", true, ""},
     {"ldlt-nd", "Nested_dissection_ldlt_solver_traits: Eigen SimplicialLDLT, the library's nested dissection",
      true, ""},
+    {"supernodal", "Supernodal_solver_traits: the library's supernodal Cholesky, nested dissection", true, ""},
     {"ldlt-metis", "Metis_ldlt_solver_traits: Eigen SimplicialLDLT, METIS nested dissection",
      has_metis, "built without METIS: CGAL_SURFACE_DESIGN_HAS_METIS is not defined"},
     {"cholmod", "Cholmod_solver_traits: CHOLMOD supernodal LLT, AMD ordering, on the loaded BLAS", has_cholmod,
@@ -220,7 +222,7 @@ struct Solver_tag
 };
 
 /// Calls `f(Solver_tag<Traits>())` with the traits named `solver` ("ldlt": the library's
-/// `Default_solver_traits`, "ldlt-nd": `Nested_dissection_ldlt_solver_traits`, "ldlt-metis": `Metis_ldlt_solver_traits`, "cholmod":
+/// `Default_solver_traits`, "ldlt-nd": `Nested_dissection_ldlt_solver_traits`, "supernodal": `Supernodal_solver_traits`, "ldlt-metis": `Metis_ldlt_solver_traits`, "cholmod":
 /// `Cholmod_solver_traits`).
 /// \throws std::invalid_argument for a name that is not in `compiled_solvers()`.
 template <class F>
@@ -230,6 +232,8 @@ void with_solver_traits(const std::string& solver, F&& f)
     f(Solver_tag<CGAL::Surface_design::Default_solver_traits>());
   else if(solver == "ldlt-nd")
     f(Solver_tag<CGAL::Surface_design::Nested_dissection_ldlt_solver_traits>());
+  else if(solver == "supernodal")
+    f(Solver_tag<CGAL::Surface_design::Supernodal_solver_traits>());
 #if defined(CGAL_SURFACE_DESIGN_HAS_METIS)
   else if(solver == "ldlt-metis")
     f(Solver_tag<CGAL::Surface_design::Metis_ldlt_solver_traits>());

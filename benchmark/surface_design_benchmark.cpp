@@ -144,7 +144,7 @@ const char* const usage =
   "                   (repeatable; default: preset quick)\n"
   "  --preset NAME    a named list of meshes (repeatable; see --list); without --workload,\n"
   "                   runs the workloads the preset is meant for\n"
-  "  --solver S       ldlt, ldlt-nd, ldlt-metis, cholmod, a comma-separated list, or all (default: all);\n"
+  "  --solver S       ldlt, ldlt-nd, supernodal, ldlt-metis, cholmod, a comma-separated list, or all (default: all);\n"
   "                   the first is the baseline of the comparisons\n"
   "  --warmup W       unmeasured runs first (default 1)\n"
   "  --runs R         measured runs (default 5)\n"

@@ -12,6 +12,7 @@
 #include "workload_laplacian.h"
 
 #include <CGAL/Surface_design/nested_dissection_ordering.h>
+#include <CGAL/Surface_design/supernodal_cholesky.h>
 
 #include <Eigen/OrderingMethods>
 #include <Eigen/SparseCholesky>
@@ -51,7 +52,7 @@ struct Given_ordering
 
 /// The fill-reducing order of the symmetric matrix `a` for the solver name: AMD for "ldlt"
 /// (Eigen's, as the default solver), METIS for "ldlt-metis", the library's nested dissection for
-/// "ldlt-nd" and "cholmod".
+/// "ldlt-nd", "supernodal" and "cholmod".
 inline Permutation ordering(const std::string& solver, const SDI::Sparse_matrix& a)
 {
   Permutation p;
@@ -98,6 +99,35 @@ inline void run_eigen(const std::string& solver, const SDI::Sparse_matrix& a, co
   if(run.checks_enabled())
   {
     report_fill(ldlt.matrixL().nestedExpression(), run);
+    run.check("relative residual |Ax-b|/|b|", (a * x - b).norm() / b.norm(), laplacian_detail::residual_bound);
+  }
+}
+
+/// The library's supernodal Cholesky in its phases: the nested dissection of the lower triangle
+/// (as `Supernodal_cholesky` orders), the symbolic analysis (postorder, supernodes, structures,
+/// entry map), the numeric factorization, one solve.
+inline void run_supernodal(const SDI::Sparse_matrix& a, const Eigen::VectorXd& b, Run& run)
+{
+  const SDI::Sparse_matrix lower = a.triangularView<Eigen::Lower>();
+  Permutation p;
+  run.phase("ordering", [&] { CGAL::Surface_design::Nested_dissection_ordering<int>()(lower, p); });
+  std::shared_ptr<const SDI::Supernodal_symbolic> symbolic;
+  run.phase("symbolic", [&] {
+    symbolic = SDI::supernodal_analysis(lower, std::vector<int>(p.indices().data(), p.indices().data() + p.size()));
+  });
+  SDI::Supernodal_factor<double> factor;
+  Eigen::Index failed = 0;
+  run.phase("numeric", [&] { failed = factor.factorize(symbolic, lower); });
+  if(failed != -1)
+    throw std::runtime_error("the supernodal factorization failed at column " + std::to_string(failed));
+  Eigen::VectorXd x;
+  run.phase("solve", [&] { factor.solve(b, x); });
+  run.sum_phase("first solve", {"ordering", "symbolic", "numeric", "solve"});
+  if(run.checks_enabled())
+  {
+    run.check("nnz(L), strictly lower (explicit zeros of supernodes included)", symbolic->factor_nonzeros, 1e300);
+    run.check("factor multiply-adds sum_j nnz(L_j)^2", symbolic->factor_flops, 1e300);
+    run.check("supernodes", double(symbolic->supernode_count()), 1e300);
     run.check("relative residual |Ax-b|/|b|", (a * x - b).norm() / b.norm(), laplacian_detail::residual_bound);
   }
 }
@@ -170,8 +200,9 @@ inline void run_cholmod(const SDI::Sparse_matrix& a, const Eigen::VectorXd& b, R
 } // namespace factorization_detail
 
 /// Phases: `ordering` (AMD for `ldlt`, METIS for `ldlt-metis`, the library's nested dissection for
-/// `ldlt-nd` and `cholmod`), `symbolic` (Eigen's `analyzePattern` with that order, or
-/// `cholmod_analyze_p`), `numeric` (`factorize` / `cholmod_factorize`, supernodal), `solve`
+/// `ldlt-nd`, `supernodal` and `cholmod`), `symbolic` (Eigen's `analyzePattern` with that order,
+/// the supernodal analysis or `cholmod_analyze_p`), `numeric` (`factorize`, the supernodal
+/// factorization or `cholmod_factorize`), `solve`
 /// (one right-hand side), `first solve` = their sum. Checks: fill and flops of the factor, the
 /// relative residual. The system is that of workload `laplacian`, assembled untimed.
 inline void factorization_workload(const Mesh& mesh, const std::string& solver, Run& run)
@@ -187,6 +218,11 @@ inline void factorization_workload(const Mesh& mesh, const std::string& solver, 
     return;
   }
 #endif
+  if(solver == "supernodal")
+  {
+    factorization_detail::run_supernodal(a, b, run);
+    return;
+  }
   factorization_detail::run_eigen(solver, a, b, run);
 }
 

@@ -201,6 +201,41 @@ TEST_CASE("Supernodal Cholesky: Hermitian systems, in complex arithmetic through
     REQUIRE(std::abs(std::complex<double>(y[2 * i], y[2 * i + 1]) - reference[i]) <= 1e-10 * reference.norm());
 }
 
+TEST_CASE("Supernodal Cholesky: concurrent subtrees and blocked dense kernels give the sequential factor",
+          "[supernodal]")
+{
+  // the grid's tree has enough work for concurrent subtree tasks and separator fronts of several
+  // hundred rows; the complete graph is one front of 600 rows, factored by blocks of columns
+  std::vector<std::pair<int, int>> edges;
+  for(int i = 0; i < 600; ++i)
+    for(int j = i + 1; j < 600; ++j)
+      edges.push_back({i, j});
+  for(const Real_matrix& a : {test::triangulated_grid(CGAL_SURFACE_DESIGN_TESTS_UNDER_SANITIZERS ? 150 : 300),
+                              test::graph_matrix(600, edges)})
+  {
+    INFO(a.rows() << " unknowns");
+    SD::Supernodal_cholesky<Real_matrix> analysed;
+    analysed.analyzePattern(a);
+    SDI::Supernodal_factor<double> sequential, concurrent;
+    REQUIRE(sequential.factorize(analysed.analysis(), a, false) == -1);
+    REQUIRE(concurrent.factorize(analysed.analysis(), a, true) == -1);
+    const Eigen::VectorXd d = sequential.pivots();
+    REQUIRE((concurrent.pivots() - d).cwiseAbs().maxCoeff() <= 1e-12 * d.maxCoeff());
+    const Eigen::VectorXd b = test::test_vector(a.rows(), 2);
+    Eigen::VectorXd x, y;
+    sequential.solve(b, x);
+    concurrent.solve(b, y);
+    REQUIRE((a * y - b).norm() <= 1e-10 * a.norm() * y.norm());
+    REQUIRE((x - y).norm() <= 1e-12 * x.norm());
+    // a failure inside a concurrent task is reported, not lost
+    Real_matrix broken = a;
+    broken.coeffRef(7, 7) = -1e3;
+    SDI::Supernodal_factor<double> failing;
+    REQUIRE(failing.factorize(analysed.analysis(), broken, true) != -1);
+    REQUIRE_FALSE(failing.is_factored());
+  }
+}
+
 TEST_CASE("Supernodal Cholesky: clear failures, nothing solved with a bad factor", "[supernodal]")
 {
   const Real_matrix good = test::triangulated_grid(20);

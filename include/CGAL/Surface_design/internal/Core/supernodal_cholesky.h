@@ -25,12 +25,14 @@
 #define CGAL_SURFACE_DESIGN_INTERNAL_CORE_SUPERNODAL_CHOLESKY_H
 
 #include <CGAL/Surface_design/internal/Core/nested_dissection.h>
+#include <CGAL/Surface_design/internal/Core/parallel.h>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -43,6 +45,10 @@
 
 #if defined(__linux__)
 #include <sys/mman.h>
+#endif
+
+#if defined(CGAL_LINKED_WITH_TBB)
+#include <tbb/task_arena.h>
 #endif
 
 namespace CGAL {
@@ -58,6 +64,9 @@ struct Supernodal_symbolic
   std::vector<int> old_of_new;              // old_of_new[k]: original index of permuted unknown k
   std::vector<int> first;                   // supernode s holds permuted columns [first[s], first[s+1])
   std::vector<int> parent;                  // parent supernode, -1 for roots
+  std::vector<int> child_offsets, children; // children of s: children[child_offsets[s] .. child_offsets[s+1])
+  std::vector<int> subtree_first;           // the subtree of s is the supernodes [subtree_first[s], s]
+  std::vector<double> subtree_work;         // multiply-adds of the factorization of that subtree
   std::vector<std::int64_t> row_offsets;    // rows of s: rows[row_offsets[s] .. row_offsets[s+1])
   std::vector<int> rows;                    // its columns first, then the rows below them, ascending
   std::vector<int> relative;                // aligned with rows: position of a row below s in its parent's rows
@@ -77,8 +86,8 @@ struct Supernodal_symbolic
 
 namespace supernodal_detail {
 
-/// A zero-initialized array for the factor's large buffers. On Linux it is aligned to 2 MB and
-/// advised for transparent huge pages: a factor is written once right after allocation, and with
+/// A zero-initialized array for the factor's large buffers. On Linux, from 8 MB on, it is aligned
+/// to 2 MB and advised for transparent huge pages: a factor is written once right after allocation, and with
 /// 4 kB pages the page faults of that first touch cost as much as the factorization itself on the
 /// virtual machines we measured (7 us per fault: 35 ms for the 15 MB factor of a 30k-vertex mesh).
 template <class T>
@@ -102,22 +111,30 @@ public:
   /// Makes room for `n` values, all zero.
   void assign_zero(std::size_t n)
   {
+    resize_uninitialized(n);
+    std::fill(m_data, m_data + n, T(0));
+  }
+
+  /// Makes room for `n` values (kept when the buffer already had room; else unspecified).
+  void resize_uninitialized(std::size_t n)
+  {
     if(n > m_capacity)
     {
       std::free(m_data);
       m_data = nullptr;
       m_capacity = 0;
-      const std::size_t bytes = (n * sizeof(T) + alignment - 1) / alignment * alignment;
-      m_data = static_cast<T*>(std::aligned_alloc(alignment, bytes));
+      const bool huge = n * sizeof(T) >= 4 * alignment; // small buffers: ordinary pages, no rounding
+      const std::size_t bytes = huge ? (n * sizeof(T) + alignment - 1) / alignment * alignment : n * sizeof(T);
+      m_data = static_cast<T*>(huge ? std::aligned_alloc(alignment, bytes) : std::malloc(bytes));
       if(m_data == nullptr)
         throw std::bad_alloc();
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-      madvise(m_data, bytes, MADV_HUGEPAGE); // advice only: failure leaves ordinary pages
+      if(huge)
+        madvise(m_data, bytes, MADV_HUGEPAGE); // advice only: failure leaves ordinary pages
 #endif
       m_capacity = bytes / sizeof(T);
     }
     m_size = n;
-    std::fill(m_data, m_data + n, T(0));
   }
 
   T* data() { return m_data; }
@@ -390,6 +407,8 @@ std::shared_ptr<Supernodal_symbolic> supernodal_analysis(const SparseMatrixType&
       if(sym.parent[std::size_t(s)] != -1)
         child_list[std::size_t(fill[std::size_t(sym.parent[std::size_t(s)])]++)] = s;
   }
+  sym.subtree_first.resize(uns);
+  sym.subtree_work.assign(uns, 0.);
 
   // 3. row structures, children's relative positions, panels, workspaces
   sym.row_offsets.assign(uns + 1, 0);
@@ -460,13 +479,25 @@ std::shared_ptr<Supernodal_symbolic> supernodal_analysis(const SparseMatrixType&
     sym.largest_below = std::max(sym.largest_below, below);
     stack = stack - popped + below * below;
     sym.stack_size = std::max(sym.stack_size, stack);
+    double work = 0.;
     for(std::size_t t = 0; t < columns; ++t)
     {
       const double c = double(row_count - t - 1); // below the diagonal in column t
       sym.factor_nonzeros += c;
-      sym.factor_flops += c * c;
+      work += c * c;
+    }
+    sym.factor_flops += work;
+    sym.subtree_first[std::size_t(s)] = s;
+    sym.subtree_work[std::size_t(s)] += work;
+    for(int p = child_offsets[std::size_t(s)]; p < child_offsets[std::size_t(s) + 1]; ++p)
+    {
+      const int c = child_list[std::size_t(p)];
+      sym.subtree_first[std::size_t(s)] = std::min(sym.subtree_first[std::size_t(s)], sym.subtree_first[std::size_t(c)]);
+      sym.subtree_work[std::size_t(s)] += sym.subtree_work[std::size_t(c)];
     }
   }
+  sym.child_offsets = std::move(child_offsets);
+  sym.children = std::move(child_list);
 
   sym.old_of_new = std::move(old_of_new);
   return result;
@@ -482,66 +513,51 @@ public:
   using Map = Eigen::Map<Dense>;
   using Const_map = Eigen::Map<const Dense>;
 
-  /// Index of the first column (permuted) whose pivot is not positive, or -1 on success.
+  /// Factors the matrix `a` analysed by `symbolic`; with `parallel` (and TBB), independent subtrees
+  /// of the supernode tree are factored by concurrent tasks. Returns -1 on success, else a
+  /// (permuted) column whose pivot is not positive.
   template <class SparseMatrixType>
-  Eigen::Index factorize(std::shared_ptr<const Supernodal_symbolic> symbolic, const SparseMatrixType& a)
+  Eigen::Index factorize(std::shared_ptr<const Supernodal_symbolic> symbolic, const SparseMatrixType& a,
+                         bool parallel = true)
   {
     m_symbolic = std::move(symbolic);
+    m_parallel = parallel;
     const Supernodal_symbolic& sym = *m_symbolic;
+    const int ns = sym.supernode_count();
     m_values.assign_zero(std::size_t(sym.panel_offsets.back()));
     std::size_t e = 0;
     supernodal_detail::for_each_lower_entry(a, [&](int, int, const Scalar& v) {
       m_values.data()[sym.entry_target[e]] += sym.entry_conjugated[e] ? Eigen::numext::conj(v) : v;
       ++e;
     });
-    m_update.assign_zero(sym.update_size);
-    m_stack.assign_zero(sym.stack_size);
-    std::vector<std::pair<int, std::size_t>> stacked; // (supernode, offset of its update matrix)
-    std::size_t top = 0;
-    for(int s = 0; s < sym.supernode_count(); ++s)
+
+    // subtrees for concurrent tasks; the rest (the top of the tree) is factored afterwards
+    std::vector<int> task_of(std::size_t(ns), -1);
+    const std::vector<int> tasks = parallel ? parallel_subtrees(sym, task_of) : std::vector<int>();
+    std::vector<std::vector<Scalar>> kept(tasks.empty() ? 0 : std::size_t(ns)); // update matrices of task roots
+    std::atomic<Eigen::Index> failed(-1);
+    m_workspaces.resize(tasks.size() + 1); // kept between factorizations: no new pages
+    for_each_index(tasks.size(), true, [&](std::size_t t) {
+      const int root = tasks[t];
+      Workspace& w = m_workspaces[t + 1];
+      w.reserve(sym, sym.subtree_first[std::size_t(root)], root + 1, task_of, int(t));
+      for(int s = sym.subtree_first[std::size_t(root)]; s <= root && failed.load() == -1; ++s)
+        if(!factor_supernode(s, w, kept, s == root))
+          failed.store(sym.first[std::size_t(s)]);
+    });
+    if(failed.load() != -1)
     {
-      const Eigen::Index columns = sym.columns(s), row_count = sym.row_count(s), below = row_count - columns;
-      Map panel(m_values.data() + sym.panel_offsets[std::size_t(s)], row_count, columns);
-      Map update(m_update.data(), below, below);
-      update.template triangularView<Eigen::Lower>().setZero();
-      // extend-add of the children's update matrices (on top of the stack)
-      while(!stacked.empty() && sym.parent[std::size_t(stacked.back().first)] == s)
-      {
-        const int c = stacked.back().first;
-        const Eigen::Index child_below = sym.row_count(c) - sym.columns(c);
-        const Const_map child_update(m_stack.data() + stacked.back().second, child_below, child_below);
-        const int* relative = sym.relative.data() + sym.row_offsets[std::size_t(c)] + sym.columns(c);
-        for(Eigen::Index q = 0; q < child_below; ++q)
-        {
-          const Eigen::Index target = relative[q];
-          if(target < columns)
-            for(Eigen::Index r = q; r < child_below; ++r)
-              panel(relative[r], target) += child_update(r, q);
-          else
-            for(Eigen::Index r = q; r < child_below; ++r)
-              update(relative[r] - columns, target - columns) += child_update(r, q);
-        }
-        top = stacked.back().second;
-        stacked.pop_back();
-      }
-      // dense partial factorization of the front
-      auto diagonal = panel.topRows(columns);
-      Eigen::LLT<Eigen::Ref<Dense>, Eigen::Lower> llt(diagonal);
-      if(llt.info() != Eigen::Success)
+      m_symbolic.reset();
+      return failed.load();
+    }
+    Workspace& w = m_workspaces[0];
+    w.reserve(sym, 0, ns, task_of, -1);
+    for(int s = 0; s < ns; ++s)
+      if(task_of[std::size_t(s)] == -1 && !factor_supernode(s, w, kept, false))
       {
         m_symbolic.reset();
         return sym.first[std::size_t(s)];
       }
-      if(below > 0)
-      {
-        auto off_diagonal = panel.bottomRows(below);
-        diagonal.template triangularView<Eigen::Lower>().adjoint().template solveInPlace<Eigen::OnTheRight>(off_diagonal);
-        update.template selfadjointView<Eigen::Lower>().rankUpdate(off_diagonal, RealScalar(-1));
-        std::copy(m_update.data(), m_update.data() + below * below, m_stack.data() + top);
-        stacked.emplace_back(s, top);
-        top += std::size_t(below * below);
-      }
-    }
     return -1;
   }
 
@@ -608,9 +624,239 @@ public:
   }
 
 private:
+  // Dense kernels of the fronts. Large fronts (at the top of a nested-dissection tree: the
+  // separators, up to a few thousand rows) hold half of the flops and come after the subtrees'
+  // tasks; with TBB they are cut into blocks of rows or columns factored concurrently.
+  static constexpr Eigen::Index block_size = 128;
+  static constexpr Eigen::Index parallel_front = 384; // fronts at least this large use the blocked kernels
+
+  bool use_blocks(Eigen::Index rows) const
+  {
+#if defined(CGAL_LINKED_WITH_TBB)
+    return m_parallel && rows >= parallel_front && tbb::this_task_arena::max_concurrency() > 1;
+#else
+    (void)rows;
+    return false;
+#endif
+  }
+
+  // x = x l^-H for the lower triangular l: independent rows, solved by blocks of rows
+  template <class X, class L>
+  void solve_right_adjoint(X& x, const L& l) const
+  {
+    if(!use_blocks(x.rows()))
+    {
+      l.template triangularView<Eigen::Lower>().adjoint().template solveInPlace<Eigen::OnTheRight>(x);
+      return;
+    }
+    const Eigen::Index blocks = (x.rows() + block_size - 1) / block_size;
+    for_each_index(std::size_t(blocks), true, [&](std::size_t b) {
+      const Eigen::Index r0 = Eigen::Index(b) * block_size, rows = std::min(block_size, x.rows() - r0);
+      auto part = x.middleRows(r0, rows);
+      l.template triangularView<Eigen::Lower>().adjoint().template solveInPlace<Eigen::OnTheRight>(part);
+    });
+  }
+
+  // lower triangle of u -= a a^H, by blocks of columns: the diagonal block by a symmetric
+  // rank update, the rows below it by a matrix product
+  template <class U, class A>
+  void rank_update(U& u, const A& a) const
+  {
+    if(!use_blocks(u.rows()))
+    {
+      u.template selfadjointView<Eigen::Lower>().rankUpdate(a, RealScalar(-1));
+      return;
+    }
+    const Eigen::Index blocks = (u.rows() + block_size - 1) / block_size;
+    for_each_index(std::size_t(blocks), true, [&](std::size_t b) {
+      const Eigen::Index c0 = Eigen::Index(b) * block_size, width = std::min(block_size, u.rows() - c0);
+      auto diagonal_block = u.block(c0, c0, width, width);
+      diagonal_block.template selfadjointView<Eigen::Lower>().rankUpdate(a.middleRows(c0, width), RealScalar(-1));
+      const Eigen::Index rest = u.rows() - c0 - width;
+      if(rest > 0)
+        u.block(c0 + width, c0, rest, width).noalias() -= a.bottomRows(rest) * a.middleRows(c0, width).adjoint();
+    });
+  }
+
+  // in-place Cholesky factorization of the lower triangle of d; right-looking by blocks of
+  // columns for large d. False if a pivot is not positive.
+  template <class D>
+  bool dense_cholesky(D& d) const
+  {
+    const Eigen::Index n = d.rows();
+    const Eigen::Index step = use_blocks(n) ? block_size : n;
+    for(Eigen::Index k0 = 0; k0 < n; k0 += step)
+    {
+      const Eigen::Index width = std::min(step, n - k0), rest = n - k0 - width;
+      auto pivot_block = d.block(k0, k0, width, width);
+      Eigen::LLT<Eigen::Ref<Dense>, Eigen::Lower> llt(pivot_block);
+      if(llt.info() != Eigen::Success)
+        return false;
+      if(rest > 0)
+      {
+        auto below = d.block(k0 + width, k0, rest, width);
+        solve_right_adjoint(below, pivot_block);
+        auto trailing = d.bottomRightCorner(rest, rest);
+        rank_update(trailing, below);
+      }
+    }
+    return true;
+  }
+
+  // The update matrices of one sequence of supernodes: a stack (children are on top when their
+  // parent comes) and the front's own update matrix.
+  struct Workspace
+  {
+    supernodal_detail::Large_buffer<Scalar> update, stack;
+    std::vector<std::pair<int, std::size_t>> stacked; // (supernode, offset of its update matrix)
+    std::size_t top = 0;
+
+    // sizes for the supernodes s in [begin, end) with task_of[s] == task
+    void reserve(const Supernodal_symbolic& sym, int begin, int end, const std::vector<int>& task_of, int task)
+    {
+      std::size_t largest = 0, height = 0, peak = 0;
+      std::vector<std::size_t> sizes;
+      for(int s = begin; s < end; ++s)
+      {
+        if(task_of[std::size_t(s)] != task)
+          continue;
+        const std::size_t below = std::size_t(sym.row_count(s) - sym.columns(s));
+        largest = std::max(largest, below * below);
+        for(int p = sym.child_offsets[std::size_t(s)]; p < sym.child_offsets[std::size_t(s) + 1]; ++p)
+        {
+          const int c = sym.children[std::size_t(p)];
+          if(task_of[std::size_t(c)] == task)
+          {
+            const std::size_t child_below = std::size_t(sym.row_count(c) - sym.columns(c));
+            height -= child_below * child_below;
+          }
+        }
+        height += below * below;
+        peak = std::max(peak, height);
+      }
+      update.resize_uninitialized(largest); // each front clears its part
+      stack.resize_uninitialized(peak);     // written before read
+      stacked.clear();
+      top = 0;
+    }
+  };
+
+  // Assembles the children's update matrices into the front of s, factors its panel and pushes
+  // its update matrix (into kept[s] for the root of a task). False if a pivot is not positive.
+  bool factor_supernode(int s, Workspace& w, std::vector<std::vector<Scalar>>& kept, bool keep)
+  {
+    const Supernodal_symbolic& sym = *m_symbolic;
+    const Eigen::Index columns = sym.columns(s), row_count = sym.row_count(s), below = row_count - columns;
+    Map panel(m_values.data() + sym.panel_offsets[std::size_t(s)], row_count, columns);
+    Map update(w.update.data(), below, below);
+    update.template triangularView<Eigen::Lower>().setZero();
+    auto extend_add = [&](int c, const Scalar* values) {
+      const Eigen::Index child_below = sym.row_count(c) - sym.columns(c);
+      const Const_map child_update(values, child_below, child_below);
+      const int* relative = sym.relative.data() + sym.row_offsets[std::size_t(c)] + sym.columns(c);
+      for(Eigen::Index q = 0; q < child_below; ++q)
+      {
+        const Eigen::Index target = relative[q];
+        if(target < columns)
+          for(Eigen::Index r = q; r < child_below; ++r)
+            panel(relative[r], target) += child_update(r, q);
+        else
+          for(Eigen::Index r = q; r < child_below; ++r)
+            update(relative[r] - columns, target - columns) += child_update(r, q);
+      }
+    };
+    while(!w.stacked.empty() && sym.parent[std::size_t(w.stacked.back().first)] == s)
+    {
+      extend_add(w.stacked.back().first, w.stack.data() + w.stacked.back().second);
+      w.top = w.stacked.back().second;
+      w.stacked.pop_back();
+    }
+    if(!kept.empty())
+      for(int p = sym.child_offsets[std::size_t(s)]; p < sym.child_offsets[std::size_t(s) + 1]; ++p)
+      {
+        std::vector<Scalar>& child = kept[std::size_t(sym.children[std::size_t(p)])];
+        if(!child.empty())
+        {
+          extend_add(sym.children[std::size_t(p)], child.data());
+          std::vector<Scalar>().swap(child);
+        }
+      }
+    // dense partial factorization of the front: L11 = chol(F11), L21 = F21 L11^-H, U -= L21 L21^H
+    auto diagonal = panel.topRows(columns);
+    auto off_diagonal = panel.bottomRows(below);
+    if(!dense_cholesky(diagonal))
+      return false;
+    if(below > 0)
+    {
+      solve_right_adjoint(off_diagonal, diagonal);
+      rank_update(update, off_diagonal);
+      if(keep)
+        kept[std::size_t(s)].assign(w.update.data(), w.update.data() + below * below);
+      else
+      {
+        std::copy(w.update.data(), w.update.data() + below * below, w.stack.data() + w.top);
+        w.stacked.emplace_back(s, w.top);
+        w.top += std::size_t(below * below);
+      }
+    }
+    return true;
+  }
+
+  // Roots of disjoint subtrees for concurrent tasks, largest first (empty without TBB, with one
+  // thread, or for small factorizations): the heaviest subtree is split (its root stays for the
+  // sequential top) until every subtree holds at most 1/8 of a thread's share of the work.
+  // task_of[s] is set to the task of each supernode of those subtrees.
+  static std::vector<int> parallel_subtrees(const Supernodal_symbolic& sym, std::vector<int>& task_of)
+  {
+    std::vector<int> tasks;
+#if defined(CGAL_LINKED_WITH_TBB)
+    const int threads = tbb::this_task_arena::max_concurrency();
+    double total = 0.;
+    std::vector<std::pair<double, int>> heap;
+    for(int s = 0; s < sym.supernode_count(); ++s)
+      if(sym.parent[std::size_t(s)] == -1)
+      {
+        total += sym.subtree_work[std::size_t(s)];
+        heap.emplace_back(sym.subtree_work[std::size_t(s)], s);
+      }
+    if(threads < 2 || total < parallel_work_threshold)
+      return tasks;
+    const double limit = total / (8. * threads);
+    std::make_heap(heap.begin(), heap.end());
+    while(!heap.empty())
+    {
+      std::pop_heap(heap.begin(), heap.end());
+      const auto [work, s] = heap.back();
+      heap.pop_back();
+      if(work <= limit)
+      {
+        tasks.push_back(s);
+        continue;
+      }
+      for(int p = sym.child_offsets[std::size_t(s)]; p < sym.child_offsets[std::size_t(s) + 1]; ++p)
+      {
+        const int c = sym.children[std::size_t(p)];
+        heap.emplace_back(sym.subtree_work[std::size_t(c)], c);
+        std::push_heap(heap.begin(), heap.end());
+      }
+    }
+    for(std::size_t t = 0; t < tasks.size(); ++t)
+      for(int s = sym.subtree_first[std::size_t(tasks[t])]; s <= tasks[t]; ++s)
+        task_of[std::size_t(s)] = int(t);
+#else
+    (void)sym;
+    (void)task_of;
+#endif
+    return tasks;
+  }
+
+  // below this many multiply-adds a factorization is not worth splitting into tasks
+  static constexpr double parallel_work_threshold = 2e7;
+
   std::shared_ptr<const Supernodal_symbolic> m_symbolic;
   supernodal_detail::Large_buffer<Scalar> m_values; // the panels of L
-  supernodal_detail::Large_buffer<Scalar> m_update, m_stack;
+  std::vector<Workspace> m_workspaces;              // the top's, then one per task
+  bool m_parallel = true;
 };
 
 } // namespace internal
