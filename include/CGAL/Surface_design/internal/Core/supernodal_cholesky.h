@@ -86,15 +86,18 @@ struct Supernodal_symbolic
 
 namespace supernodal_detail {
 
-/// A zero-initialized array for the factor's large buffers. On Linux, from 8 MB on, it is aligned
-/// to 2 MB and advised for transparent huge pages: a factor is written once right after allocation, and with
-/// 4 kB pages the page faults of that first touch cost as much as the factorization itself on the
-/// virtual machines we measured (7 us per fault: 35 ms for the 15 MB factor of a 30k-vertex mesh).
+/// An array for the factor's large buffers. On Linux, from 512 kB on, it is mapped directly from
+/// the kernel (pages that come zeroed, so a fresh buffer needs no clearing pass), aligned to 2 MB
+/// and advised for transparent huge pages: a factor is written once right after allocation, and
+/// with 4 kB pages the page faults of that first touch cost as much as the factorization itself on
+/// the virtual machines we measured (7 us per fault: 35 ms for the 15 MB factor of a 30k-vertex
+/// mesh). Elsewhere, and for small buffers, it comes from malloc.
 template <class T>
 class Large_buffer
 {
   static_assert(std::is_trivially_copyable<T>::value, "plain numbers only");
-  static constexpr std::size_t alignment = std::size_t(1) << 21;
+  static constexpr std::size_t huge_page = std::size_t(1) << 21;
+  static constexpr std::size_t mapped_from = std::size_t(1) << 19;
 
 public:
   Large_buffer() = default;
@@ -106,35 +109,48 @@ public:
     Large_buffer(std::move(other)).swap(*this);
     return *this;
   }
-  ~Large_buffer() { std::free(m_data); }
+  ~Large_buffer() { release(); }
 
   /// Makes room for `n` values, all zero.
   void assign_zero(std::size_t n)
   {
-    resize_uninitialized(n);
-    std::fill(m_data, m_data + n, T(0));
+    if(!resize_uninitialized(n))
+      std::fill(m_data, m_data + n, T(0));
   }
 
-  /// Makes room for `n` values (kept when the buffer already had room; else unspecified).
-  void resize_uninitialized(std::size_t n)
+  /// Makes room for `n` values (kept when the buffer already had room). Returns true when the
+  /// values are known to be zero (fresh pages from the kernel).
+  bool resize_uninitialized(std::size_t n)
   {
-    if(n > m_capacity)
-    {
-      std::free(m_data);
-      m_data = nullptr;
-      m_capacity = 0;
-      const bool huge = n * sizeof(T) >= 4 * alignment; // small buffers: ordinary pages, no rounding
-      const std::size_t bytes = huge ? (n * sizeof(T) + alignment - 1) / alignment * alignment : n * sizeof(T);
-      m_data = static_cast<T*>(huge ? std::aligned_alloc(alignment, bytes) : std::malloc(bytes));
-      if(m_data == nullptr)
-        throw std::bad_alloc();
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-      if(huge)
-        madvise(m_data, bytes, MADV_HUGEPAGE); // advice only: failure leaves ordinary pages
-#endif
-      m_capacity = bytes / sizeof(T);
-    }
     m_size = n;
+    if(n <= m_capacity)
+      return false;
+    release();
+    const std::size_t bytes = n * sizeof(T);
+#if defined(__linux__) && defined(MAP_ANONYMOUS)
+    if(bytes >= mapped_from)
+    {
+      const std::size_t length = (bytes + 2 * huge_page - 1) / huge_page * huge_page; // room to align
+      void* base = mmap(nullptr, length, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+      if(base == MAP_FAILED)
+        throw std::bad_alloc();
+      m_mapped = base;
+      m_mapped_length = length;
+      const std::uintptr_t address = reinterpret_cast<std::uintptr_t>(base);
+      const std::uintptr_t aligned = (address + huge_page - 1) / huge_page * huge_page;
+      m_data = reinterpret_cast<T*>(aligned);
+#if defined(MADV_HUGEPAGE)
+      madvise(reinterpret_cast<void*>(aligned), length - (aligned - address), MADV_HUGEPAGE); // advice only
+#endif
+      m_capacity = (length - (aligned - address)) / sizeof(T);
+      return true;
+    }
+#endif
+    m_data = static_cast<T*>(std::malloc(bytes));
+    if(m_data == nullptr)
+      throw std::bad_alloc();
+    m_capacity = n;
+    return false;
   }
 
   T* data() { return m_data; }
@@ -142,15 +158,32 @@ public:
   std::size_t size() const { return m_size; }
 
 private:
+  void release() noexcept
+  {
+#if defined(__linux__) && defined(MAP_ANONYMOUS)
+    if(m_mapped != nullptr)
+      munmap(m_mapped, m_mapped_length);
+    else
+#endif
+      std::free(m_data);
+    m_data = nullptr;
+    m_mapped = nullptr;
+    m_capacity = m_mapped_length = 0;
+  }
+
   void swap(Large_buffer& other) noexcept
   {
     std::swap(m_data, other.m_data);
     std::swap(m_size, other.m_size);
     std::swap(m_capacity, other.m_capacity);
+    std::swap(m_mapped, other.m_mapped);
+    std::swap(m_mapped_length, other.m_mapped_length);
   }
 
   T* m_data = nullptr;
   std::size_t m_size = 0, m_capacity = 0;
+  void* m_mapped = nullptr; // the mapping holding m_data, if mapped
+  std::size_t m_mapped_length = 0;
 };
 
 /// The lower-triangle entries of a sparse matrix (row >= column), visited in storage order.
