@@ -200,19 +200,7 @@ TEST_CASE("Nested dissection LDLT: Hermitian systems in complex arithmetic", "[o
   REQUIRE((x - amd.solve(b)).norm() <= 1e-10 * x.norm());
 
   // the library's Hermitian systems take the complex path with these traits, as with the default
-  static_assert(!std::is_void<SDI::Complex_solver_of<SD::Nested_dissection_ldlt_solver_traits>::type>::value);
-  SDI::Hermitian_system<SD::Nested_dissection_ldlt_solver_traits> system(SD::Nested_dissection_ldlt_solver_traits(),
-                                                                        "Hermitian test system");
-  system.factor(Complex_matrix(a));
-  Eigen::VectorXd interleaved(2 * b.size()), y;
-  for(Eigen::Index i = 0; i < b.size(); ++i)
-  {
-    interleaved[2 * i] = b[i].real();
-    interleaved[2 * i + 1] = b[i].imag();
-  }
-  system.solve(interleaved, y);
-  for(Eigen::Index i = 0; i < b.size(); ++i)
-    REQUIRE(std::abs(std::complex<double>(y[2 * i], y[2 * i + 1]) - x[i]) <= 1e-10 * x.norm());
+  test::require_hermitian_system_solution<SD::Nested_dissection_ldlt_solver_traits>(a, b, x);
 }
 
 TEMPLATE_TEST_CASE("Nested dissection LDLT and the supernodal Cholesky through a package: BFF flattens exactly as "

@@ -185,20 +185,9 @@ TEST_CASE("Supernodal Cholesky: Hermitian systems, in complex arithmetic through
     test::magnetic_laplacian(test::screened_laplacian(test::load_mesh<test::Surface_mesh>("kitten.off")));
   require_factor_of_simplicial(h);
 
-  static_assert(SDI::Hermitian_system<SD::Supernodal_solver_traits>::uses_complex_arithmetic());
-  SDI::Hermitian_system<SD::Supernodal_solver_traits> system(SD::Supernodal_solver_traits(), "Hermitian test system");
-  system.factor(Complex_matrix(h));
   const Eigen::VectorXcd b = test::complex_test_vector(h.rows(), 7);
-  const Eigen::VectorXcd reference = Eigen::SimplicialLDLT<Complex_matrix>(h).solve(b);
-  Eigen::VectorXd interleaved(2 * b.size()), y;
-  for(Eigen::Index i = 0; i < b.size(); ++i)
-  {
-    interleaved[2 * i] = b[i].real();
-    interleaved[2 * i + 1] = b[i].imag();
-  }
-  system.solve(interleaved, y);
-  for(Eigen::Index i = 0; i < b.size(); ++i)
-    REQUIRE(std::abs(std::complex<double>(y[2 * i], y[2 * i + 1]) - reference[i]) <= 1e-10 * reference.norm());
+  test::require_hermitian_system_solution<SD::Supernodal_solver_traits>(
+    h, b, Eigen::SimplicialLDLT<Complex_matrix>(h).solve(b));
 }
 
 TEST_CASE("Supernodal Cholesky: concurrent subtrees and blocked dense kernels give the sequential factor",

@@ -9,10 +9,13 @@
 #define CGAL_SURFACE_DESIGN_TEST_SPARSE_TEST_MATRICES_H
 
 #include <CGAL/Surface_design/internal/Core/dec.h>
+#include <CGAL/Surface_design/internal/Core/Hermitian_system.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 
 #include <Eigen/SparseCore>
+
+#include <catch2/catch.hpp>
 
 #include <cmath>
 #include <complex>
@@ -105,6 +108,26 @@ inline Eigen::VectorXcd complex_test_vector(Eigen::Index n, unsigned seed)
   for(Eigen::Index i = 0; i < n; ++i)
     b[i] = {re[i], im[i]};
   return b;
+}
+
+/// Requires the library's Hermitian system with `SolverTraits` to take the complex path and to
+/// solve `a y = b` (vectors interleaved as (Re, Im)) as the reference solution `x`, to 1e-10.
+template <class SolverTraits>
+void require_hermitian_system_solution(const Complex_matrix& a, const Eigen::VectorXcd& b, const Eigen::VectorXcd& x)
+{
+  namespace SDI = CGAL::Surface_design::internal;
+  static_assert(SDI::Hermitian_system<SolverTraits>::uses_complex_arithmetic());
+  SDI::Hermitian_system<SolverTraits> system(SolverTraits(), "Hermitian test system");
+  system.factor(Complex_matrix(a));
+  Eigen::VectorXd interleaved(2 * b.size()), y;
+  for(Eigen::Index i = 0; i < b.size(); ++i)
+  {
+    interleaved[2 * i] = b[i].real();
+    interleaved[2 * i + 1] = b[i].imag();
+  }
+  system.solve(interleaved, y);
+  for(Eigen::Index i = 0; i < b.size(); ++i)
+    REQUIRE(std::abs(std::complex<double>(y[2 * i], y[2 * i + 1]) - x[i]) <= 1e-10 * x.norm());
 }
 
 } // namespace test
