@@ -144,6 +144,33 @@ TEMPLATE_TEST_CASE("Nested dissection: a permutation of mesh Laplacians, several
   }
 }
 
+TEST_CASE("Nested dissection: parts dissected concurrently give a permutation of the same quality", "[ordering]")
+{
+  // run_parallel (used with TBB from 50k vertices on) cuts the graph into parts ordered by their
+  // own dissectors on copies of the parts; called directly here on smaller graphs, with and
+  // without several components
+  const SDI::Sparse_matrix grid = triangulated_grid(150);
+  const SDI::Sparse_matrix blobs = screened_laplacian(test::load_mesh<test::Surface_mesh>("blobby_3cc.off"));
+  for(const SDI::Sparse_matrix* a : {&grid, &blobs})
+  {
+    const SDI::Adjacency_graph g = SDI::symmetric_adjacency(*a);
+    const std::vector<int> sequential = SDI::nested_dissection_detail::Dissector(g).run();
+    const std::vector<int> concurrent = SDI::nested_dissection_detail::Dissector(g).run_parallel();
+    REQUIRE(SDI::nested_dissection_detail::Dissector(g).run_parallel() == concurrent); // deterministic
+    Permutation p_sequential(a->rows()), p_concurrent(a->rows());
+    for(Eigen::Index k = 0; k < a->rows(); ++k)
+    {
+      p_sequential.indices()[k] = sequential[std::size_t(k)];
+      p_concurrent.indices()[k] = concurrent[std::size_t(k)];
+    }
+    require_permutation(p_concurrent, a->rows());
+    const Fill f_sequential = fill_of(*a, p_sequential), f_concurrent = fill_of(*a, p_concurrent);
+    INFO("nnz sequential " << f_sequential.nonzeros << ", concurrent " << f_concurrent.nonzeros);
+    REQUIRE(f_concurrent.nonzeros <= 1.1 * f_sequential.nonzeros);
+    REQUIRE(f_concurrent.flops <= 1.2 * f_sequential.flops);
+  }
+}
+
 TEST_CASE("Nested dissection: fewer factor flops than minimum degree on large planar meshes", "[ordering]")
 {
   // Nested dissection's flops grow as n^1.5 on planar graphs (Lipton, Rose & Tarjan), minimum

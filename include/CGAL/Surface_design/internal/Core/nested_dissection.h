@@ -29,12 +29,15 @@
 #ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_NESTED_DISSECTION_H
 #define CGAL_SURFACE_DESIGN_INTERNAL_CORE_NESTED_DISSECTION_H
 
+#include <CGAL/Surface_design/internal/Core/parallel.h>
+
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
 #include <algorithm>
 #include <cstdlib>
 #include <cstdint>
+#include <deque>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -103,14 +106,77 @@ constexpr int max_sweeps = 2;   // breadth-first sweeps in search of a pseudo-pe
 constexpr int max_refinement_passes = 4;  // separator refinement passes per dissection
 constexpr int max_losing_moves = 50;      // moves without a new best before a pass stops
 constexpr int locked = -2;                // level mark of a vertex moved in the current pass
+constexpr int parallel_parts = 4;         // parts dissected concurrently (see run_parallel)
+constexpr int parallel_from = 50000;      // vertices from which the parts are dissected concurrently
 
 class Dissector
 {
 public:
-  explicit Dissector(const Adjacency_graph& g)
-    : m_g(g), m_part(std::size_t(g.size()), 0), m_level(std::size_t(g.size()), -1),
+  /// `outside[v]` (optional): neighbours of v outside `g` that are ordered after it (the
+  /// separators of a larger graph `g` was cut from), counted in the leaves' external degrees.
+  explicit Dissector(const Adjacency_graph& g, std::vector<int> outside = {})
+    : m_g(g), m_outside(std::move(outside)), m_part(std::size_t(g.size()), 0), m_level(std::size_t(g.size()), -1),
       m_local(std::size_t(g.size()), -1)
   {}
+
+  /// The same order as a set of independent parts dissected concurrently (TBB): the first levels
+  /// are dissected here, breadth first, until `parallel_parts` parts remain; each is then copied
+  /// as a graph of its own (with the count of its vertices' neighbours in the separators above)
+  /// and ordered by its own Dissector in a task. Deterministic: the parts own disjoint slots.
+  std::vector<int> run_parallel()
+  {
+    const int n = m_g.size();
+    std::vector<int> order(static_cast<std::size_t>(n));
+    std::iota(order.begin(), order.end(), 0);
+    m_next_part = 1;
+    std::deque<Range> queue;
+    if(n > 0)
+      queue.push_back({0, n, 0});
+    std::vector<Range> pushed;
+    while(!queue.empty() && int(queue.size()) < parallel_parts)
+    {
+      const Range r = queue.front();
+      queue.pop_front();
+      if(r.end - r.begin <= leaf_size)
+        order_leaf(order, r);
+      else
+      {
+        pushed.clear();
+        dissect(order, r, pushed);
+        queue.insert(queue.end(), pushed.begin(), pushed.end());
+      }
+    }
+    const std::vector<Range> parts(queue.begin(), queue.end());
+    std::vector<int> local(std::size_t(n), -1); // each task writes the entries of its own vertices
+    for_each_index(parts.size(), true, [&](std::size_t i) {
+      const Range& r = parts[i];
+      const int m = r.end - r.begin;
+      for(int k = 0; k < m; ++k)
+        local[std::size_t(order[std::size_t(r.begin + k)])] = k;
+      Adjacency_graph sub;
+      sub.offsets.assign(std::size_t(m) + 1, 0);
+      std::vector<int> outside(std::size_t(m), 0);
+      for(int k = 0; k < m; ++k)
+      {
+        const int v = order[std::size_t(r.begin + k)];
+        for_each_neighbor(v, [&](int w) {
+          if(m_part[std::size_t(w)] == r.part)
+            sub.neighbors.push_back(local[std::size_t(w)]);
+          else if(m_part[std::size_t(w)] < 0)
+            ++outside[std::size_t(k)];
+        });
+        if(!m_outside.empty())
+          outside[std::size_t(k)] += m_outside[std::size_t(v)];
+        sub.offsets[std::size_t(k) + 1] = int(sub.neighbors.size());
+        std::sort(sub.neighbors.begin() + sub.offsets[std::size_t(k)], sub.neighbors.end());
+      }
+      const std::vector<int> sub_order = Dissector(sub, std::move(outside)).run();
+      std::vector<int> members(order.begin() + r.begin, order.begin() + r.end);
+      for(int k = 0; k < m; ++k)
+        order[std::size_t(r.begin + k)] = members[std::size_t(sub_order[std::size_t(k)])];
+    });
+    return order;
+  }
 
   /// Returns the elimination order: order[k] is the vertex eliminated k-th.
   std::vector<int> run()
@@ -140,6 +206,7 @@ private:
   struct Range { int begin, end, part; };
 
   const Adjacency_graph& m_g;
+  std::vector<int> m_outside; // neighbours outside the graph ordered after each vertex (or empty)
   std::vector<int> m_part;  // part label of each vertex still to be ordered; -1 once ordered
   std::vector<int> m_level; // breadth-first level, scratch (valid for the current part only)
   std::vector<int> m_local; // index within a leaf, scratch
@@ -459,7 +526,7 @@ private:
     {
       const int v = order[std::size_t(r.begin + i)];
       adjacency[i] = 0;
-      external[i] = 0;
+      external[i] = m_outside.empty() ? 0 : m_outside[std::size_t(v)];
       for_each_neighbor(v, [&](int w) {
         if(m_part[std::size_t(w)] == r.part)
           adjacency[i] |= std::uint64_t(1) << m_local[std::size_t(w)];
@@ -515,8 +582,13 @@ private:
 } // namespace nested_dissection_detail
 
 /// The nested-dissection elimination order of a graph: order[k] is the vertex eliminated k-th.
+/// With TBB, graphs of at least 50k vertices are cut into 4 parts that are dissected concurrently.
 inline std::vector<int> nested_dissection_order(const Adjacency_graph& g)
 {
+#if defined(CGAL_LINKED_WITH_TBB)
+  if(g.size() >= nested_dissection_detail::parallel_from)
+    return nested_dissection_detail::Dissector(g).run_parallel();
+#endif
   return nested_dissection_detail::Dissector(g).run();
 }
 
