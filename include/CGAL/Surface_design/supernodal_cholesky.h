@@ -176,8 +176,8 @@ private:
 /// `Supernodal_cholesky` with the library's nested dissection behind `CGAL::Eigen_solver_traits`:
 /// a model of `SparseLinearAlgebraWithFactorTraits_d` for symmetric positive definite systems;
 /// Hermitian systems (the smoothest direction fields) are factored in complex arithmetic. The
-/// fastest first solve of the library's solvers from about 20k unknowns on: 1.9 times faster than
-/// `Default_solver_traits` at 30k unknowns, 3.3 times at 119k, 8.4 times at 477k (below 20k, AMD
+/// fastest first solve of the library's solvers from about 20k unknowns on: about 2 times faster
+/// than `Default_solver_traits` at 30k unknowns, 3 to 4 times at 119k, 8 to 10 times at 477k (below 20k, AMD
 /// with the simplicial factorization is as fast or faster; see the foundation manual, section
 /// Solvers).
 using Supernodal_solver_traits =
