@@ -15,11 +15,14 @@
 //     its children's structures below it), the position of each child's rows in its parent's front,
 //     the destination of every stored entry of A in the factor, and the workspace sizes.
 // Numeric factorization, supernodes in postorder: the entries of A are scattered into the dense
-// panels of L (ncols x nrows each), the update matrices of the children are added to the panel and to
+// panels of L (nrows x ncols each), the update matrices of the children are added to the panel and to
 // the supernode's own update matrix (extend-add, from a stack), then the panel is factored by dense
 // blocked kernels: L11 = chol(A11), L21 = A21 L11^-H, U -= L21 L21^H (one symmetric rank-k update), and
 // U is pushed. The dense kernels do almost all the flops at the speed of Eigen's matrix products,
-// where a simplicial factorization spends its time on indirect addressing.
+// where a simplicial factorization spends its time on indirect addressing. With TBB, independent
+// subtrees are factored by concurrent tasks (each with its own stack; the update matrices of their
+// roots are kept aside for the sequential top of the tree), and the large fronts of the top
+// separators by blocks of rows or columns in parallel.
 
 #ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_SUPERNODAL_CHOLESKY_H
 #define CGAL_SURFACE_DESIGN_INTERNAL_CORE_SUPERNODAL_CHOLESKY_H
