@@ -125,28 +125,19 @@ public:
   /// and ordered by its own Dissector in a task. Deterministic: the parts own disjoint slots.
   std::vector<int> run_parallel()
   {
-    const int n = m_g.size();
-    std::vector<int> order(static_cast<std::size_t>(n));
-    std::iota(order.begin(), order.end(), 0);
-    m_next_part = 1;
-    std::deque<Range> queue;
-    if(n > 0)
-      queue.push_back({0, n, 0});
     std::vector<Range> pushed;
+    std::vector<int> order = start(pushed);
+    std::deque<Range> queue(pushed.begin(), pushed.end());
     while(!queue.empty() && int(queue.size()) < parallel_parts)
     {
       const Range r = queue.front();
       queue.pop_front();
-      if(r.end - r.begin <= leaf_size)
-        order_leaf(order, r);
-      else
-      {
-        pushed.clear();
-        dissect(order, r, pushed);
-        queue.insert(queue.end(), pushed.begin(), pushed.end());
-      }
+      pushed.clear();
+      order_part(order, r, pushed);
+      queue.insert(queue.end(), pushed.begin(), pushed.end());
     }
     const std::vector<Range> parts(queue.begin(), queue.end());
+    const int n = m_g.size();
     std::vector<int> local(std::size_t(n), -1); // each task writes the entries of its own vertices
     for_each_index(parts.size(), true, [&](std::size_t i) {
       const Range& r = parts[i];
@@ -181,29 +172,42 @@ public:
   /// Returns the elimination order: order[k] is the vertex eliminated k-th.
   std::vector<int> run()
   {
-    const int n = m_g.size();
-    std::vector<int> order(static_cast<std::size_t>(n));
-    std::iota(order.begin(), order.end(), 0);
-    m_next_part = 1;
     std::vector<Range> stack;
-    if(n > 0)
-      stack.push_back({0, n, 0});
-    // every part owns the slots [begin, end) of `order`: its vertices are kept there and end up
-    // in their final positions (separators are placed last, the sides before them)
+    std::vector<int> order = start(stack);
     while(!stack.empty())
     {
       const Range r = stack.back();
       stack.pop_back();
-      if(r.end - r.begin <= leaf_size)
-        order_leaf(order, r);
-      else
-        dissect(order, r, stack);
+      order_part(order, r, stack);
     }
     return order;
   }
 
 private:
   struct Range { int begin, end, part; };
+
+  /// The identity order and the whole graph as the first part. Every part owns the slots
+  /// [begin, end) of the order: its vertices are kept there and end up in their final positions
+  /// (separators are placed last, the sides before them).
+  std::vector<int> start(std::vector<Range>& parts)
+  {
+    const int n = m_g.size();
+    std::vector<int> order(static_cast<std::size_t>(n));
+    std::iota(order.begin(), order.end(), 0);
+    m_next_part = 1;
+    if(n > 0)
+      parts.push_back({0, n, 0});
+    return order;
+  }
+
+  /// Orders a leaf part, or dissects a larger one and appends its sub-parts to `parts`.
+  void order_part(std::vector<int>& order, const Range& r, std::vector<Range>& parts)
+  {
+    if(r.end - r.begin <= leaf_size)
+      order_leaf(order, r);
+    else
+      dissect(order, r, parts);
+  }
 
   const Adjacency_graph& m_g;
   std::vector<int> m_outside; // neighbours outside the graph ordered after each vertex (or empty)
