@@ -2,8 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Factor-once / solve-many through CGAL's solver traits: SimplicialLDLT and CHOLMOD agree,
-// failures are reported clearly.
+// failures are reported clearly; the default solver switches from the simplicial to the
+// supernodal factorization by size, with the same solutions, pivots and failures.
 
+#include <sparse_test_matrices.h>
 #include <test_support.h>
 
 #include <CGAL/Surface_design/internal/Core/dec.h>
@@ -19,16 +21,8 @@ namespace SDI = CGAL::Surface_design::internal;
 
 namespace {
 
-// A screened cotangent-Laplace system L + s M (SPD), the typical system of the library.
-template <class Mesh>
-SDI::Sparse_matrix screened_laplacian(const Mesh& mesh, double screening)
-{
-  const auto vpm = get(CGAL::vertex_point, mesh);
-  SDI::Mesh_indices<Mesh> idx(mesh);
-  const SDI::Sparse_matrix L = SDI::weighted_laplacian(idx, SDI::cotangent_weights(idx, vpm));
-  const SDI::Sparse_matrix M = SDI::diagonal_matrix(SDI::vertex_areas(idx, SDI::face_areas(idx, vpm)));
-  return L + screening * M;
-}
+// screened cotangent-Laplace systems L + s M (SPD for s > 0), the typical systems of the library
+using test::screened_laplacian;
 
 Eigen::VectorXd random_vector(Eigen::Index n, unsigned seed)
 {
@@ -97,9 +91,10 @@ TEST_CASE("The factorization is reused: later solves do not refactor", "[solver]
 }
 
 #if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
-#define SD_SOLVER_TYPES SD::Default_solver_traits, SD::Cholmod_solver_traits
+#define SD_SOLVER_TYPES                                                                                               \
+  SD::Default_solver_traits, SD::Simplicial_ldlt_solver_traits, SD::Supernodal_solver_traits, SD::Cholmod_solver_traits
 #else
-#define SD_SOLVER_TYPES SD::Default_solver_traits
+#define SD_SOLVER_TYPES SD::Default_solver_traits, SD::Simplicial_ldlt_solver_traits, SD::Supernodal_solver_traits
 #endif
 
 TEMPLATE_TEST_CASE("Failures are reported as Linear_solver_failure", "[solver]", SD_SOLVER_TYPES)
@@ -135,10 +130,138 @@ TEST_CASE("LDLT detects a singular Laplacian (no pinned vertex)", "[solver]")
 {
   const test::Surface_mesh mesh = test::load_mesh<test::Surface_mesh>("bunny_1k.off");
   const SDI::Sparse_matrix L = screened_laplacian(mesh, 0.);
-  SDI::Factored_system<SD::Default_solver_traits> system(SD::Default_solver_traits(), "Laplacian");
-  CHECK_THROWS_AS(system.factor(SDI::Sparse_matrix(L)), SD::Linear_solver_failure);
-  // pinning one vertex (Dirichlet row) makes it definite
-  SDI::Sparse_matrix pinned = L;
-  pinned.coeffRef(0, 0) += 1.;
-  CHECK_NOTHROW(system.factor(std::move(pinned)));
+  for(const Eigen::Index threshold : {Eigen::Index(0), SD::Size_switched_cholesky<SDI::Sparse_matrix>::default_size_threshold})
+  {
+    INFO("size threshold " << threshold);
+    SD::Default_solver_traits traits;
+    traits.solver().set_size_threshold(threshold);
+    SDI::Factored_system<SD::Default_solver_traits> system(traits, "Laplacian");
+    CHECK_THROWS_AS(system.factor(SDI::Sparse_matrix(L)), SD::Linear_solver_failure);
+    CHECK(traits.solver().uses_supernodal() == (threshold == 0));
+    // pinning one vertex (Dirichlet row) makes it definite
+    SDI::Sparse_matrix pinned = L;
+    pinned.coeffRef(0, 0) += 1.;
+    CHECK_NOTHROW(system.factor(std::move(pinned)));
+  }
+}
+
+namespace {
+
+// The default solver's two factorizations, forced by the size threshold: the simplicial LDLT with
+// AMD and the supernodal Cholesky with nested dissection. Their orders differ, so their pivots do
+// not match one by one, but their product is det A whatever the order.
+template <class Matrix>
+struct Both_factorizations
+{
+  SD::Size_switched_cholesky<Matrix> simplicial, supernodal;
+
+  explicit Both_factorizations(const Matrix& a)
+  {
+    simplicial.set_size_threshold(a.rows() + 1);
+    supernodal.set_size_threshold(0);
+    simplicial.compute(a);
+    supernodal.compute(a);
+    REQUIRE(simplicial.info() == Eigen::Success);
+    REQUIRE(supernodal.info() == Eigen::Success);
+    REQUIRE_FALSE(simplicial.uses_supernodal());
+    REQUIRE(supernodal.uses_supernodal());
+  }
+};
+
+double log_determinant(const Eigen::VectorXd& pivots) { return pivots.array().log().sum(); }
+
+} // namespace
+
+TEMPLATE_TEST_CASE("Default solver: the simplicial and the supernodal factorization agree", "[solver]", SD_MESH_TYPES)
+{
+  for(const std::string name : {"bunny_8k.off", "mech-holes-shark.off", "blobby_3cc.off", "triceratops.off"})
+  {
+    INFO(name);
+    const SDI::Sparse_matrix a = screened_laplacian(test::load_mesh<TestType>(name), 1e-2);
+    Both_factorizations<SDI::Sparse_matrix> both(a);
+    REQUIRE(both.simplicial.vectorD().size() == a.rows());
+    REQUIRE(both.supernodal.vectorD().size() == a.rows());
+    const double ld1 = log_determinant(both.simplicial.vectorD()), ld2 = log_determinant(both.supernodal.vectorD());
+    REQUIRE(std::abs(ld1 - ld2) <= 1e-9 * (std::abs(ld1) + double(a.rows())));
+    for(unsigned seed = 1; seed <= 3; ++seed)
+    {
+      const Eigen::VectorXd b = random_vector(a.rows(), seed);
+      const Eigen::VectorXd x1 = both.simplicial.solve(b), x2 = both.supernodal.solve(b);
+      REQUIRE((a * x2 - b).norm() <= 1e-10 * a.norm() * x2.norm());
+      REQUIRE((x1 - x2).norm() <= 1e-10 * x1.norm());
+    }
+    // refactorization with the same pattern: analyse once, factor 2A, the solution halves
+    const SDI::Sparse_matrix twice = 2. * a;
+    both.supernodal.analyzePattern(a);
+    both.supernodal.factorize(twice);
+    REQUIRE(both.supernodal.info() == Eigen::Success);
+    const Eigen::VectorXd b = random_vector(a.rows(), 4);
+    const Eigen::VectorXd x = both.simplicial.solve(b);
+    REQUIRE((2. * Eigen::VectorXd(both.supernodal.solve(b)) - x).norm() <= 1e-10 * x.norm());
+  }
+}
+
+TEST_CASE("Default solver: the supernodal factorization from 20k unknowns on, by default", "[solver]")
+{
+  // 140^2 = 19600 and 142^2 = 20164 unknowns on either side of the default threshold
+  for(const int k : {140, 142})
+  {
+    const SDI::Sparse_matrix a = test::triangulated_grid(k);
+    SDI::Factored_system<SD::Default_solver_traits> system(SD::Default_solver_traits(), "grid");
+    system.factor(SDI::Sparse_matrix(a));
+    CHECK(system.traits().solver().uses_supernodal() == (k * k >= 20000));
+    const Eigen::VectorXd b = random_vector(a.rows(), 5);
+    const Eigen::VectorXd x = system.solve(b);
+    REQUIRE((a * x - b).norm() <= 1e-10 * a.norm() * x.norm());
+  }
+  SD::Default_solver_traits traits;
+  CHECK(traits.solver().size_threshold() == 20000);
+  CHECK(traits.solver().info() == Eigen::InvalidInput);     // nothing analysed yet
+  CHECK_THROWS_AS(traits.solver().set_size_threshold(-1), std::invalid_argument);
+  CHECK(traits.solver().size_threshold() == 20000);
+}
+
+TEST_CASE("Default solver: Hermitian systems in complex arithmetic with both factorizations", "[solver]")
+{
+  const test::Complex_matrix h =
+    test::magnetic_laplacian(test::screened_laplacian(test::load_mesh<test::Surface_mesh>("kitten.off")));
+  static_assert(SDI::Hermitian_system<SD::Default_solver_traits>::uses_complex_arithmetic());
+  Both_factorizations<test::Complex_matrix> both(h);
+  const double ld1 = log_determinant(both.simplicial.vectorD()), ld2 = log_determinant(both.supernodal.vectorD());
+  REQUIRE(std::abs(ld1 - ld2) <= 1e-9 * (std::abs(ld1) + double(h.rows())));
+  const Eigen::VectorXcd b = test::complex_test_vector(h.rows(), 3);
+  const Eigen::VectorXcd reference = Eigen::SimplicialLDLT<test::Complex_matrix>(h).solve(b);
+  REQUIRE((Eigen::VectorXcd(both.supernodal.solve(b)) - reference).norm() <= 1e-10 * reference.norm());
+  // through the traits (the threshold of the traits' solver holds for the complex factorization)
+  for(const Eigen::Index threshold : {Eigen::Index(0), Eigen::Index(1) << 40})
+  {
+    SD::Default_solver_traits traits;
+    traits.solver().set_size_threshold(threshold);
+    test::require_hermitian_system_solution<SD::Default_solver_traits>(h, b, reference, traits);
+  }
+}
+
+TEST_CASE("Default solver: indefinite and singular systems fail with both factorizations", "[solver]")
+{
+  const test::Surface_mesh mesh = test::load_mesh<test::Surface_mesh>("bunny_1k.off");
+  for(const double screening : {-1e3, 0.})
+  {
+    const SDI::Sparse_matrix a = screened_laplacian(mesh, screening);
+    for(const Eigen::Index threshold : {Eigen::Index(0), Eigen::Index(1) << 40})
+    {
+      INFO("screening " << screening << ", size threshold " << threshold);
+      SD::Size_switched_cholesky<SDI::Sparse_matrix> solver;
+      solver.set_size_threshold(threshold);
+      solver.compute(a);
+      // the simplicial LDLT factors any non-singular symmetric matrix: its pivots tell
+      const bool rejected = solver.info() != Eigen::Success ||
+                            !(solver.vectorD().minCoeff() > SDI::ldlt_pivot_tolerance * solver.vectorD().cwiseAbs().maxCoeff());
+      CHECK(rejected);
+      SD::Default_solver_traits traits;
+      traits.solver().set_size_threshold(threshold);
+      SDI::Factored_system<SD::Default_solver_traits> system(traits, "test system");
+      CHECK_THROWS_AS(system.factor(SDI::Sparse_matrix(a)), SD::Linear_solver_failure);
+      CHECK_FALSE(system.is_factored());
+    }
+  }
 }

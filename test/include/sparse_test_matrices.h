@@ -113,11 +113,12 @@ inline Eigen::VectorXcd complex_test_vector(Eigen::Index n, unsigned seed)
 /// Requires the library's Hermitian system with `SolverTraits` to take the complex path and to
 /// solve `a y = b` (vectors interleaved as (Re, Im)) as the reference solution `x`, to 1e-10.
 template <class SolverTraits>
-void require_hermitian_system_solution(const Complex_matrix& a, const Eigen::VectorXcd& b, const Eigen::VectorXcd& x)
+void require_hermitian_system_solution(const Complex_matrix& a, const Eigen::VectorXcd& b, const Eigen::VectorXcd& x,
+                                       SolverTraits traits = SolverTraits())
 {
   namespace SDI = CGAL::Surface_design::internal;
   static_assert(SDI::Hermitian_system<SolverTraits>::uses_complex_arithmetic());
-  SDI::Hermitian_system<SolverTraits> system(SolverTraits(), "Hermitian test system");
+  SDI::Hermitian_system<SolverTraits> system(std::move(traits), "Hermitian test system");
   system.factor(Complex_matrix(a));
   Eigen::VectorXd interleaved(2 * b.size()), y;
   for(Eigen::Index i = 0; i < b.size(); ++i)

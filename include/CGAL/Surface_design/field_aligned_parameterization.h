@@ -40,7 +40,7 @@ namespace Surface_design {
 /// \param np optional named parameters among:
 /// - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
 /// - `sparse_linear_solver`: a model of `SparseLinearAlgebraWithFactorTraits_d`; default
-///   `Default_solver_traits` (Eigen `SimplicialLDLT`)
+///   `Default_solver_traits` (simplicial LDLT below 20k unknowns, supernodal Cholesky above)
 /// - `weighting` (`Edge_weighting`): `cotangent` (default) or `uniform`
 /// - `stripes_per_unit_length` (double >= 0): when positive the field is normalized and alpha
 ///   advances by 2 pi times this per unit length along it; default 0 = use the field as given

@@ -1,9 +1,9 @@
 // Copyright (c) 2026 The CGAL Surface Design authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// A fill-reducing ordering built for the systems of surface meshes, and the solver traits that use
-// it. A header of its own (not `solver_traits.h`) so that code that keeps the default solver does
-// not compile the ordering.
+// A fill-reducing ordering built for the systems of surface meshes (`Nested_dissection_ordering`,
+// defined with the supernodal Cholesky factorization that uses it), and the simplicial solver
+// traits that use it.
 
 #ifndef CGAL_SURFACE_DESIGN_NESTED_DISSECTION_ORDERING_H
 #define CGAL_SURFACE_DESIGN_NESTED_DISSECTION_ORDERING_H
@@ -20,30 +20,15 @@
 namespace CGAL {
 namespace Surface_design {
 
-/// \ingroup PkgSurfaceDesignRef
-/// Nested-dissection fill-reducing ordering of the symmetric pattern of a sparse matrix, as an
-/// Eigen ordering functor (the `Ordering` parameter of `Eigen::SimplicialLDLT`,
-/// `Eigen::SimplicialLLT`, like `Eigen::AMDOrdering`): breadth-first level-set separators from a
-/// pseudo-peripheral vertex, refined by Fiduccia-Mattheyses moves, recursively, with exact minimum
-/// degree on parts of at most 64 vertices. Built for the graphs of surface meshes (level sets are
-/// short rings), it needs no coordinates and works on any pattern (real or complex matrices, one
-/// triangle or both stored, several components).
-///
-/// Complexity: O(n log n) time, O(n + nnz) memory. On the cotangent Laplacians of meshes of 30k to
-/// 480k vertices its factors need 1.5 to 2.3 times fewer flops than AMD's, for 1 to 2.5 times
-/// AMD's ordering time; METIS's orderings need fewer flops still but cost 2 to 5 times more. Below
-/// about 20k unknowns AMD is the better choice (see the benchmark's `factorization` workload and
-/// the foundation manual, section Solvers).
-template <class StorageIndex>
-using Nested_dissection_ordering = internal::Nested_dissection_ordering<StorageIndex>;
+// `Nested_dissection_ordering` is defined in supernodal_cholesky.h, included by solver_traits.h.
 
 /// \ingroup PkgSurfaceDesignRef
-/// Eigen's `SimplicialLDLT` (as `Default_solver_traits`) with `Nested_dissection_ordering`
+/// Eigen's `SimplicialLDLT` (as `Simplicial_ldlt_solver_traits`) with `Nested_dissection_ordering`
 /// instead of AMD, behind `CGAL::Eigen_solver_traits`: header-only, single-threaded, BLAS-free;
-/// the better choice for meshes of more than about 30k vertices. Its LDLT pivots are
-/// exposed as for the default, so positive definiteness is checked the same way. The first solve
-/// of a 30k-vertex Laplacian is 1.3 times faster than with the default, of a 480k-vertex one 2.3
-/// times.
+/// faster than AMD for meshes of more than about 30k vertices, slower than `Supernodal_solver_traits`
+/// (which the default uses there). Its LDLT pivots are exposed, so positive definiteness is checked
+/// the same way. The first solve of a 30k-vertex Laplacian is 1.3 times faster than with
+/// `Simplicial_ldlt_solver_traits`, of a 480k-vertex one 2.3 times.
 using Nested_dissection_ldlt_solver_traits =
   CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::EigenType, Eigen::Lower,
                                                   Nested_dissection_ordering<int>>>;

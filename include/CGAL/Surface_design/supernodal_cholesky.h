@@ -2,16 +2,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The library's own supernodal Cholesky factorization, as an Eigen sparse solver and as solver
-// traits. A header of its own (not `solver_traits.h`) so that code that keeps the default solver does
-// not compile it.
+// traits. `solver_traits.h` includes it: the default solver traits use it for large systems.
 
 #ifndef CGAL_SURFACE_DESIGN_SUPERNODAL_CHOLESKY_H
 #define CGAL_SURFACE_DESIGN_SUPERNODAL_CHOLESKY_H
 
-#include <CGAL/Surface_design/nested_dissection_ordering.h>
-#include <CGAL/Surface_design/solver_traits.h>
-#include <CGAL/Surface_design/internal/Core/Factored_system.h>
-#include <CGAL/Surface_design/internal/Core/Hermitian_system.h>
+#include <CGAL/Surface_design/internal/Core/nested_dissection.h>
 #include <CGAL/Surface_design/internal/Core/supernodal_cholesky.h>
 
 #include <CGAL/Eigen_matrix.h>
@@ -19,13 +15,127 @@
 
 #include <Eigen/SparseCore>
 
+#include <cstddef>
 #include <memory>
+#include <mutex>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Surface_design {
+
+/// \ingroup PkgSurfaceDesignRef
+/// Nested-dissection fill-reducing ordering of the symmetric pattern of a sparse matrix, as an
+/// Eigen ordering functor (the `Ordering` parameter of `Eigen::SimplicialLDLT`,
+/// `Eigen::SimplicialLLT`, like `Eigen::AMDOrdering`): breadth-first level-set separators from a
+/// pseudo-peripheral vertex, refined by Fiduccia-Mattheyses moves, recursively, with exact minimum
+/// degree on parts of at most 64 vertices. Built for the graphs of surface meshes (level sets are
+/// short rings), it needs no coordinates and works on any pattern (real or complex matrices, one
+/// triangle or both stored, several components).
+///
+/// Complexity: O(n log n) time, O(n + nnz) memory. On the cotangent Laplacians of meshes of 30k to
+/// 480k vertices its factors need 1.5 to 2.3 times fewer flops than AMD's, for 1 to 2.5 times
+/// AMD's ordering time; METIS's orderings need fewer flops still but cost 2 to 5 times more. Below
+/// about 20k unknowns AMD is the better choice (see the benchmark's `factorization` workload and
+/// the foundation manual, section Solvers).
+template <class StorageIndex>
+using Nested_dissection_ordering = internal::Nested_dissection_ordering<StorageIndex>;
+
+/// \ingroup PkgSurfaceDesignRef
+/// The symbolic analyses of `Supernodal_cholesky` (fill-reducing ordering, supernodes, the place of
+/// every entry), remembered by the pattern of the lower triangle of the analysed matrix, so that
+/// the systems built on one mesh are ordered and analysed once: the smoothest direction field (a
+/// complex Hermitian matrix), the stripes and the trivial connections (their pinned Laplacians keep
+/// the pinned rows in the pattern), any other vertex system with one entry per edge and vertex.
+///
+/// Give one cache to the solvers of every system that should share (`Size_switched_cholesky` and
+/// `Supernodal_cholesky` have `set_analysis_cache()`; the default solver traits reach theirs with
+/// `traits.solver().set_analysis_cache(cache)`, and Hermitian systems inherit it from the traits).
+/// An analysis is found only for a pattern equal, entry for entry, to one analysed before, in real
+/// or complex arithmetic; any other pattern is analysed and added. Patterns are compared in O(nnz)
+/// and kept (one `int` per stored lower entry, plus the analysis) until `clear()` or the cache's
+/// destruction. Thread-safe.
+class Symbolic_analysis_cache
+{
+public:
+  using Analysis = internal::Supernodal_symbolic;
+
+  /// Number of patterns analysed so far.
+  std::size_t size() const
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_entries.size();
+  }
+  /// Number of analyses reused.
+  std::size_t hits() const
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_hits;
+  }
+  /// Forgets every pattern (solvers keep the analyses they use).
+  void clear()
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_entries.clear();
+    m_hits = 0;
+  }
+
+  /// \cond SKIP_IN_MANUAL
+  /// The analysis of a matrix with the lower pattern of `a`, made by `analyse()` if there is none yet.
+  template <class SparseMatrixType, class Analyse>
+  std::shared_ptr<const Analysis> find_or_analyse(const SparseMatrixType& a, const Analyse& analyse)
+  {
+    Entry key;
+    key.column_start.assign(std::size_t(a.cols()) + 1, 0);
+    internal::supernodal_detail::for_each_lower_entry(a, [&](int i, int j, const auto&) {
+      ++key.column_start[std::size_t(j) + 1];
+      key.rows.push_back(i);
+    });
+    if(auto found = find(key))
+      return found;
+    // analysed without the lock: the analysis may run parallel tasks, and a thread waiting for them
+    // may pick up another task that looks in this cache
+    key.analysis = analyse();
+    if(!key.analysis)
+      return key.analysis;
+    std::lock_guard<std::mutex> lock(m_mutex);
+    for(const Entry& e : m_entries)
+      if(same_pattern(e, key)) // analysed by another thread meanwhile
+        return e.analysis;
+    m_entries.push_back(key);
+    return m_entries.back().analysis;
+  }
+  /// \endcond
+
+private:
+  struct Entry
+  {
+    std::vector<int> column_start, rows; // per column, the count of lower entries (then the rows)
+    std::shared_ptr<const Analysis> analysis;
+  };
+
+  static bool same_pattern(const Entry& a, const Entry& b)
+  {
+    return a.rows.size() == b.rows.size() && a.column_start == b.column_start && a.rows == b.rows;
+  }
+
+  std::shared_ptr<const Analysis> find(const Entry& key)
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    for(const Entry& e : m_entries)
+      if(same_pattern(e, key))
+      {
+        ++m_hits;
+        return e.analysis;
+      }
+    return nullptr;
+  }
+
+  mutable std::mutex m_mutex;
+  std::vector<Entry> m_entries;
+  std::size_t m_hits = 0;
+};
 
 /// \ingroup PkgSurfaceDesignRef
 /// Supernodal multifrontal Cholesky factorization \f$ P A P^T = L L^H \f$ of a sparse symmetric
@@ -44,7 +154,8 @@ namespace Surface_design {
 /// The symbolic analysis (`analyzePattern`: ordering, elimination tree, supernodes, the place of
 /// every entry) depends on the pattern only. It is held through a shared pointer: `analysis()` hands
 /// it to another solver (`set_analysis()`) whose matrices have the same stored pattern, in real or
-/// complex arithmetic, so that systems on one mesh are ordered and analysed once.
+/// complex arithmetic, and a `Symbolic_analysis_cache` (`set_analysis_cache()`) does so for every
+/// solver that shares it, so that systems on one mesh are ordered and analysed once.
 ///
 /// \tparam MatrixType_ `Eigen::SparseMatrix<Scalar>` (column-major), `Scalar` = `double` or
 ///         `std::complex<double>`
@@ -59,7 +170,7 @@ class Supernodal_cholesky : public Eigen::SparseSolverBase<Supernodal_cholesky<M
   template <class Ordering, class = void>
   struct Reads_one_triangle : std::false_type {};
   template <class Index>
-  struct Reads_one_triangle<Nested_dissection_ordering<Index>> : std::true_type {};
+  struct Reads_one_triangle<internal::Nested_dissection_ordering<Index>> : std::true_type {};
 
 public:
   using MatrixType = MatrixType_;
@@ -83,16 +194,31 @@ public:
       m_info = Eigen::InvalidInput;
       return;
     }
-    typename Ordering_::PermutationType order;
-    if constexpr(Reads_one_triangle<Ordering_>::value)
-      Ordering_()(a, order);
-    else // Eigen's orderings expect both triangles
-      Ordering_()(MatrixType(a.template selfadjointView<Eigen::Lower>()), order);
-    std::vector<int> old_of_new(std::size_t(a.rows()));
-    for(Eigen::Index k = 0; k < a.rows(); ++k)
-      old_of_new[std::size_t(k)] = int(order.indices()[k]);
-    m_analysis = internal::supernodal_analysis(a, std::move(old_of_new));
+    auto analyse = [&a]() -> std::shared_ptr<const Analysis> {
+      typename Ordering_::PermutationType order;
+      if constexpr(Reads_one_triangle<Ordering_>::value)
+        Ordering_()(a, order);
+      else // Eigen's orderings expect both triangles
+        Ordering_()(MatrixType(a.template selfadjointView<Eigen::Lower>()), order);
+      std::vector<int> old_of_new(std::size_t(a.rows()));
+      for(Eigen::Index k = 0; k < a.rows(); ++k)
+        old_of_new[std::size_t(k)] = int(order.indices()[k]);
+      return internal::supernodal_analysis(a, std::move(old_of_new));
+    };
+    m_analysis = m_cache ? m_cache->find_or_analyse(a, analyse) : analyse();
     m_info = Eigen::Success;
+  }
+
+  /// Analyses are taken from (and added to) `cache` from now on; null: none.
+  void set_analysis_cache(std::shared_ptr<Symbolic_analysis_cache> cache) { m_cache = std::move(cache); }
+  const std::shared_ptr<Symbolic_analysis_cache>& analysis_cache() const { return m_cache; }
+
+  /// Takes the analysis cache of another `Supernodal_cholesky` (e.g. the real one of the traits
+  /// that a complex system is factored for).
+  template <class OtherSolver>
+  void use_settings_of(const OtherSolver& other)
+  {
+    m_cache = other.analysis_cache();
   }
 
   /// Uses the analysis of another solver (made for a matrix with the same stored pattern).
@@ -168,6 +294,7 @@ private:
   }
 
   std::shared_ptr<const Analysis> m_analysis;
+  std::shared_ptr<Symbolic_analysis_cache> m_cache;
   internal::Supernodal_factor<Scalar> m_factor;
   Eigen::ComputationInfo m_info = Eigen::InvalidInput;
 };
@@ -177,21 +304,11 @@ private:
 /// a model of `SparseLinearAlgebraWithFactorTraits_d` for symmetric positive definite systems;
 /// Hermitian systems (the smoothest direction fields) are factored in complex arithmetic. The
 /// fastest first solve of the library's solvers from about 20k unknowns on: about 2 times faster
-/// than `Default_solver_traits` at 30k unknowns, 3 to 4 times at 119k, 8 to 10 times at 477k (below 20k, AMD
-/// with the simplicial factorization is as fast or faster; see the foundation manual, section
-/// Solvers).
+/// than `Simplicial_ldlt_solver_traits` at 30k unknowns, 3 to 4 times at 119k, 8 to 10 times at
+/// 477k (below 20k, AMD with the simplicial factorization is as fast or faster; see the foundation
+/// manual, section Solvers). `Default_solver_traits` uses it from 20k unknowns on.
 using Supernodal_solver_traits =
   CGAL::Eigen_solver_traits<Supernodal_cholesky<CGAL::Eigen_sparse_matrix<double>::EigenType>>;
-
-namespace internal {
-
-template <>
-struct Complex_solver_of<Supernodal_solver_traits>
-{
-  using type = Supernodal_cholesky<Complex_sparse_matrix>;
-};
-
-} // namespace internal
 
 } // namespace Surface_design
 } // namespace CGAL

@@ -39,9 +39,6 @@ struct Has_ldlt_pivots<Traits, std::void_t<decltype(std::declval<Traits&>().solv
 
 } // namespace factored_system_detail
 
-/// Relative size below which an LDLT pivot of a positive definite system counts as zero.
-constexpr double ldlt_pivot_tolerance = 100. * std::numeric_limits<double>::epsilon();
-
 /// Throws `Linear_solver_failure` naming the system if an LDLT pivot (real part, for Hermitian
 /// systems) is not safely positive.
 template <class Pivots>

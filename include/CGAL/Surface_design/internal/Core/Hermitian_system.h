@@ -64,7 +64,17 @@ struct Complex_solver_of
 template <>
 struct Complex_solver_of<Default_solver_traits>
 {
+  using type = Size_switched_cholesky<Complex_sparse_matrix>;
+};
+template <>
+struct Complex_solver_of<Simplicial_ldlt_solver_traits>
+{
   using type = Eigen::SimplicialLDLT<Complex_sparse_matrix>;
+};
+template <>
+struct Complex_solver_of<Supernodal_solver_traits>
+{
+  using type = Supernodal_cholesky<Complex_sparse_matrix>;
 };
 #if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
 template <>
@@ -82,14 +92,27 @@ struct Complex_solver_of<Metis_ldlt_solver_traits>
 #endif
 
 /// Factors a Hermitian positive definite matrix once (`factor`) and solves for any number of
-/// right-hand sides (`solve`), vectors given with (Re, Im) interleaved. With the library's
-/// `Default_solver_traits`, `Cholmod_solver_traits` or `Metis_ldlt_solver_traits` the same Eigen
-/// factorization runs in complex arithmetic (about 3x faster than the real form: half the
+/// right-hand sides (`solve`), vectors given with (Re, Im) interleaved. With the library's own
+/// traits (`Default_solver_traits`, `Simplicial_ldlt_solver_traits`, `Supernodal_solver_traits`,
+/// `Nested_dissection_ldlt_solver_traits`, `Cholmod_solver_traits`, `Metis_ldlt_solver_traits`) the
+/// same factorization runs in complex arithmetic (about 3x faster than the real form: half the
 /// floating-point operations, a quarter of the index work); any other model of
 /// `SparseLinearAlgebraWithFactorTraits_d` factors the real symmetric form (`realify`).
 template <class SolverTraits>
 class Hermitian_system
 {
+  // Eigen solvers that expose the pivots of their factorization (`vectorD()`)
+  template <class Solver, class = void>
+  struct Has_pivots : std::false_type {};
+  template <class Solver>
+  struct Has_pivots<Solver, std::void_t<decltype(std::declval<const Solver&>().vectorD())>> : std::true_type {};
+  // the library's solvers take the settings (size threshold, analysis cache) of the traits' solver
+  template <class Solver, class = void>
+  struct Follows_traits : std::false_type {};
+  template <class Solver>
+  struct Follows_traits<Solver, std::void_t<decltype(std::declval<Solver&>().use_settings_of(
+                                  std::declval<SolverTraits&>().solver()))>> : std::true_type {};
+
   using Complex_solver = typename Complex_solver_of<SolverTraits>::type;
   static constexpr bool complex_path = !std::is_void<Complex_solver>::value;
   using Complex_storage = std::conditional_t<complex_path, Complex_solver, int>;
@@ -108,11 +131,13 @@ public:
     {
       m_size = a.rows();
       m_complex.emplace();
+      if constexpr(Follows_traits<Complex_solver>::value)
+        m_complex->use_settings_of(m_real.traits().solver());
       m_complex->compute(a);
       if(m_complex->info() != Eigen::Success)
         throw Linear_solver_failure("the factorization of the " + m_name + " (" + std::to_string(a.rows()) +
                                     " complex unknowns) failed: the matrix is not positive definite");
-      if constexpr(std::is_base_of<Eigen::SimplicialCholeskyBase<Complex_solver>, Complex_solver>::value)
+      if constexpr(Has_pivots<Complex_solver>::value)
         check_ldlt_pivots(m_complex->vectorD(), m_name, m_size, "complex unknowns");
     }
     else

@@ -58,6 +58,10 @@ namespace CGAL {
 namespace Surface_design {
 namespace internal {
 
+/// Relative size below which a pivot of a positive definite system (an LDLT pivot d_j, or |L_jj|^2
+/// of a Cholesky factor) counts as zero: the matrix is then taken as singular to working precision.
+constexpr double ldlt_pivot_tolerance = 100. * std::numeric_limits<double>::epsilon();
+
 /// The pattern-only part of a supernodal Cholesky factorization, shared by every matrix with the
 /// same pattern (same stored entries, in the same order). Indices of unknowns after permutation are
 /// called "permuted".
