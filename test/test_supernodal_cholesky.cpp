@@ -4,14 +4,17 @@
 // The supernodal multifrontal Cholesky factorization: the same factor as a simplicial one with the
 // same order (pivot by pivot), the same solutions as the default solver, every pattern (single,
 // diagonal, dense, path and star, several components, one or both triangles stored), Hermitian
-// matrices, an analysis shared between matrices, refactorization, several right-hand sides, and
-// clear failures (indefinite, singular, missing diagonal, wrong size or pattern).
+// matrices, an analysis shared between matrices (by hand and through a Symbolic_analysis_cache,
+// across packages), refactorization, several right-hand sides, and clear failures (indefinite,
+// singular, missing diagonal, wrong size or pattern).
 
 #include <sparse_test_matrices.h>
 #include <test_support.h>
 
 #include <CGAL/Surface_design/direction_fields.h>
+#include <CGAL/Surface_design/Field_aligned_parameterizer.h>
 #include <CGAL/Surface_design/supernodal_cholesky.h>
+#include <CGAL/Surface_design/Trivial_connection.h>
 #include <CGAL/Surface_design/internal/Core/Factored_system.h>
 #include <CGAL/Surface_design/internal/Core/Hermitian_system.h>
 
@@ -20,8 +23,11 @@
 
 #include <complex>
 #include <map>
+#include <memory>
 #include <string>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 namespace SD = CGAL::Surface_design;
 namespace SDI = CGAL::Surface_design::internal;
@@ -293,4 +299,150 @@ TEMPLATE_TEST_CASE("Supernodal Cholesky through a package: the smoothest field a
       difference = std::max(difference, std::sqrt((u - supernodal.at(v)).squared_length()));
     REQUIRE(difference <= 1e-9);
   }
+}
+
+namespace {
+
+// The default solver traits forced to the supernodal factorization, sharing `cache` (none: null).
+SD::Default_solver_traits supernodal_traits(const std::shared_ptr<SD::Symbolic_analysis_cache>& cache)
+{
+  SD::Default_solver_traits traits;
+  traits.solver().set_size_threshold(0);
+  traits.solver().set_analysis_cache(cache);
+  return traits;
+}
+
+// The smoothest vector field, then the stripes along it (one +1 / -1 pair), with the given traits:
+// the stripes' one-form and the field.
+template <class Mesh>
+std::pair<std::vector<double>, std::vector<double>> field_then_stripes(const Mesh& mesh,
+                                                                       SD::Default_solver_traits field_traits,
+                                                                       SD::Default_solver_traits stripe_traits)
+{
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  std::map<vertex_descriptor, test::Kernel::Vector_3> field;
+  SD::smoothest_direction_field(mesh, boost::make_assoc_property_map(field),
+                                SD::parameters::symmetry_order(1, SD::parameters::sparse_linear_solver(field_traits)));
+  SD::Field_aligned_parameterizer<Mesh, typename boost::property_map<Mesh, CGAL::vertex_point_t>::const_type,
+                                  SD::Default_solver_traits>
+    fap(mesh, SD::parameters::sparse_linear_solver(stripe_traits));
+  fap.set_field(boost::make_assoc_property_map(field), 0.);
+  fap.set_index(std::size_t(10), 1);
+  fap.set_index(std::size_t(num_faces(mesh) / 2), -1);
+  fap.solve();
+  std::vector<double> components;
+  for(const auto& [v, u] : field)
+    components.insert(components.end(), {u.x(), u.y(), u.z()});
+  return {fap.one_form(), components};
+}
+
+} // namespace
+
+TEMPLATE_TEST_CASE("Analysis cache: the smoothest field, the stripes and a trivial connection analysed once",
+                   "[supernodal]", SD_MESH_TYPES)
+{
+  for(const std::string name : {"bunny_1k.off", "mech-holes-shark.off", "blobby_3cc.off"})
+  {
+    INFO(name);
+    const TestType mesh = test::load_mesh<TestType>(name);
+    const auto alone = field_then_stripes(mesh, supernodal_traits(nullptr), supernodal_traits(nullptr));
+    auto cache = std::make_shared<SD::Symbolic_analysis_cache>();
+    const auto shared = field_then_stripes(mesh, supernodal_traits(cache), supernodal_traits(cache));
+    // the complex connection Laplacian and the pinned cotangent Laplacian: one pattern, one analysis
+    REQUIRE(cache->size() == 1);
+    REQUIRE(cache->hits() == 1);
+    // the same analysis (the nested dissection is deterministic): the same numbers, to roundoff
+    auto max_difference = [](const std::vector<double>& a, const std::vector<double>& b) {
+      REQUIRE(a.size() == b.size());
+      double d = 0.;
+      for(std::size_t i = 0; i < a.size(); ++i)
+        d = std::max(d, std::abs(a[i] - b[i]) / (1. + std::abs(a[i])));
+      return d;
+    };
+    REQUIRE(max_difference(shared.first, alone.first) <= 1e-9);
+    REQUIRE(max_difference(shared.second, alone.second) <= 1e-9);
+    // a trivial connection (pinned graph Laplacian) on the same mesh finds it too
+    SD::Trivial_connection<TestType, typename boost::property_map<TestType, CGAL::vertex_point_t>::const_type,
+                           SD::Default_solver_traits>
+      tc(mesh, SD::parameters::sparse_linear_solver(supernodal_traits(cache)));
+    REQUIRE(cache->size() == 1);
+    REQUIRE(cache->hits() == 2);
+    cache->clear();
+    REQUIRE(cache->size() == 0);
+    REQUIRE(cache->hits() == 0);
+  }
+}
+
+TEST_CASE("Analysis cache: other patterns are analysed, equal ones found, in both arithmetics", "[supernodal]")
+{
+  auto cache = std::make_shared<SD::Symbolic_analysis_cache>();
+  const Eigen::SparseMatrix<double> grid = test::triangulated_grid(30), other = test::triangulated_grid(31);
+  SD::Supernodal_cholesky<Eigen::SparseMatrix<double>> a, b, c;
+  SD::Supernodal_cholesky<Complex_matrix> h;
+  for(auto* s : {&a, &b, &c})
+    s->set_analysis_cache(cache);
+  h.use_settings_of(a);
+  REQUIRE(h.analysis_cache() == cache);
+  a.compute(grid);
+  b.compute(other);
+  REQUIRE(cache->size() == 2);
+  REQUIRE(cache->hits() == 0);
+  REQUIRE(a.analysis() != b.analysis());
+  // the same pattern with other values, and the Hermitian matrix on it: found
+  const Eigen::SparseMatrix<double> scaled = 3. * grid;
+  c.compute(scaled);
+  h.compute(test::magnetic_laplacian(grid));
+  REQUIRE(cache->hits() == 2);
+  REQUIRE(c.analysis() == a.analysis());
+  REQUIRE(h.analysis() == a.analysis());
+  REQUIRE(c.info() == Eigen::Success);
+  REQUIRE(h.info() == Eigen::Success);
+  const Eigen::VectorXd rhs = test::test_vector(grid.rows(), 2);
+  const Eigen::VectorXd x = c.solve(rhs);
+  REQUIRE((scaled * x - rhs).norm() <= 1e-10 * rhs.norm());
+  const Eigen::VectorXcd rhs_c = test::complex_test_vector(grid.rows(), 3);
+  const Eigen::VectorXcd y = h.solve(rhs_c);
+  REQUIRE((test::magnetic_laplacian(grid) * y - rhs_c).norm() <= 1e-10 * rhs_c.norm());
+
+  // same size and number of entries, other rows: a path 0-1-2-3 and a star around 0
+  const Eigen::SparseMatrix<double> path = test::graph_matrix(4, {{0, 1}, {1, 2}, {2, 3}});
+  const Eigen::SparseMatrix<double> star = test::graph_matrix(4, {{0, 1}, {0, 2}, {0, 3}});
+  SD::Supernodal_cholesky<Eigen::SparseMatrix<double>> p, q;
+  p.set_analysis_cache(cache);
+  q.set_analysis_cache(cache);
+  p.compute(path);
+  q.compute(star);
+  REQUIRE(cache->size() == 4);
+  REQUIRE(p.analysis() != q.analysis());
+  REQUIRE((star * Eigen::VectorXd(q.solve(Eigen::VectorXd::Ones(4))) - Eigen::VectorXd::Ones(4)).norm() <= 1e-12);
+  // without a cache nothing is shared
+  SD::Supernodal_cholesky<Eigen::SparseMatrix<double>> lone;
+  lone.compute(grid);
+  REQUIRE(lone.analysis() != a.analysis());
+  REQUIRE(cache->size() == 4);
+}
+
+TEST_CASE("Analysis cache: the default solver uses it from its size threshold on", "[supernodal]")
+{
+  auto cache = std::make_shared<SD::Symbolic_analysis_cache>();
+  const Eigen::SparseMatrix<double> grid = test::triangulated_grid(20); // 400 unknowns
+  SD::Size_switched_cholesky<Eigen::SparseMatrix<double>> small, large;
+  small.set_analysis_cache(cache);
+  large.set_analysis_cache(cache);
+  large.set_size_threshold(400);
+  small.compute(grid);
+  REQUIRE_FALSE(small.uses_supernodal());
+  REQUIRE(cache->size() == 0); // AMD and the simplicial analysis: nothing cached
+  large.compute(grid);
+  REQUIRE(large.uses_supernodal());
+  REQUIRE(cache->size() == 1);
+  // a Hermitian system through the traits follows the traits' threshold and cache
+  SD::Default_solver_traits traits;
+  traits.solver().set_size_threshold(0);
+  traits.solver().set_analysis_cache(cache);
+  test::require_hermitian_system_solution<SD::Default_solver_traits>(
+    test::magnetic_laplacian(grid), test::complex_test_vector(grid.rows(), 1),
+    Eigen::SimplicialLDLT<Complex_matrix>(test::magnetic_laplacian(grid)).solve(test::complex_test_vector(grid.rows(), 1)),
+    traits);
+  REQUIRE(cache->hits() == 1);
 }

@@ -81,17 +81,18 @@ public:
       m_edge_ends[e] = m_idx.edge_vertices(e);
 
     // L = d0^T W d0 with the root vertex of every component pinned (row and column replaced by
-    // the identity): f_root = 0 fixes the additive constant of each component.
+    // the identity): f_root = 0 fixes the additive constant of each component. The zeros of the
+    // pinned rows and columns stay in the pattern, which is then the one of every vertex system
+    // on the mesh (one entry per vertex and edge), so that a `Symbolic_analysis_cache` shares the
+    // analysis with them (the smoothest field's, for one).
     m_pinned.assign(m_idx.number_of_vertices(), false);
     for(const auto& c : m_topology.components.info)
       m_pinned[c.root_vertex] = true;
     Sparse_matrix L = weighted_laplacian(m_idx, m_weight);
-    const std::vector<bool>& pinned = m_pinned;
-    L.prune([&pinned](Eigen::Index i, Eigen::Index j, double) {
-      return !pinned[std::size_t(i)] && !pinned[std::size_t(j)];
-    });
-    for(const auto& c : m_topology.components.info)
-      L.coeffRef(Eigen::Index(c.root_vertex), Eigen::Index(c.root_vertex)) = 1.;
+    for(Eigen::Index k = 0; k < L.outerSize(); ++k)
+      for(Sparse_matrix::InnerIterator it(L, k); it; ++it)
+        if(m_pinned[std::size_t(it.row())] || m_pinned[std::size_t(it.col())])
+          it.valueRef() = it.row() == it.col() ? 1. : 0.;
     L.makeCompressed();
     m_system.factor(std::move(L));
     build_solve_plans();
