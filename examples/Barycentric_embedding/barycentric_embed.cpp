@@ -33,7 +33,8 @@ const char* usage =
   "                      white space; '#' starts a comment\n"
   "  --weights uniform|cotangent|mean-value   (default uniform, the paper's; the others are\n"
   "                      computed on the input geometry)\n"
-  "  --solver ldlt|cholmod   sparse solver of the symmetric systems (default ldlt)\n"
+  "  --solver S          sparse solver of the symmetric systems: default (simplicial LDLT below 20k\n"
+  "                      unknowns, supernodal Cholesky above), ldlt, supernodal, cholmod\n"
   "  --output OUT.off    the embedded mesh (.off, .ply, .obj...)\n"
   "  --picture OUT.png   picture coloured by how far each vertex moved, rendered with f3d\n"
   "  --up +Y|+Z|...      up direction of the picture (default +Y)\n";
@@ -71,10 +72,11 @@ std::vector<Mesh::Vertex_index> read_fixed(const std::string& path, const Mesh& 
 }
 
 template <class Solver>
-std::size_t embed(Mesh& mesh, const std::vector<Mesh::Vertex_index>& fixed, SD::Edge_weighting w)
+std::size_t embed(Mesh& mesh, const std::vector<Mesh::Vertex_index>& fixed, SD::Edge_weighting w,
+                  const Solver& solver)
 {
   SD::Barycentric_embedder<Mesh, boost::property_map<Mesh, CGAL::vertex_point_t>::type, Solver> embedder(
-    mesh, fixed, P::weighting(w));
+    mesh, fixed, P::weighting(w, P::sparse_linear_solver(solver)));
   embedder.update();
   return embedder.number_of_free_vertices();
 }
@@ -90,7 +92,7 @@ int main(int argc, char** argv)
   }
   try
   {
-    std::string input, fixed_file, output, png, up = "+Y", solver = "ldlt";
+    std::string input, fixed_file, output, png, up = "+Y", solver = "default";
     SD::Edge_weighting weighting = SD::Edge_weighting::uniform;
     example::Once once;
     for(int i = 1; i < argc; ++i)
@@ -112,7 +114,7 @@ int main(int argc, char** argv)
       else if(a == "--up")
         up = example::parse_choice(value(), a, {"+X", "-X", "+Y", "-Y", "+Z", "-Z"});
       else if(a == "--solver")
-        solver = example::parse_choice(value(), a, {"ldlt", "cholmod"});
+        solver = example::parse_choice(value(), a, example::solver_names());
       else if(a == "--weights")
       {
         const std::string w = example::parse_choice(value(), a, {"uniform", "cotangent", "mean-value"});
@@ -147,7 +149,7 @@ int main(int argc, char** argv)
 
     example::Stopwatch clock;
     const std::size_t moved = example::with_solver(
-      solver, [&](auto traits) { return embed<decltype(traits)>(mesh, fixed, weighting); });
+      solver, [&](auto traits) { return embed(mesh, fixed, weighting, traits); });
     const double area_before = example::surface_area(original), area_after = example::surface_area(mesh);
     if(!std::isfinite(area_before) || !std::isfinite(area_after))
       throw std::runtime_error("the surface area overflows (coordinates too large for double precision)");

@@ -46,7 +46,8 @@ const char* usage =
   "                        which every piece fits on a sheet)\n"
   "  --margin M            sheet margin in mm (default 10)\n"
   "  --fold-angle DEG      draw edges bent by more than this as fold lines (default 5; 180: none)\n"
-  "  --solver ldlt|cholmod sparse solver (default ldlt)\n"
+  "  --solver S            sparse solver: default (simplicial LDLT below 20k\n"
+  "                        unknowns, supernodal Cholesky above), ldlt, supernodal, cholmod\n"
   "  --output PIECES.obj   the cut mesh: v = 3-D positions of the input's vertices, vt = the laid-out\n"
   "                        2-D positions (model units) of every corner, f v/vt; required\n"
   "  --pattern PATTERN.svg the cutting pattern in mm: cut lines, fold lines, seam numbers matching\n"
@@ -57,7 +58,7 @@ const char* usage =
 
 struct Options
 {
-  std::string input, output, pattern, picture, up = "+Y", solver = "ldlt";
+  std::string input, output, pattern, picture, up = "+Y", solver = "default";
   double epsilon = 1e-3, alignment = 1., margin = 10., fold_angle = 5., scale = 0.;
   double sheet_width = 210., sheet_height = 297.;
   bool cut = true, split = true;
@@ -97,7 +98,7 @@ Options parse(int argc, char** argv)
     else if(a == "--fold-angle")
       o.fold_angle = example::parse_double(next(), a, 0., 180.);
     else if(a == "--solver")
-      o.solver = example::parse_choice(next(), a, {"ldlt", "cholmod"});
+      o.solver = example::parse_choice(next(), a, example::solver_names());
     else if(a == "--output")
       example::check_output_path(o.output = next(), a, {".obj"});
     else if(a == "--pattern")

@@ -39,7 +39,8 @@ const char* usage =
   "                            characteristic)\n"
   "  --curvature-weight W      smoothest: align with the principal curvature directions (N even)\n"
   "  --boundary free|tangent|normal   smoothest: boundary condition (default free)\n"
-  "  --solver ldlt|cholmod     sparse solver (default ldlt)\n"
+  "  --solver S                sparse solver: default (simplicial LDLT below 20k\n"
+  "                            unknowns, supernodal Cholesky above), ldlt, supernodal, cholmod\n"
   "  --output OUT.ply          mesh with vertex field_x, field_y, field_z and face field_index (k/N)\n"
   "                            and field_index_numerator (k)\n"
   "  --picture OUT.png         arrows (n = 1), segments (n = 2) or crosses (n = 4) on the surface,\n"
@@ -48,7 +49,7 @@ const char* usage =
 
 struct Options
 {
-  std::string input, method, output, picture, up = "+Y", solver = "ldlt";
+  std::string input, method, output, picture, up = "+Y", solver = "default";
   std::string boundary = "free";
   int n = 1;
   double curvature_weight = 0.;
@@ -88,7 +89,7 @@ Options parse(int argc, char** argv)
     else if(a == "--boundary")
       o.boundary = example::parse_choice(next(), a, {"free", "tangent", "normal"});
     else if(a == "--solver")
-      o.solver = example::parse_choice(next(), a, {"ldlt", "cholmod"});
+      o.solver = example::parse_choice(next(), a, example::solver_names());
     else if(a == "--output")
       example::check_output_path(o.output = next(), a, {".ply"});
     else if(a == "--picture")
@@ -216,7 +217,7 @@ void write_picture(const Mesh& mesh, const std::vector<Vector>& field, const std
 }
 
 template <class Solver>
-int run(const Options& o)
+int run(const Options& o, const Solver& solver)
 {
   example::Stopwatch clock, total;
   Mesh mesh = example::read_mesh(o.input);
@@ -234,7 +235,7 @@ int run(const Options& o)
       SD::parameters::symmetry_order(
         o.n, SD::parameters::curvature_alignment_weight(
                o.curvature_weight, SD::parameters::field_boundary_condition(
-                                     boundary_condition(o.boundary), SD::parameters::sparse_linear_solver(Solver())))));
+                                     boundary_condition(o.boundary), SD::parameters::sparse_linear_solver(solver)))));
     std::cout << "smoothest field (n = " << o.n << "): " << clock.lap() << " ms";
     if(info.iterations > 0)
     {
@@ -247,7 +248,7 @@ int run(const Options& o)
   }
   else
   {
-    SD::Trivial_connection tc(mesh, SD::parameters::symmetry_order(o.n, SD::parameters::sparse_linear_solver(Solver())));
+    SD::Trivial_connection tc(mesh, SD::parameters::symmetry_order(o.n, SD::parameters::sparse_linear_solver(solver)));
     std::cout << "trivial connection set-up and factorization: " << clock.lap() << " ms\n";
     for(const auto& [f, k] : o.singularities)
       tc.set_index(f, k);
@@ -301,6 +302,6 @@ int main(int argc, char** argv)
 {
   return example::run_main("direction_field", usage, argc, [&] {
     const Options o = parse(argc, argv);
-    return example::with_solver(o.solver, [&o](auto traits) { return run<decltype(traits)>(o); });
+    return example::with_solver(o.solver, [&o](auto traits) { return run(o, traits); });
   });
 }

@@ -50,7 +50,8 @@ const char* usage =
   "                            not in a face with an edge on the boundary (prescribe the winding\n"
   "                            of that loop instead)\n"
   "  --winding LOOP:N          prescribe the winding of a loop (repeatable; others automatic)\n"
-  "  --solver ldlt|cholmod     sparse solver (default ldlt)\n"
+  "  --solver S                sparse solver: default (simplicial LDLT below 20k\n"
+  "                            unknowns, supernodal Cholesky above), ldlt, supernodal, cholmod\n"
   "  --convention projected|angle_rescaled   how omega is computed from the field\n"
   "  --output OUT.ply          mesh with vertex alpha, face index, edge omega/dalpha\n"
   "  --picture OUT.png         picture of the stripes (cos alpha), rendered with f3d\n"
@@ -58,7 +59,7 @@ const char* usage =
 
 struct Options
 {
-  std::string input, field = "axis:0,1,0", output, picture, up = "+Y", solver = "ldlt";
+  std::string input, field = "axis:0,1,0", output, picture, up = "+Y", solver = "default";
   std::optional<double> scale;
   std::vector<std::pair<std::size_t, int>> singularities;
   std::map<std::size_t, int> windings;
@@ -104,7 +105,7 @@ Options parse(int argc, char** argv)
       o.windings[std::size_t(l)] = int(n);
     }
     else if(a == "--solver")
-      o.solver = example::parse_choice(next(), a, {"ldlt", "cholmod"});
+      o.solver = example::parse_choice(next(), a, example::solver_names());
     else if(a == "--convention")
       o.convention = example::parse_choice(next(), a, {"projected", "angle_rescaled"}) == "projected"
                        ? SD::One_form_convention::projected
@@ -162,8 +163,9 @@ std::vector<Eigen::Vector3d> vertex_normals(const Mesh& mesh)
   return normal;
 }
 
-// The vector field the stripes follow, one vector per vertex.
-std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec)
+// The vector field the stripes follow, one vector per vertex; `solver` for the fields that solve.
+template <class Solver>
+std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec, const Solver& solver)
 {
   if(spec.rfind("axis:", 0) == 0)
   {
@@ -253,7 +255,8 @@ std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec)
   std::vector<Vector> field(num_vertices(mesh));
   if(spec == "smoothest")
   {
-    const auto info = SD::smoothest_direction_field(mesh, CGAL::make_property_map(field));
+    const auto info = SD::smoothest_direction_field(mesh, CGAL::make_property_map(field),
+                                                    SD::parameters::sparse_linear_solver(solver));
     std::cout << "smoothest vector field: eigenvalue " << info.eigenvalues.front() << ", " << info.iterations
               << " Lanczos steps\n";
     return field;
@@ -261,7 +264,7 @@ std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec)
   if(spec.rfind("trivial:", 0) == 0)
   {
     // trivial:FACE:INDEX,FACE:INDEX,...
-    SD::Trivial_connection tc(mesh);
+    SD::Trivial_connection tc(mesh, SD::parameters::sparse_linear_solver(solver));
     std::map<std::size_t, int> indices;
     for(const std::string& item : split_list(spec.substr(8), "--field trivial:FACE:INDEX,FACE:INDEX,..."))
     {
@@ -284,14 +287,18 @@ std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec)
 }
 
 template <class Solver>
-int run(const Options& o)
+int run(const Options& o, const Solver& solver)
 {
   example::Stopwatch clock, total;
   Mesh mesh = example::read_mesh(o.input);
   std::cout << "read " << o.input << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh)
             << " faces (" << clock.lap() << " ms)\n";
 
-  SD::Field_aligned_parameterizer fap(mesh, SD::parameters::sparse_linear_solver(Solver()));
+  // the field's system (smoothest or trivial connection) has the pattern of the stripes' one: with
+  // the default solver, one ordering and analysis serves both on large meshes
+  Solver stripe_solver = solver;
+  const Solver field_solver = example::solver_sharing_analysis(stripe_solver);
+  SD::Field_aligned_parameterizer fap(mesh, SD::parameters::sparse_linear_solver(stripe_solver));
   std::cout << "validate, topology, weights, factorization: " << clock.lap() << " ms\n";
   std::cout << "  " << fap.number_of_connected_components() << " component(s), genus";
   for(std::size_t c = 0; c < fap.number_of_connected_components(); ++c)
@@ -299,7 +306,7 @@ int run(const Options& o)
   std::cout << ", " << fap.number_of_generator_loops() << " generator loop(s), "
             << fap.number_of_boundary_loops() << " boundary loop(s)\n";
 
-  const std::vector<Vector> field = make_field(mesh, o.field);
+  const std::vector<Vector> field = make_field(mesh, o.field, field_solver);
   CGAL::Bbox_3 box;
   for(const Point& p : mesh.points())
     box += p.bbox();
@@ -447,6 +454,6 @@ int main(int argc, char** argv)
 {
   return example::run_main("stripes", usage, argc, [&] {
     const Options o = parse(argc, argv);
-    return example::with_solver(o.solver, [&o](auto traits) { return run<decltype(traits)>(o); });
+    return example::with_solver(o.solver, [&o](auto traits) { return run(o, traits); });
   });
 }

@@ -50,14 +50,15 @@ const char* usage =
   "  --no-feature-snapping keep the net's positions (default: interior input vertices farther than\n"
   "                        h / 4 from the result, a pit or a spike narrower than h, pull the nearest\n"
   "                        vertex onto them)\n"
-  "  --solver ldlt|cholmod sparse solver (default ldlt)\n"
+  "  --solver S            sparse solver: default (simplicial LDLT below 20k\n"
+  "                        unknowns, supernodal Cholesky above), ldlt, supernodal, cholmod\n"
   "  --output OUT          the quad mesh (.off, .obj or .ply); required\n"
   "  --picture OUT.png     the new mesh's edges over the input; faces other than quads in orange\n"
   "  --up +Y|+Z|...        up direction in the picture (default +Y)\n";
 
 struct Options
 {
-  std::string input, output, picture, up = "+Y", solver = "ldlt";
+  std::string input, output, picture, up = "+Y", solver = "default";
   std::vector<long> minima, maxima;
   double edge_length = 0., curvature_adaptation = 0.;
   bool protrusions = true, intrinsic_delaunay = false, quad_poles = true, spectacles = true,
@@ -95,7 +96,7 @@ Options parse(int argc, char** argv)
     else if(a == "--no-feature-snapping")
       o.feature_snapping = false;
     else if(a == "--solver")
-      o.solver = example::parse_choice(next(), a, {"ldlt", "cholmod"});
+      o.solver = example::parse_choice(next(), a, example::solver_names());
     else if(a == "--output")
       example::check_output_path(o.output = next(), a, {".off", ".obj", ".ply"});
     else if(a == "--picture")

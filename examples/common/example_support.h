@@ -34,10 +34,12 @@
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
+#include <memory>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -120,18 +122,61 @@ private:
   std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
 };
 
-/// Calls `f(traits)` with a default-constructed solver traits object of the solver named `name`
-/// ("ldlt", or "cholmod" when the library was built with CHOLMOD) and returns what it returns.
+/// The solvers of the programs' `--solver` option: "default" (the library's `Default_solver_traits`:
+/// simplicial LDLT with AMD below 20k unknowns, supernodal Cholesky with nested dissection above),
+/// "ldlt" and "supernodal" (the same traits with one of the two forced by the size threshold, as
+/// `Simplicial_ldlt_solver_traits` and `Supernodal_solver_traits` would) and, when the library was
+/// built with CHOLMOD, "cholmod" (`Cholmod_solver_traits`).
+inline const std::vector<std::string>& solver_names()
+{
+  static const std::vector<std::string> names{"default", "ldlt", "supernodal"
+#if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
+                                              ,
+                                              "cholmod"
+#endif
+  };
+  return names;
+}
+
+/// Calls `f(traits)` with a solver traits object of the solver named `name` (one of
+/// `solver_names()`) and returns what it returns. One traits type serves the first three names, so
+/// that every program compiles each algorithm for two solver types only.
 template <class F>
 decltype(auto) with_solver(const std::string& name, F&& f)
 {
-  if(name == "ldlt")
-    return f(CGAL::Surface_design::Default_solver_traits());
+  using Traits = CGAL::Surface_design::Default_solver_traits;
+  if(name == "default" || name == "ldlt" || name == "supernodal")
+  {
+    Traits traits;
+    if(name == "ldlt")
+      traits.solver().set_size_threshold(std::numeric_limits<Eigen::Index>::max());
+    else if(name == "supernodal")
+      traits.solver().set_size_threshold(0);
+    return f(traits);
+  }
 #if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
   if(name == "cholmod")
     return f(CGAL::Surface_design::Cholmod_solver_traits());
 #endif
-  throw Usage_error("unknown or unavailable solver \"" + name + "\" (ldlt, or cholmod when built with CHOLMOD)");
+  throw Usage_error("unknown or unavailable solver \"" + name +
+                    "\" (default, ldlt, supernodal, or cholmod when built with CHOLMOD)");
+}
+
+/// Gives `traits` an analysis cache (`CGAL::Surface_design::Symbolic_analysis_cache`) if it has
+/// none and returns a new traits object with the same settings (size threshold, cache), for another
+/// system on the same mesh: with the library's default traits, systems with one pattern are then
+/// ordered and analysed once. Other traits: a new default-constructed object.
+template <class Traits>
+Traits solver_sharing_analysis(Traits& traits)
+{
+  Traits other;
+  if constexpr(std::is_same<Traits, CGAL::Surface_design::Default_solver_traits>::value)
+  {
+    if(!traits.solver().analysis_cache())
+      traits.solver().set_analysis_cache(std::make_shared<CGAL::Surface_design::Symbolic_analysis_cache>());
+    other.solver().use_settings_of(traits.solver());
+  }
+  return other;
 }
 
 /// `x` with 4 significant digits (for messages).
