@@ -188,7 +188,10 @@ inline const std::vector<Solver_info>& known_solvers()
   constexpr bool has_cholmod = false;
 #endif
   static const std::vector<Solver_info> table{
-    {"ldlt", "Default_solver_traits: Eigen SimplicialLDLT, AMD ordering", true, ""},
+    {"default", "Default_solver_traits: Eigen SimplicialLDLT + AMD below 20k unknowns, supernodal Cholesky + nested "
+                "dissection from 20k on",
+     true, ""},
+    {"ldlt", "Simplicial_ldlt_solver_traits: Eigen SimplicialLDLT, AMD ordering", true, ""},
     {"ldlt-nd", "Nested_dissection_ldlt_solver_traits: Eigen SimplicialLDLT, the library's nested dissection",
      true, ""},
     {"supernodal", "Supernodal_solver_traits: the library's supernodal Cholesky, nested dissection", true, ""},
@@ -221,15 +224,17 @@ struct Solver_tag
   using type = SolverTraits;
 };
 
-/// Calls `f(Solver_tag<Traits>())` with the traits named `solver` ("ldlt": the library's
-/// `Default_solver_traits`, "ldlt-nd": `Nested_dissection_ldlt_solver_traits`, "supernodal": `Supernodal_solver_traits`, "ldlt-metis": `Metis_ldlt_solver_traits`, "cholmod":
+/// Calls `f(Solver_tag<Traits>())` with the traits named `solver` ("default": the library's
+/// `Default_solver_traits`, "ldlt": `Simplicial_ldlt_solver_traits`, "ldlt-nd": `Nested_dissection_ldlt_solver_traits`, "supernodal": `Supernodal_solver_traits`, "ldlt-metis": `Metis_ldlt_solver_traits`, "cholmod":
 /// `Cholmod_solver_traits`).
 /// \throws std::invalid_argument for a name that is not in `compiled_solvers()`.
 template <class F>
 void with_solver_traits(const std::string& solver, F&& f)
 {
-  if(solver == "ldlt")
+  if(solver == "default")
     f(Solver_tag<CGAL::Surface_design::Default_solver_traits>());
+  else if(solver == "ldlt")
+    f(Solver_tag<CGAL::Surface_design::Simplicial_ldlt_solver_traits>());
   else if(solver == "ldlt-nd")
     f(Solver_tag<CGAL::Surface_design::Nested_dissection_ldlt_solver_traits>());
   else if(solver == "supernodal")

@@ -91,6 +91,11 @@ inline const std::vector<Preset>& presets()
      {"bundled:bunny_1k.off", "bundled:bunny_8k.off", "shared:bunny_60k.off",
       "shared:bunny_loop1_239k.off", "shared:bunny_loop2_955k.off.gz"},
      {"smoothest_field", "trivial_connection"}},
+    {"field_stripes", "the smoothest field and the stripes along it, end to end, on the sizes of the peer "
+                      "figures: bunnies and the kitten, 8k to 955k faces",
+     {"bundled:bunny_8k.off", "bundled:kitten.off", "shared:bunny_60k.off", "shared:bunny_loop1_239k.off",
+      "shared:bunny_loop2_955k.off.gz"},
+     {"field_stripes"}},
     // barycentric embedding (Imafuji & Ochiai): the octahedron of the paper's Table 1 and 2
     {"table1", "the paper's Table 1: octahedron m = 4, 8, 12, direct vs iterative",
      {"octahedron:4", "octahedron:8", "octahedron:12"},

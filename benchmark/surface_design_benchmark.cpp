@@ -45,6 +45,10 @@ const std::vector<Workload>& workloads()
      "the same stripes by the paper's face-space solver (positive cotangent weights only); "
      "phases factor, field, solve, resolve, full",
      &stripes_face_space_workload},
+    {"field_stripes",
+     "smoothest vector field, then the stripes along it; phases field, stripes, full (one ordering and "
+     "analysis shared by the two systems: default and supernodal), full, analyses not shared",
+     &field_stripes_workload},
     {"smoothest_field", "smoothest vector field (smoothest_direction_field, n = 1); phase full",
      &smoothest_field_workload},
     {"trivial_connection",
@@ -144,7 +148,8 @@ const char* const usage =
   "                   (repeatable; default: preset quick)\n"
   "  --preset NAME    a named list of meshes (repeatable; see --list); without --workload,\n"
   "                   runs the workloads the preset is meant for\n"
-  "  --solver S       ldlt, ldlt-nd, supernodal, ldlt-metis, cholmod, a comma-separated list, or all (default: all);\n"
+  "  --solver S       default, ldlt, ldlt-nd, supernodal, ldlt-metis, cholmod, a comma-separated list, or all\n"
+  "                   (default: all);\n"
   "                   the first is the baseline of the comparisons\n"
   "  --warmup W       unmeasured runs first (default 1)\n"
   "  --runs R         measured runs (default 5)\n"

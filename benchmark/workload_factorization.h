@@ -50,13 +50,13 @@ struct Given_ordering
   void operator()(const Matrix&, Permutation& p) const { p = *order(); }
 };
 
-/// The fill-reducing order of the symmetric matrix `a` for the solver name: AMD for "ldlt"
-/// (Eigen's, as the default solver), METIS for "ldlt-metis", the library's nested dissection for
+/// The fill-reducing order of the symmetric matrix `a` for the solver name: AMD for "ldlt" and
+/// "default" below its size threshold (Eigen's), METIS for "ldlt-metis", the library's nested dissection for
 /// "ldlt-nd", "supernodal" and "cholmod".
 inline Permutation ordering(const std::string& solver, const SDI::Sparse_matrix& a)
 {
   Permutation p;
-  if(solver == "ldlt")
+  if(solver == "ldlt" || solver == "default")
     Eigen::AMDOrdering<int>()(a, p);
 #if defined(CGAL_SURFACE_DESIGN_HAS_METIS)
   else if(solver == "ldlt-metis")
@@ -204,7 +204,8 @@ inline void run_cholmod(const SDI::Sparse_matrix& a, const Eigen::VectorXd& b, R
 /// the supernodal analysis or `cholmod_analyze_p`), `numeric` (`factorize`, the supernodal
 /// factorization or `cholmod_factorize`), `solve`
 /// (one right-hand side), `first solve` = their sum. Checks: fill and flops of the factor, the
-/// relative residual. The system is that of workload `laplacian`, assembled untimed.
+/// relative residual. The system is that of workload `laplacian`, assembled untimed. `default`
+/// runs as `ldlt` below `Size_switched_cholesky`'s size threshold and as `supernodal` from there on.
 inline void factorization_workload(const Mesh& mesh, const std::string& solver, Run& run)
 {
   namespace SDI = CGAL::Surface_design::internal;
@@ -218,7 +219,8 @@ inline void factorization_workload(const Mesh& mesh, const std::string& solver, 
     return;
   }
 #endif
-  if(solver == "supernodal")
+  using Default_solver = CGAL::Surface_design::Default_solver_traits::Solver;
+  if(solver == "supernodal" || (solver == "default" && a.rows() >= Default_solver::default_size_threshold))
   {
     factorization_detail::run_supernodal(a, b, run);
     return;

@@ -13,6 +13,7 @@
 #include "harness.h"
 
 #include <CGAL/Surface_design/Field_aligned_parameterizer.h>
+#include <CGAL/Surface_design/direction_fields.h>
 #include "Face_space_stripe_solver.h"
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/Core/dec.h>
@@ -25,6 +26,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -221,6 +223,67 @@ void run_stripes(const Mesh& mesh, Run& run)
   run.sum_phase("full", {"factor", "field", "solve"});
 }
 
+/// The traits of two systems on one mesh: with the library's default traits, sharing one
+/// `Symbolic_analysis_cache` when `shared` (each new cache, else); other traits as they are.
+template <class SolverTraits>
+std::pair<SolverTraits, SolverTraits> traits_pair(bool shared)
+{
+  SolverTraits a, b;
+  if constexpr(std::is_same<SolverTraits, SD::Default_solver_traits>::value ||
+               std::is_same<SolverTraits, SD::Supernodal_solver_traits>::value)
+  {
+    auto cache = std::make_shared<SD::Symbolic_analysis_cache>();
+    a.solver().set_analysis_cache(cache);
+    b.solver().set_analysis_cache(shared ? cache : std::make_shared<SD::Symbolic_analysis_cache>());
+  }
+  return {a, b};
+}
+
+/// The smoothest vector field, then the stripes along it (no singularity prescribed; the windings
+/// automatic), the two systems sharing their analysis when `shared` (see `traits_pair`).
+/// Returns the number of analyses reused.
+template <class SolverTraits>
+std::size_t field_then_stripes(const Mesh& mesh, bool shared, std::vector<Kernel::Vector_3>& field,
+                               std::optional<Parameterizer<SolverTraits>>& fap, Run* run)
+{
+  auto [field_traits, stripe_traits] = traits_pair<SolverTraits>(shared);
+  auto timed = [run](const char* name, auto&& f) {
+    if(run)
+      run->phase(name, f);
+    else
+      f();
+  };
+  SD::Smoothest_direction_field_info info;
+  timed("field", [&] {
+    info = SD::smoothest_direction_field(mesh, CGAL::make_property_map(field),
+                                         SD::parameters::sparse_linear_solver(field_traits));
+  });
+  timed("stripes", [&] {
+    fap.emplace(mesh, SD::parameters::sparse_linear_solver(stripe_traits));
+    fap->set_field(CGAL::make_property_map(field), make_setup(*fap).stripes_per_unit_length);
+    fap->solve();
+  });
+  if(run)
+    run->check("field: Lanczos not converged", info.converged ? 0. : 1., 0.5);
+  if constexpr(std::is_same<SolverTraits, SD::Default_solver_traits>::value ||
+               std::is_same<SolverTraits, SD::Supernodal_solver_traits>::value)
+    return stripe_traits.solver().analysis_cache()->hits();
+  return 0;
+}
+
+template <class SolverTraits>
+void run_field_stripes(const Mesh& mesh, Run& run)
+{
+  std::vector<Kernel::Vector_3> field(num_vertices(mesh));
+  std::optional<Parameterizer<SolverTraits>> fap, own;
+  const std::size_t hits = field_then_stripes<SolverTraits>(mesh, true, field, fap, &run);
+  run.sum_phase("full", {"field", "stripes"});
+  run.phase("full, analyses not shared", [&] { field_then_stripes<SolverTraits>(mesh, false, field, own, nullptr); });
+  run.check("analyses shared between the field and the stripes", double(hits), 1e300);
+  if(run.checks_enabled())
+    check_solution(*fap, "stripes", run);
+}
+
 /// The face-space formulation needs W^-1: every cotangent weight positive (the condition the
 /// solver's constructor enforces). Checked on its own first, so that an inapplicable mesh costs
 /// no factorization.
@@ -282,6 +345,20 @@ inline void stripes_workload(const Mesh& mesh, const std::string& solver, Run& r
 {
   with_solver_traits(solver, [&](auto tag) {
     stripes_detail::run_stripes<typename decltype(tag)::type>(mesh, run);
+  });
+}
+
+/// The smoothest vector field (n = 1, free boundary) and the stripes along it, the pipeline that
+/// geometry-central's examples run (smoothest line field + stripe pattern). Phases: `field`,
+/// `stripes` (constructing `Field_aligned_parameterizer` with its factorization, `set_field`,
+/// `solve`), `full` = field + stripes, with the two systems sharing one ordering and analysis
+/// through a `Symbolic_analysis_cache` (the default and the supernodal traits; the others have
+/// none), and `full, analyses not shared` (the same with a cache each). Checks: the Lanczos
+/// iteration converged, the stripes' optimality conditions, the number of analyses shared.
+inline void field_stripes_workload(const Mesh& mesh, const std::string& solver, Run& run)
+{
+  with_solver_traits(solver, [&](auto tag) {
+    stripes_detail::run_field_stripes<typename decltype(tag)::type>(mesh, run);
   });
 }
 
