@@ -625,6 +625,11 @@ public:
   {
     const Supernodal_symbolic& sym = *m_symbolic;
     const Eigen::Index n = sym.n, k = b.cols();
+    if(k == 1)
+    {
+      solve_one(b, x);
+      return;
+    }
     Dense y(n, k), gathered(Eigen::Index(sym.largest_below), k);
     for(Eigen::Index i = 0; i < n; ++i)
       y.row(i) = b.row(sym.old_of_new[std::size_t(i)]);
@@ -664,6 +669,58 @@ public:
   }
 
 private:
+  // One right-hand side (the common case: every re-solve of an edit): column by column through the
+  // panels, scattering into (forward) and gathering from (backward) the permuted vector directly.
+  // A back-substitution reads the factor once, so it runs at memory speed; per-supernode calls of
+  // the dense kernels and the copies to and from a gathered block cost more than they save there
+  // (measured: 1.2-1.4x slower than this loop on meshes of 20k to 120k vertices).
+  template <class Rhs, class Dest>
+  void solve_one(const Eigen::MatrixBase<Rhs>& b, Eigen::MatrixBase<Dest>& x) const
+  {
+    const Supernodal_symbolic& sym = *m_symbolic;
+    const Eigen::Index n = sym.n;
+    std::vector<Scalar> y(std::size_t(n) + 1); // + 1: a valid pointer for n = 0
+    for(Eigen::Index i = 0; i < n; ++i)
+      y[std::size_t(i)] = b(sym.old_of_new[std::size_t(i)], 0);
+    const int ns = sym.supernode_count();
+    const Scalar* values = m_values.data();
+    for(int s = 0; s < ns; ++s) // L y = b
+    {
+      const int c = sym.columns(s), m = sym.row_count(s);
+      const int* rows = sym.rows.data() + sym.row_offsets[std::size_t(s)];
+      Scalar* block = y.data() + sym.first[std::size_t(s)];
+      for(int j = 0; j < c; ++j)
+      {
+        const Scalar* column = values + sym.panel_offsets[std::size_t(s)] + std::int64_t(j) * m;
+        const Scalar yj = block[j] / column[j];
+        block[j] = yj;
+        for(int i = j + 1; i < c; ++i)
+          block[i] -= column[i] * yj;
+        for(int i = c; i < m; ++i)
+          y[std::size_t(rows[i])] -= column[i] * yj;
+      }
+    }
+    for(int s = ns; s-- > 0;) // L^H x = y
+    {
+      const int c = sym.columns(s), m = sym.row_count(s);
+      const int* rows = sym.rows.data() + sym.row_offsets[std::size_t(s)];
+      Scalar* block = y.data() + sym.first[std::size_t(s)];
+      for(int j = c; j-- > 0;)
+      {
+        const Scalar* column = values + sym.panel_offsets[std::size_t(s)] + std::int64_t(j) * m;
+        Scalar sum = block[j];
+        for(int i = j + 1; i < c; ++i)
+          sum -= Eigen::numext::conj(column[i]) * block[i];
+        for(int i = c; i < m; ++i)
+          sum -= Eigen::numext::conj(column[i]) * y[std::size_t(rows[i])];
+        block[j] = sum / Eigen::numext::conj(column[j]);
+      }
+    }
+    x.derived().resize(n, 1);
+    for(Eigen::Index i = 0; i < n; ++i)
+      x(sym.old_of_new[std::size_t(i)], 0) = y[std::size_t(i)];
+  }
+
   // Dense kernels of the fronts. Large fronts (at the top of a nested-dissection tree: the
   // separators, up to a few thousand rows) hold half of the flops and come after the subtrees'
   // tasks; with TBB they are cut into blocks of rows or columns factored concurrently.
