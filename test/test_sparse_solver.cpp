@@ -221,6 +221,30 @@ TEST_CASE("Default solver: the supernodal factorization from 20k unknowns on, by
   CHECK(traits.solver().size_threshold() == 20000);
 }
 
+TEST_CASE("Default solver: one object across the size threshold, analysis and factorization apart", "[solver]")
+{
+  SD::Size_switched_cholesky<SDI::Sparse_matrix> solver;
+  solver.set_size_threshold(500);
+  for(const int k : {20, 30, 20}) // 400, 900, 400 unknowns
+  {
+    INFO("grid " << k);
+    const SDI::Sparse_matrix a = test::triangulated_grid(k);
+    const Eigen::VectorXd b = random_vector(a.rows(), unsigned(k));
+    solver.compute(a);
+    REQUIRE(solver.info() == Eigen::Success);
+    REQUIRE(solver.uses_supernodal() == (k * k >= 500));
+    REQUIRE(solver.rows() == a.rows());
+    REQUIRE((a * Eigen::VectorXd(solver.solve(b)) - b).norm() <= 1e-10 * b.norm());
+    // analysis once, then factorizations of other values on the same pattern
+    solver.analyzePattern(a);
+    const SDI::Sparse_matrix twice = 2. * a;
+    solver.factorize(twice);
+    REQUIRE(solver.info() == Eigen::Success);
+    REQUIRE((twice * Eigen::VectorXd(solver.solve(b)) - b).norm() <= 1e-10 * b.norm());
+    REQUIRE(solver.vectorD().size() == a.rows());
+  }
+}
+
 TEST_CASE("Default solver: Hermitian systems in complex arithmetic with both factorizations", "[solver]")
 {
   const test::Complex_matrix h =

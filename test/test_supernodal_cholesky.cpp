@@ -414,12 +414,23 @@ TEST_CASE("Analysis cache: other patterns are analysed, equal ones found, in bot
   q.compute(star);
   REQUIRE(cache->size() == 4);
   REQUIRE(p.analysis() != q.analysis());
+  // the same count in every column, other rows: {0-2, 1-3} and {0-3, 1-2}
+  const Eigen::SparseMatrix<double> crossed = test::graph_matrix(4, {{0, 2}, {1, 3}});
+  const Eigen::SparseMatrix<double> swapped = test::graph_matrix(4, {{0, 3}, {1, 2}});
+  SD::Supernodal_cholesky<Eigen::SparseMatrix<double>> u, w;
+  u.set_analysis_cache(cache);
+  w.set_analysis_cache(cache);
+  u.compute(crossed);
+  w.compute(swapped);
+  REQUIRE(cache->size() == 6);
+  REQUIRE(u.analysis() != w.analysis());
+  REQUIRE((swapped * Eigen::VectorXd(w.solve(Eigen::VectorXd::Ones(4))) - Eigen::VectorXd::Ones(4)).norm() <= 1e-12);
   REQUIRE((star * Eigen::VectorXd(q.solve(Eigen::VectorXd::Ones(4))) - Eigen::VectorXd::Ones(4)).norm() <= 1e-12);
   // without a cache nothing is shared
   SD::Supernodal_cholesky<Eigen::SparseMatrix<double>> lone;
   lone.compute(grid);
   REQUIRE(lone.analysis() != a.analysis());
-  REQUIRE(cache->size() == 4);
+  REQUIRE(cache->size() == 6);
 }
 
 TEST_CASE("Analysis cache: the default solver uses it from its size threshold on", "[supernodal]")

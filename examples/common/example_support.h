@@ -169,14 +169,12 @@ decltype(auto) with_solver(const std::string& name, F&& f)
 template <class Traits>
 Traits solver_sharing_analysis(Traits& traits)
 {
-  Traits other;
   if constexpr(std::is_same<Traits, CGAL::Surface_design::Default_solver_traits>::value)
   {
     if(!traits.solver().analysis_cache())
       traits.solver().set_analysis_cache(std::make_shared<CGAL::Surface_design::Symbolic_analysis_cache>());
-    other.solver().use_settings_of(traits.solver());
   }
-  return other;
+  return CGAL::Surface_design::internal::new_solver_like(traits);
 }
 
 /// `x` with 4 significant digits (for messages).

@@ -94,7 +94,7 @@ public:
     : m_idx(tm, np),
       m_vpm(internal::class_vertex_point_map<VertexPointMap, false>(tm, np)),
       m_dirichlet(internal::class_solver_traits<SolverTraits>(np), "Laplacian of the interior vertices (BFF)"),
-      m_neumann(internal::class_solver_traits<SolverTraits>(np), "shifted Laplacian of all vertices (BFF, Neumann problem)")
+      m_neumann(internal::new_solver_like(m_dirichlet.traits()), "shifted Laplacian of all vertices (BFF, Neumann problem)")
   {
     internal::validate_mesh(m_idx, m_vpm);
     const internal::Boundary_loops loops = internal::boundary_loops(m_idx);

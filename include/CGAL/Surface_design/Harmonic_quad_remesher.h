@@ -594,7 +594,7 @@ private:
     internal::Intrinsic_triangulation intrinsic(idx, vpm);
     if(m_weights_kind == Harmonic_weights::intrinsic_delaunay)
       intrinsic.make_delaunay();
-    Solver solver(refined.number_of_vertices(), intrinsic.cotangent_weights(), SolverTraits());
+    Solver solver(refined.number_of_vertices(), intrinsic.cotangent_weights(), internal::new_solver_like(m_solver->traits()));
     std::vector<char> constrained(refined.number_of_vertices(), 0);
     refined_u.assign(refined.number_of_vertices(), 0.);
     for(const auto& [v, value] : m_constraints)

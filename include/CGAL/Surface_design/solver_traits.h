@@ -19,6 +19,8 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 #if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
 #include <Eigen/CholmodSupport>
@@ -156,7 +158,9 @@ public:
   }
   Eigen::Index cols() const { return rows(); }
 
-  /// The pivots of the factorization in use, in the original order of the unknowns (see the class).
+  /// The pivots of the factorization in use (see the class), in its elimination order for the
+  /// simplicial one, in the original order of the unknowns for the supernodal one; empty before a
+  /// successful factorization.
   Eigen::Matrix<RealScalar, Eigen::Dynamic, 1> vectorD() const
   {
     if(m_use_supernodal)
@@ -217,6 +221,29 @@ private:
 /// concurrently). Change the threshold with `traits.solver().set_size_threshold(n)`.
 using Default_solver_traits =
   CGAL::Eigen_solver_traits<Size_switched_cholesky<CGAL::Eigen_sparse_matrix<double>::EigenType>>;
+
+namespace internal {
+
+template <class SolverTraits, class = void>
+struct Has_solver_settings : std::false_type {};
+template <class SolverTraits>
+struct Has_solver_settings<SolverTraits, std::void_t<decltype(std::declval<SolverTraits&>().solver().use_settings_of(
+                                           std::declval<SolverTraits&>().solver()))>> : std::true_type {};
+
+/// A new traits object of the type of `traits`, for another system: copies of CGAL's Eigen traits
+/// share their factorization, so every system needs its own object. It takes the settings of
+/// `traits`' solver (size threshold, analysis cache) when the solver has them (the library's own).
+template <class SolverTraits>
+SolverTraits new_solver_like(SolverTraits& traits)
+{
+  SolverTraits fresh;
+  if constexpr(Has_solver_settings<SolverTraits>::value)
+    fresh.solver().use_settings_of(traits.solver());
+  (void)traits;
+  return fresh;
+}
+
+} // namespace internal
 
 #if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD) || defined(DOXYGEN_RUNNING)
 /// \ingroup PkgSurfaceDesignRef

@@ -102,8 +102,11 @@ public:
     std::lock_guard<std::mutex> lock(m_mutex);
     for(const Entry& e : m_entries)
       if(same_pattern(e, key)) // analysed by another thread meanwhile
+      {
+        ++m_hits;
         return e.analysis;
-    m_entries.push_back(key);
+      }
+    m_entries.push_back(std::move(key));
     return m_entries.back().analysis;
   }
   /// \endcond
@@ -269,7 +272,10 @@ public:
 
   /// The pivots |L_jj|^2, in the original order of the unknowns: those of an LDL^T factorization
   /// with the same ordering, so `Factored_system` checks them as it checks `SimplicialLDLT`'s.
-  Eigen::Matrix<RealScalar, Eigen::Dynamic, 1> vectorD() const { return m_factor.pivots(); }
+  Eigen::Matrix<RealScalar, Eigen::Dynamic, 1> vectorD() const
+  {
+    return m_factor.is_factored() ? m_factor.pivots() : Eigen::Matrix<RealScalar, Eigen::Dynamic, 1>();
+  }
 
   /// Number of supernodes, stored entries of L below the diagonal, multiply-adds of a factorization.
   int supernode_count() const { return m_analysis ? m_analysis->supernode_count() : 0; }

@@ -187,6 +187,7 @@ public:
   {}
 
   const std::vector<Weighted_edge>& weights() const { return m_weights; }
+  SolverTraits& traits() { return m_system.traits(); }
 
   /// Factors L_FF for the constrained vertex set (a no-op if it is the one already factored).
   void factor(const std::vector<char>& constrained)
