@@ -251,6 +251,41 @@ TEMPLATE_TEST_CASE("BFF maps a flat disk in space isometrically", "[flattening][
 #undef SD_CHECK_ISOMETRY
 }
 
+TEMPLATE_TEST_CASE("BFF flattens pieces without interior vertices (a folded strip, one triangle) isometrically",
+                   "[flattening][bff]", SD_MESH_TYPES)
+{
+  // every vertex on the boundary: the interior block of the Laplacian has no column
+  using Mesh = TestType;
+  for(std::size_t n : {1u, 7u})
+  {
+    INFO("strip of " << n << " quads, folded along every rung");
+    Soup_points points;
+    Soup_triangles triangles;
+    for(std::size_t i = 0; i <= n; ++i) // a zigzag in x-z, straight rungs along y: developable
+      for(double y : {0., 0.4})
+        points.push_back({0.3 * double(i), y, i % 2 == 0 ? 0. : 0.2});
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      triangles.push_back({2 * i, 2 * i + 2, 2 * i + 3});
+      triangles.push_back({2 * i, 2 * i + 3, 2 * i + 1});
+    }
+    const Mesh mesh = from_soup<Mesh>(points, triangles);
+    Uv_map<Mesh> uv;
+    SD::boundary_first_flattening(mesh, boost::make_assoc_property_map(uv));
+    CHECK(edge_length_error(mesh, uv) <= 1e-9);
+    const SD::Flattening_distortion d = SD::flattening_distortion(mesh, boost::make_assoc_property_map(uv));
+    CHECK(d.flipped_faces == 0);
+    CHECK(d.area_log_max <= 1e-9);
+  }
+  {
+    INFO("one triangle");
+    const Mesh mesh = from_soup<Mesh>({{0., 0., 0.}, {1., 0.2, 0.1}, {0.1, 0.9, 0.5}}, {{0, 1, 2}});
+    Uv_map<Mesh> uv;
+    SD::boundary_first_flattening(mesh, boost::make_assoc_property_map(uv));
+    CHECK(edge_length_error(mesh, uv) <= 1e-12);
+  }
+}
+
 TEMPLATE_TEST_CASE("A cylinder and a cone cut along a ruling flatten isometrically", "[flattening][bff]",
                    SD_MESH_TYPES)
 {

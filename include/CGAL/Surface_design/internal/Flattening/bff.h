@@ -121,6 +121,8 @@ struct Laplacian_blocks
   {
     const std::size_t n = column_vertices.size();
     Eigen::SparseMatrix<double> m(rows, Eigen::Index(n));
+    if(n == 0) // no columns (a piece whose vertices all lie on its boundary): nothing to reserve,
+      return m; // and Eigen's makeCompressed() of a reserved 0-column matrix reads past its end
     Eigen::VectorXi room = Eigen::VectorXi::Zero(Eigen::Index(n));
     for(std::size_t j = 0; j < n; ++j)
     {
