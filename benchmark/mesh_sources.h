@@ -96,6 +96,9 @@ inline const std::vector<Preset>& presets()
      {"bundled:bunny_8k.off", "bundled:kitten.off", "shared:bunny_60k.off", "shared:bunny_loop1_239k.off",
       "shared:bunny_loop2_955k.off.gz"},
      {"field_stripes"}},
+    {"editor", "the stripe editor's per-edit latency at 1k, 8k, 60k and 239k faces",
+     {"bundled:bunny_1k.off", "bundled:bunny_8k.off", "shared:bunny_60k.off", "shared:bunny_loop1_239k.off"},
+     {"editor"}},
     // barycentric embedding (Imafuji & Ochiai): the octahedron of the paper's Table 1 and 2
     {"table1", "the paper's Table 1: octahedron m = 4, 8, 12, direct vs iterative",
      {"octahedron:4", "octahedron:8", "octahedron:12"},

@@ -16,6 +16,9 @@
 #include "workload_developability.h"
 #include "workload_flattening.h"
 #include "workload_harmonic_quad.h"
+#ifdef SURFACE_DESIGN_BENCHMARK_HAS_EDITOR
+#include "workload_editor.h"
+#endif
 
 #include <algorithm>
 #include <cstddef>
@@ -49,6 +52,12 @@ const std::vector<Workload>& workloads()
      "smoothest vector field, then the stripes along it; phases field, stripes, full (one ordering and "
      "analysis shared by the two systems: default and supernodal), full, analyses not shared",
      &field_stripes_workload},
+#ifdef SURFACE_DESIGN_BENCHMARK_HAS_EDITOR
+    {"editor",
+     "the stripe editor's server, edit by edit (JSON parse, edit, re-solve, per-corner state written); phases open, "
+     "add pair, drag step (mean of 20 moves to an adjacent face), frequency, state (serialization alone)",
+     &editor_workload, Solver_use::none},
+#endif
     {"smoothest_field", "smoothest vector field (smoothest_direction_field, n = 1); phase full",
      &smoothest_field_workload},
     {"trivial_connection",

@@ -5,18 +5,20 @@
 #                                     only (-g1: enough for stack traces, faster to build), assertions on)
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-install_packages "${BUILD_PACKAGES[@]}"
+install_packages "${BUILD_PACKAGES[@]}" "${EDITOR_PACKAGES[@]}" python3 chromium
 
 if [ "${1:-}" = "--sanitize" ]; then
   BUILD="$ROOT/build-sanitize"
   configure_and_build "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1" \
     -DCGAL_SURFACE_DESIGN_SANITIZE=ON -DCGAL_SURFACE_DESIGN_WERROR=ON -DCGAL_SURFACE_DESIGN_REQUIRE_CHOLMOD=ON \
-    -DCGAL_SURFACE_DESIGN_BUILD_EXAMPLES=OFF -DCGAL_SURFACE_DESIGN_BUILD_BENCHMARKS=OFF
+    -DCGAL_SURFACE_DESIGN_BUILD_EXAMPLES=OFF -DCGAL_SURFACE_DESIGN_BUILD_BENCHMARKS=OFF \
+    -DCGAL_SURFACE_DESIGN_BUILD_EDITOR=ON -DCGAL_SURFACE_DESIGN_REQUIRE_EDITOR=ON
   export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
   export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 else
   BUILD="$ROOT/build"
-  configure_and_build "$BUILD" -DCMAKE_BUILD_TYPE=Release -DCGAL_SURFACE_DESIGN_WERROR=ON -DCGAL_SURFACE_DESIGN_REQUIRE_CHOLMOD=ON
+  configure_and_build "$BUILD" -DCMAKE_BUILD_TYPE=Release -DCGAL_SURFACE_DESIGN_WERROR=ON -DCGAL_SURFACE_DESIGN_REQUIRE_CHOLMOD=ON \
+    -DCGAL_SURFACE_DESIGN_REQUIRE_EDITOR=ON
 fi
 
 echo "== Running the tests in $BUILD"

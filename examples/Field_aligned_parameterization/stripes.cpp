@@ -5,14 +5,13 @@
 // Run without arguments for the usage.
 
 #include "../common/example_support.h"
+#include "../common/stripe_fields.h"
 
 #include <CGAL/Surface_design/direction_fields.h>
 #include <CGAL/Surface_design/field_aligned_parameterization.h>
 #include <CGAL/Surface_design/Field_aligned_parameterizer.h>
 #include <CGAL/Surface_design/Trivial_connection.h>
 
-#include <CGAL/Heat_method_3/Surface_mesh_geodesic_distances_3.h>
-#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 
 #include <cmath>
@@ -149,19 +148,8 @@ std::vector<std::string> split_list(const std::string& list, const std::string& 
   }
 }
 
-Eigen::Vector3d eigen(const Point& p) { return Eigen::Vector3d(p.x(), p.y(), p.z()); }
-
-// Unit vertex normals (CGAL's default weighting), indexed by vertex.
-std::vector<Eigen::Vector3d> vertex_normals(const Mesh& mesh)
-{
-  std::vector<Eigen::Vector3d> normal;
-  for(auto v : vertices(mesh))
-  {
-    const Vector n = CGAL::Polygon_mesh_processing::compute_vertex_normal(v, mesh);
-    normal.emplace_back(n.x(), n.y(), n.z());
-  }
-  return normal;
-}
+using example::eigen;
+using example::vertex_normals;
 
 // The vector field the stripes follow, one vector per vertex; `solver` for the fields that solve.
 template <class Solver>
@@ -213,44 +201,7 @@ std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec, const 
     if(!on_boundary.empty())
       std::cout << " (with an edge on the boundary, cannot hold a singularity:" << on_boundary << ")";
     std::cout << '\n';
-    std::vector<double> distance_values(num_vertices(mesh), 0.);
-    auto distance = CGAL::make_property_map(distance_values);
-    CGAL::Heat_method_3::estimate_geodesic_distances(mesh, distance, source_vertex);
-    // gradient of the piecewise-linear distance in every face, area-averaged to the vertices,
-    // then rotated about the vertex normal
-    const std::vector<Eigen::Vector3d> normal = vertex_normals(mesh);
-    std::vector<Eigen::Vector3d> g(num_vertices(mesh), Eigen::Vector3d::Zero());
-    for(auto f : faces(mesh))
-    {
-      Eigen::Vector3d p[3];
-      double d[3];
-      Mesh::Vertex_index vs[3];
-      int k = 0;
-      for(auto w : vertices_around_face(halfedge(f, mesh), mesh))
-      {
-        vs[k] = w;
-        p[k] = eigen(mesh.point(w));
-        d[k] = distance_values[std::size_t(w)];
-        ++k;
-      }
-      const Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]);
-      const double area2 = n.squaredNorm();
-      // grad d = sum_i d_i (N x e_i) / (2A), e_i the edge opposite vertex i
-      Eigen::Vector3d grad = Eigen::Vector3d::Zero();
-      for(int i = 0; i < 3; ++i)
-        grad += d[i] * n.cross(p[(i + 2) % 3] - p[(i + 1) % 3]);
-      grad /= area2;
-      for(int i = 0; i < 3; ++i)
-        g[std::size_t(vs[i])] += std::sqrt(area2) * grad;
-    }
-    const double theta = degrees * CGAL_PI / 180.;
-    std::vector<Vector> field;
-    for(std::size_t i = 0; i < g.size(); ++i)
-    {
-      const Eigen::Vector3d r = std::cos(theta) * g[i] + std::sin(theta) * normal[i].cross(g[i]);
-      field.emplace_back(r.x(), r.y(), r.z());
-    }
-    return field;
+    return example::heat_field(mesh, source_vertex, degrees);
   }
   std::vector<Vector> field(num_vertices(mesh));
   if(spec == "smoothest")

@@ -190,5 +190,25 @@ if ! grep -q "100.0% quads" "$WORK/stdout" ||
   failures=$((failures + 1))
 fi
 
+# --- surface_design_editor (a server: refusals only; its API and page have tests of their own)
+if [ -x "$BIN/surface_design_editor" ]; then
+  refuse surface_design_editor
+  refuse surface_design_editor "$B1K" --port 70000
+  refuse surface_design_editor "$B1K" --port -1
+  refuse surface_design_editor "$B1K" --port 80a
+  refuse surface_design_editor "$B1K" --port
+  refuse surface_design_editor "$B1K" --bogus
+  refuse surface_design_editor "$B1K" "$B1K"
+  refuse surface_design_editor "$WORK/missing.off" --port 0
+  refuse surface_design_editor "$WORK/quad.off" --port 0
+  refuse surface_design_editor "$WORK/nan.off" --port 0
+  refuse surface_design_editor "$DATA/degtri_four.off" --port 0
+  refuse surface_design_editor "$B1K" --port 0 --save-frames "$WORK/no-such-folder"
+  refuse surface_design_editor "$B1K" --port 0 --data "$WORK/no-such-folder"
+  refuse surface_design_editor "$B1K" --port 0 --web "$WORK/no-such-folder"
+  refuse surface_design_editor "$B1K" --port 0 --three "$WORK/no-such-folder"
+  refuse surface_design_editor "$B1K" --port 0 --host 203.0.113.7
+fi
+
 echo "$checked runs checked, $failures failures"
 [ "$failures" -eq 0 ]

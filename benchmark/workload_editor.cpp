@@ -1,0 +1,106 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The `editor` workload (see workload_editor.h).
+
+#include "workload_editor.h"
+
+#include "../examples/Editor/editor_session.h"
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace benchmark {
+
+namespace editor_detail {
+
+// A walk across edges from face `start`: each step to an adjacent face not visited yet and with
+// no edge on the boundary (those cannot hold a singularity). Stops early when stuck.
+inline std::vector<std::size_t> walk(const Mesh& mesh, std::size_t start, std::size_t steps)
+{
+  auto interior = [&](Mesh::Face_index f) {
+    for(auto h : halfedges_around_face(halfedge(f, mesh), mesh))
+      if(is_border(opposite(h, mesh), mesh))
+        return false;
+    return true;
+  };
+  std::vector<std::size_t> path{start};
+  std::set<std::size_t> visited{start};
+  Mesh::Face_index f(static_cast<std::uint32_t>(start));
+  Mesh::Halfedge_index h = halfedge(f, mesh);
+  for(std::size_t i = 0; i < steps; ++i)
+  {
+    bool moved = false;
+    for(int k = 0; k < 3 && !moved; ++k, h = next(h, mesh))
+    {
+      const auto g = face(opposite(h, mesh), mesh);
+      if(g != Mesh::null_face() && !visited.count(std::size_t(g)) && interior(g))
+      {
+        path.push_back(std::size_t(g));
+        visited.insert(std::size_t(g));
+        h = next(opposite(h, mesh), mesh); // keep heading away: leave g by another edge
+        moved = true;
+      }
+    }
+    if(!moved)
+      break;
+  }
+  return path;
+}
+
+inline std::size_t first_interior_face(const Mesh& mesh, std::size_t from)
+{
+  for(std::size_t i = 0; i < num_faces(mesh); ++i)
+  {
+    const Mesh::Face_index f(static_cast<std::uint32_t>((from + i) % num_faces(mesh)));
+    bool interior = true;
+    for(auto h : halfedges_around_face(halfedge(f, mesh), mesh))
+      interior = interior && !is_border(opposite(h, mesh), mesh);
+    if(interior)
+      return std::size_t(f);
+  }
+  throw Not_applicable("every face has an edge on the boundary");
+}
+
+} // namespace editor_detail
+
+void editor_workload(const Mesh& mesh, const std::string&, Run& run)
+{
+  using editor::Json;
+  std::unique_ptr<editor::Session> session;
+  run.phase("open", [&] { session = std::make_unique<editor::Session>(mesh, "benchmark"); });
+  const std::vector<std::size_t> path =
+    editor_detail::walk(mesh, editor_detail::first_interior_face(mesh, num_faces(mesh) / 3), 40);
+  if(path.size() < 41)
+    throw Not_applicable("no walk of 40 interior faces from face " + std::to_string(path.front()));
+  // what the server does with a request body: parse, edit, serialize
+  auto request = [&](const std::string& body) { return session->edit(Json::parse(body)); };
+  std::string bytes;
+  run.phase("add pair", [&] {
+    bytes = request(R"({"op":"add_pair","plus":)" + std::to_string(path[0]) + R"(,"minus":)" +
+                    std::to_string(path[20]) + "}");
+  });
+  double moves_ms = 0.;
+  const std::size_t moves = 20;
+  for(std::size_t i = 20; i < 20 + moves; ++i)
+  {
+    const auto start = Clock::now();
+    bytes = request(R"({"op":"move","from":)" + std::to_string(path[i]) + R"(,"to":)" + std::to_string(path[i + 1]) + "}");
+    moves_ms += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  }
+  run.record("drag step", moves_ms / double(moves));
+  run.phase("frequency", [&] { bytes = request(R"({"op":"frequency","stripes":3.5})"); });
+  run.phase("state", [&] { bytes = session->state(); });
+  if(run.checks_enabled())
+  {
+    const std::uint32_t length = std::uint32_t((unsigned char)bytes[0]) | std::uint32_t((unsigned char)bytes[1]) << 8 |
+                                 std::uint32_t((unsigned char)bytes[2]) << 16 | std::uint32_t((unsigned char)bytes[3]) << 24;
+    const Json state = Json::parse(bytes.substr(4, length));
+    run.check("size of the state - (4 + header + 12 bytes per face)",
+              std::abs(double(bytes.size()) - double(4 + length + 12 * num_faces(mesh))), 0.5);
+    run.check("|singularities after the drag - 2|", std::abs(double(state["singularities"].size()) - 2.), 0.5);
+  }
+}
+
+} // namespace benchmark

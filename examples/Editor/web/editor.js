@@ -1,0 +1,545 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The stripe editor's page: draws the mesh with three.js, shades the stripes per pixel from the
+// per-corner coordinate u that the server sends (cos u, so stripes stay crisp at any frequency),
+// and turns clicks and drags into edits (POST /api/edit). With ?selftest=1 it runs the browser
+// test's script: real pointer events on the canvas, checks, frames sent to the server.
+'use strict';
+
+const canvas = document.getElementById('view');
+const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+renderer.setPixelRatio(window.devicePixelRatio || 1);
+renderer.setClearColor(0xf4f4f0);
+const scene = new THREE.Scene();
+const camera = new THREE.PerspectiveCamera(35, 1, 0.01, 100);
+const controls = new THREE.OrbitControls(camera, canvas);
+controls.enableDamping = false;
+controls.addEventListener('change', () => requestRender());
+
+const ui = {
+  mesh: document.getElementById('mesh'), field: document.getElementById('field'),
+  stripes: document.getElementById('stripes'), stripesValue: document.getElementById('stripes-value'),
+  error: document.getElementById('error'), hint: document.getElementById('hint'),
+  singularities: document.getElementById('singularities'), latency: document.getElementById('latency'),
+  selftest: document.getElementById('selftest')
+};
+
+// ---------------------------------------------------------------- the picture
+
+const vertexShader = `
+attribute float u;
+attribute float mark;
+varying float vU;
+varying float vMark;
+varying vec3 vNormal;
+void main() {
+  vU = u;
+  vMark = mark;
+  vNormal = normalize(normalMatrix * normal);
+  gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
+}`;
+const fragmentShader = `
+varying float vU;
+varying float vMark;
+varying vec3 vNormal;
+void main() {
+  // cos u per pixel, its 0.5 level set antialiased over one pixel: crisp stripes at any frequency
+  float t = 0.5 + 0.5 * cos(vU);
+  float w = max(fwidth(t), 1e-4);
+  float band = smoothstep(0.5 - w, 0.5 + w, t);
+  vec3 base = mix(vec3(0.16, 0.18, 0.22), vec3(0.97, 0.95, 0.88), band);
+  if (vMark > 1.5) base = mix(base, vec3(0.18, 0.65, 0.25), 0.75);       // field singularity
+  else if (vMark > 0.5) base = mix(base, vec3(0.85, 0.15, 0.15), 0.75);  // +k
+  else if (vMark < -0.5) base = mix(base, vec3(0.15, 0.35, 0.85), 0.75); // -k
+  vec3 n = normalize(vNormal);
+  if (!gl_FrontFacing) n = -n;
+  float light = 0.35 + 0.65 * max(dot(n, normalize(vec3(0.3, 0.5, 1.0))), 0.0);
+  gl_FragColor = vec4(base * light, 1.0);
+}`;
+const material = new THREE.ShaderMaterial({ vertexShader, fragmentShader, side: THREE.DoubleSide });
+material.extensions.derivatives = true;
+
+let model = null;   // { mesh json, object, geometry, centroids, faceNormals }
+let state = null;   // the last state from the server
+let dirty = false;
+const markers = new THREE.Group();
+scene.add(markers);
+
+function requestRender() {
+  if (dirty) return;
+  dirty = true;
+  requestAnimationFrame(() => { dirty = false; render(); });
+}
+function render() {
+  const w = canvas.clientWidth, h = canvas.clientHeight;
+  if (canvas.width !== Math.floor(w * renderer.getPixelRatio()) || canvas.height !== Math.floor(h * renderer.getPixelRatio())) {
+    renderer.setSize(w, h, false);
+    camera.aspect = w / Math.max(h, 1);
+    camera.updateProjectionMatrix();
+  }
+  renderer.render(scene, camera);
+}
+window.addEventListener('resize', requestRender);
+
+function buildModel(json) {
+  if (model) { scene.remove(model.object); model.geometry.dispose(); }
+  const nf = json.faces, P = json.positions, T = json.triangles;
+  const position = new Float32Array(9 * nf), normal = new Float32Array(9 * nf);
+  const vertexNormal = new Float32Array(P.length);
+  const centroids = new Float32Array(3 * nf);
+  for (let f = 0; f < nf; ++f) {
+    const a = 3 * T[3 * f], b = 3 * T[3 * f + 1], c = 3 * T[3 * f + 2];
+    const e1 = [P[b] - P[a], P[b + 1] - P[a + 1], P[b + 2] - P[a + 2]];
+    const e2 = [P[c] - P[a], P[c + 1] - P[a + 1], P[c + 2] - P[a + 2]];
+    const n = [e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]];
+    for (const v of [a, b, c]) for (let i = 0; i < 3; ++i) vertexNormal[v + i] += n[i]; // area-weighted
+    for (let i = 0; i < 3; ++i) centroids[3 * f + i] = (P[a + i] + P[b + i] + P[c + i]) / 3;
+  }
+  for (let f = 0; f < nf; ++f)
+    for (let k = 0; k < 3; ++k) {
+      const v = 3 * T[3 * f + k];
+      const len = Math.hypot(vertexNormal[v], vertexNormal[v + 1], vertexNormal[v + 2]) || 1;
+      for (let i = 0; i < 3; ++i) {
+        position[9 * f + 3 * k + i] = P[v + i];
+        normal[9 * f + 3 * k + i] = vertexNormal[v + i] / len;
+      }
+    }
+  const geometry = new THREE.BufferGeometry();
+  geometry.setAttribute('position', new THREE.BufferAttribute(position, 3));
+  geometry.setAttribute('normal', new THREE.BufferAttribute(normal, 3));
+  geometry.setAttribute('u', new THREE.BufferAttribute(new Float32Array(3 * nf), 1));
+  geometry.setAttribute('mark', new THREE.BufferAttribute(new Float32Array(3 * nf), 1));
+  geometry.computeBoundingSphere();
+  const object = new THREE.Mesh(geometry, material);
+  scene.add(object);
+  const boundary = new Set(json.boundary_faces);
+  model = { json, object, geometry, centroids, boundary };
+  // frame the mesh
+  const s = geometry.boundingSphere;
+  controls.target.copy(s.center);
+  camera.near = s.radius / 100;
+  camera.far = s.radius * 100;
+  camera.position.copy(s.center).add(new THREE.Vector3(0, 0, 3.2 * s.radius));
+  camera.updateProjectionMatrix();
+  controls.update();
+  // the frequency slider: logarithmic from 1 stripe to the most the mesh resolves
+  ui.stripes.dataset.max = json.max_stripes;
+}
+
+function centroid(f) {
+  const c = model.centroids;
+  return new THREE.Vector3(c[3 * f], c[3 * f + 1], c[3 * f + 2]);
+}
+
+function applyState(buffer) {
+  const view = new DataView(buffer);
+  const length = view.getUint32(0, true);
+  const json = JSON.parse(new TextDecoder().decode(new Uint8Array(buffer, 4, length)));
+  const u = new Float32Array(buffer, 4 + length);
+  if (!model || u.length !== 3 * model.json.faces) throw new Error('the state does not fit the mesh');
+  state = json;
+  model.geometry.attributes.u.array.set(u);
+  model.geometry.attributes.u.needsUpdate = true;
+  const mark = model.geometry.attributes.mark.array;
+  mark.fill(0);
+  while (markers.children.length) markers.remove(markers.children[0]);
+  const radius = 0.012 * model.json.diagonal;
+  const put = (f, value, color) => {
+    for (let k = 0; k < 3; ++k) mark[3 * f + k] = value;
+    const ball = new THREE.Mesh(new THREE.SphereBufferGeometry(radius, 12, 8), new THREE.MeshBasicMaterial({ color }));
+    ball.position.copy(centroid(f));
+    ball.userData.face = f;
+    markers.add(ball);
+  };
+  for (const [f, k] of state.field_singularities) put(f, 2, 0x2e7d32);
+  for (const [f, k] of state.singularities) put(f, k > 0 ? 1 : -1, k > 0 ? 0xc62828 : 0x1565c0);
+  model.geometry.attributes.mark.needsUpdate = true;
+  showState();
+}
+
+function showState() {
+  const lines = state.singularities.map(([f, k]) => `<span class="${k > 0 ? 'plus' : 'minus'}">face ${f}: ${k > 0 ? '+' : ''}${k}</span>`);
+  for (const [f, k] of state.field_singularities) lines.push(`<span class="field">field: face ${f}: ${k > 0 ? '+' : ''}${k}</span>`);
+  ui.singularities.innerHTML = lines.length ? lines.join('\n') : 'none';
+  ui.stripesValue.textContent = state.stripes.toFixed(1);
+  const max = Number(ui.stripes.dataset.max);
+  ui.stripes.value = String(Math.round(1000 * Math.log(Math.max(state.stripes, 1)) / Math.log(Math.max(max, 1.0001))));
+  const closed = model.json.closed_components_euler.length > 0;
+  ui.hint.textContent = `${model.json.name}: ${model.json.vertices} vertices, ${model.json.faces} faces` +
+    (closed ? '. Closed: stripe indices sum to 0, add them in pairs.' : '.');
+}
+
+// ---------------------------------------------------------------- talking to the server
+
+let latencyLog = [];
+function showLatency(label, t0, json) {
+  const t = json.timing || {};
+  const frame = performance.now() - t0;
+  latencyLog.push({ label, frame_ms: frame, server_ms: t.server_ms, solve_ms: t.solve_ms });
+  ui.latency.textContent =
+    `${label}\nevent to picture  ${frame.toFixed(1)} ms\nserver            ${(t.server_ms || 0).toFixed(1)} ms` +
+    `\n  solve           ${(t.solve_ms || 0).toFixed(1)} ms` +
+    (t.field_ms !== undefined ? `\n  field           ${t.field_ms.toFixed(1)} ms` : '') +
+    `\n  serialize       ${(t.serialize_ms || 0).toFixed(2)} ms`;
+}
+
+function showError(message) { ui.error.textContent = message; }
+
+// Edits go one at a time, in order. While one is in flight, a new move that continues the last
+// queued move (its "from" is that move's "to") is merged into it, and a new frequency replaces
+// the queued one: a fast drag costs one re-solve per answer, not one per mouse event.
+const queue = [];
+let busy = false;
+function mergeable(last, request) {
+  if (last.request.op !== request.op) return false;
+  if (request.op === 'frequency') { last.request = request; return true; }
+  if ((request.op === 'move' || request.op === 'move_field_singularity') && last.request.to === request.from) {
+    last.request.to = request.to;
+    return true;
+  }
+  return false;
+}
+function edit(request, t0 = performance.now(), label = request.op) {
+  return new Promise((resolve) => {
+    const last = queue[queue.length - 1];
+    if (last && mergeable(last, request)) { last.waiters.push(resolve); return; }
+    queue.push({ request, t0, label, waiters: [resolve] });
+    if (!busy) pump();
+  });
+}
+async function pump() {
+  busy = true;
+  while (queue.length) {
+    const item = queue.shift();
+    const ok = await send(item);
+    if (!ok && item.request.op.startsWith('move')) {
+      // the singularity stayed where the refused move started: later moves of the drag start there
+      for (let i = queue.length - 1; i >= 0; --i)
+        if (queue[i].request.op === item.request.op) queue.splice(i, 1)[0].waiters.forEach((w) => w(false));
+      if (drag) drag.from = item.request.from;
+    }
+    item.waiters.forEach((w) => w(ok));
+  }
+  busy = false;
+}
+async function send({ request, t0, label }) {
+  try {
+    const response = await fetch('api/edit', { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(request) });
+    if (!response.ok) {
+      let message = `HTTP ${response.status}`;
+      try { message = (await response.json()).error || message; } catch (e) { /* not JSON */ }
+      showError(message);
+      return false;
+    }
+    const buffer = await response.arrayBuffer();
+    if (request.op === 'load') await loadMesh();
+    applyState(buffer);
+    showError('');
+    render();
+    await new Promise((resolve) => requestAnimationFrame(resolve));
+    showLatency(label, t0, state);
+    return true;
+  } catch (e) {
+    showError(`the server did not answer (${e.message}); is surface_design_editor still running?`);
+    return false;
+  }
+}
+
+async function loadMesh() {
+  const json = await (await fetch('api/mesh')).json();
+  buildModel(json);
+}
+
+async function start() {
+  const meshes = await (await fetch('api/meshes')).json();
+  ui.mesh.innerHTML = '';
+  for (const name of meshes.meshes) {
+    const option = document.createElement('option');
+    option.value = option.textContent = name;
+    ui.mesh.appendChild(option);
+  }
+  ui.mesh.value = meshes.current;
+  await loadMesh();
+  applyState(await (await fetch('api/state')).arrayBuffer());
+  render();
+}
+
+// ---------------------------------------------------------------- interaction
+
+const raycaster = new THREE.Raycaster();
+function pick(clientX, clientY) {
+  if (!model) return null;
+  const r = canvas.getBoundingClientRect();
+  const ndc = new THREE.Vector2(((clientX - r.left) / r.width) * 2 - 1, -((clientY - r.top) / r.height) * 2 + 1);
+  raycaster.setFromCamera(ndc, camera);
+  const hits = raycaster.intersectObject(model.object);
+  return hits.length ? { face: hits[0].faceIndex, point: hits[0].point } : null;
+}
+// the singular face nearest to a picked point, within 4% of the diagonal
+function nearestSingularity(hit, list) {
+  let best = null, bestDistance = 0.04 * model.json.diagonal;
+  for (const [f] of list) {
+    const d = centroid(f).distanceTo(hit.point);
+    if (d < bestDistance) { best = f; bestDistance = d; }
+  }
+  return best;
+}
+function tool() { return document.querySelector('input[name="tool"]:checked').value; }
+
+let heatSource = 0;
+let firstClick = null;  // the first face of a two-click tool
+let drag = null;        // { from, field, t0 } while dragging a singularity
+let down = null;
+
+canvas.addEventListener('pointerdown', (event) => {
+  if (event.button !== 0 || !state) return;
+  down = { x: event.clientX, y: event.clientY };
+  const hit = pick(event.clientX, event.clientY);
+  if (!hit || tool() !== 'drag' || event.shiftKey || event.ctrlKey || event.altKey) return;
+  let from = nearestSingularity(hit, state.singularities), field = false;
+  if (from === null && state.field_singularities.length) {
+    from = nearestSingularity(hit, state.field_singularities);
+    field = from !== null;
+  }
+  if (from === null) return;
+  drag = { from, field };
+  controls.enabled = false;
+  canvas.setPointerCapture(event.pointerId);
+});
+
+canvas.addEventListener('pointermove', (event) => {
+  if (!drag) return;
+  const t0 = performance.now();
+  const hit = pick(event.clientX, event.clientY);
+  if (!hit || hit.face === drag.from) return;
+  if (model.boundary.has(hit.face)) return; // a boundary face cannot hold a singularity
+  const from = drag.from, to = hit.face;
+  drag.from = to; // optimistic: the next move starts there (a refused move resynchronizes below)
+  edit(drag.field ? { op: 'move_field_singularity', from, to } : { op: 'move', from, to }, t0, 'drag');
+});
+
+function endDrag(event) {
+  if (drag) {
+    drag = null;
+    controls.enabled = true;
+    if (canvas.hasPointerCapture(event.pointerId)) canvas.releasePointerCapture(event.pointerId);
+  }
+}
+canvas.addEventListener('pointerup', (event) => {
+  const wasDragging = drag !== null;
+  endDrag(event);
+  if (wasDragging || !down || event.button !== 0) return;
+  const moved = Math.hypot(event.clientX - down.x, event.clientY - down.y);
+  down = null;
+  if (moved > 4) return; // an orbit, not a click
+  click(event);
+});
+canvas.addEventListener('pointercancel', endDrag);
+
+function click(event) {
+  const t0 = performance.now();
+  const hit = pick(event.clientX, event.clientY);
+  if (!hit) return;
+  const f = hit.face;
+  let mode = tool();
+  if (event.shiftKey) mode = 'plus';
+  else if (event.ctrlKey || event.altKey) mode = 'minus';
+  if (mode === 'plus' || mode === 'minus') {
+    edit({ op: 'add', face: f, index: mode === 'plus' ? 1 : -1 }, t0);
+  } else if (mode === 'remove') {
+    const s = nearestSingularity(hit, state.singularities);
+    if (s === null) showError('no singularity near that point');
+    else edit({ op: 'remove', face: s }, t0);
+  } else if (mode === 'source') {
+    const T = model.json.triangles, P = model.json.positions;
+    let best = T[3 * f], bestDistance = Infinity;
+    for (let k = 0; k < 3; ++k) {
+      const v = T[3 * f + k];
+      const d = hit.point.distanceTo(new THREE.Vector3(P[3 * v], P[3 * v + 1], P[3 * v + 2]));
+      if (d < bestDistance) { best = v; bestDistance = d; }
+    }
+    heatSource = best;
+    if (ui.field.value.startsWith('heat')) setField(t0);
+    else ui.hint.textContent = `heat source: vertex ${best} (choose a heat field)`;
+  } else if (mode === 'pair' || mode === 'annihilate') {
+    const face = mode === 'pair' ? f : nearestSingularity(hit, state.singularities);
+    if (face === null) { showError('no singularity near that point'); return; }
+    if (firstClick === null) {
+      firstClick = face;
+      ui.hint.textContent = mode === 'pair' ? `+1 at face ${face}: now click where the -1 goes` : `face ${face}: now click its partner`;
+      return;
+    }
+    const first = firstClick;
+    firstClick = null;
+    edit(mode === 'pair' ? { op: 'add_pair', plus: first, minus: face } : { op: 'annihilate', a: first, b: face }, t0);
+  }
+}
+document.querySelectorAll('input[name="tool"]').forEach((input) => input.addEventListener('change', () => { firstClick = null; }));
+
+function setField(t0 = performance.now()) {
+  const value = ui.field.value;
+  let request;
+  if (value.startsWith('axis:')) request = { op: 'field', kind: 'axis', axis: value.slice(5).split(',').map(Number) };
+  else if (value.startsWith('heat:')) request = { op: 'field', kind: 'heat', vertex: heatSource, degrees: Number(value.slice(5)) };
+  else request = { op: 'field', kind: value };
+  return edit(request, t0, `field ${value}`);
+}
+ui.field.addEventListener('change', () => setField());
+ui.stripes.addEventListener('input', () => {
+  const max = Number(ui.stripes.dataset.max);
+  const stripes = Math.min(Math.exp((Number(ui.stripes.value) / 1000) * Math.log(max)), max);
+  ui.stripesValue.textContent = stripes.toFixed(1);
+  edit({ op: 'frequency', stripes }, performance.now(), 'frequency');
+});
+ui.mesh.addEventListener('change', () => edit({ op: 'load', name: ui.mesh.value }, performance.now(), 'load'));
+document.getElementById('clear').addEventListener('click', () => edit({ op: 'clear' }));
+document.getElementById('export-ply').addEventListener('click', () => { window.location.href = 'api/export.ply'; });
+document.getElementById('export-png').addEventListener('click', () => {
+  render();
+  canvas.toBlob((blob) => {
+    const a = document.createElement('a');
+    a.href = URL.createObjectURL(blob);
+    a.download = 'stripes.png';
+    a.click();
+  });
+});
+
+// ---------------------------------------------------------------- the browser test's script
+
+const params = new URLSearchParams(window.location.search);
+
+function screenOf(f) {
+  const p = centroid(f).project(camera);
+  const r = canvas.getBoundingClientRect();
+  return { x: r.left + (p.x + 1) / 2 * r.width, y: r.top + (1 - p.y) / 2 * r.height };
+}
+function pointer(type, at, extra = {}) {
+  canvas.dispatchEvent(new PointerEvent(type, Object.assign({ clientX: at.x, clientY: at.y, button: 0, buttons: type === 'pointerup' ? 0 : 1, pointerId: 1, bubbles: true, isPrimary: true, pointerType: 'mouse' }, extra)));
+}
+async function settle() {
+  while (busy) await new Promise((resolve) => setTimeout(resolve, 5));
+  render();
+  await new Promise((resolve) => requestAnimationFrame(resolve));
+}
+function pictureHash() {
+  render();
+  const gl = renderer.getContext();
+  const w = gl.drawingBufferWidth, h = gl.drawingBufferHeight;
+  const pixels = new Uint8Array(4 * w * h);
+  gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+  let hash = 2166136261, lit = 0;
+  for (let i = 0; i < pixels.length; i += 4) {
+    hash = Math.imul(hash ^ pixels[i] ^ (pixels[i + 1] << 8) ^ (pixels[i + 2] << 16), 16777619) >>> 0;
+    if (pixels[i] !== 244 || pixels[i + 1] !== 244 || pixels[i + 2] !== 240) ++lit;
+  }
+  return { hash, lit, pixels: w * h };
+}
+async function saveFrame(name) {
+  render();
+  const blob = await new Promise((resolve) => canvas.toBlob(resolve, 'image/png'));
+  await fetch(`api/frame?name=${name}`, { method: 'POST', body: blob });
+}
+// a front-facing interior face near a screen point, with its screen position
+function faceNear(x, y) {
+  const r = canvas.getBoundingClientRect();
+  for (let radius = 0; radius < 200; radius += 5)
+    for (let a = 0; a < 8; ++a) {
+      const at = { x: r.left + x * r.width + radius * Math.cos(a * Math.PI / 4), y: r.top + y * r.height + radius * Math.sin(a * Math.PI / 4) };
+      const hit = pick(at.x, at.y);
+      if (hit && !model.boundary.has(hit.face)) return { face: hit.face, at };
+    }
+  return null;
+}
+
+async function selftest() {
+  const checks = [];
+  const check = (name, ok, detail = '') => checks.push({ name, ok: !!ok, detail: String(detail) });
+  await settle();
+  const initial = pictureHash();
+  check('the mesh is drawn', initial.lit > 0.05 * initial.pixels, `${initial.lit} of ${initial.pixels} pixels`);
+  await saveFrame('editor_initial');
+
+  // a +1/-1 pair by two real clicks of the pair tool
+  document.querySelector('input[name="tool"][value="pair"]').click();
+  const a = faceNear(0.42, 0.4), b = faceNear(0.58, 0.6);
+  check('two faces under the pointer', a && b && a.face !== b.face, JSON.stringify([a && a.face, b && b.face]));
+  for (const p of [a, b]) { pointer('pointerdown', p.at); pointer('pointerup', p.at); }
+  await settle();
+  const afterPair = pictureHash();
+  check('the picture changed after the click', afterPair.hash !== initial.hash);
+  const listed = JSON.stringify(state.singularities.slice().sort((x, y) => x[0] - y[0]));
+  const expected = JSON.stringify([[a.face, 1], [b.face, -1]].sort((x, y) => x[0] - y[0]));
+  check('the reported singularities are the clicked faces', listed === expected, `${listed} vs ${expected}`);
+  check('the page lists them', ui.singularities.textContent.includes(`face ${a.face}: +1`) && ui.singularities.textContent.includes(`face ${b.face}: -1`), ui.singularities.textContent);
+  await saveFrame('editor_pair');
+
+  // drag the -1 in small steps: one move (a re-solve) per face crossed
+  document.querySelector('input[name="tool"][value="drag"]').click();
+  const start = screenOf(b.face), end = { x: start.x - 0.25 * canvas.clientWidth, y: start.y + 0.02 * canvas.clientHeight };
+  pointer('pointerdown', start);
+  check('the drag grabbed the -1', drag !== null && drag.from === b.face);
+  const steps = 6, dragLog = latencyLog.length;
+  // a film strip of the drag at a third of the size, for the manual
+  const strip = document.createElement('canvas');
+  const fw = Math.floor(canvas.width / 3), fh = Math.floor(canvas.height / 3);
+  strip.width = steps * fw;
+  strip.height = fh;
+  for (let i = 1; i <= steps; ++i) {
+    pointer('pointermove', { x: start.x + (end.x - start.x) * i / steps, y: start.y + (end.y - start.y) * i / steps });
+    await settle();
+    await saveFrame(`editor_drag_${i}`);
+    strip.getContext('2d').drawImage(canvas, (i - 1) * fw, 0, fw, fh);
+  }
+  const stripBlob = await new Promise((resolve) => strip.toBlob(resolve, 'image/png'));
+  await fetch('api/frame?name=editor_drag_strip', { method: 'POST', body: stripBlob });
+  pointer('pointerup', end);
+  await settle();
+  const minus = state.singularities.filter(([f, k]) => k < 0);
+  check('the -1 moved', minus.length === 1 && minus[0][0] !== b.face, JSON.stringify(state.singularities));
+  check('the +1 stayed', state.singularities.some(([f, k]) => f === a.face && k === 1));
+  const drags = latencyLog.slice(dragLog).filter((l) => l.label === 'drag');
+  check('each drag step re-solved', drags.length >= 2, drags.length);
+
+  // annihilate the pair by two clicks
+  document.querySelector('input[name="tool"][value="annihilate"]').click();
+  for (const f of [a.face, minus[0] ? minus[0][0] : b.face]) { const p = screenOf(f); pointer('pointerdown', p); pointer('pointerup', p); }
+  await settle();
+  check('the pair annihilated', state.singularities.length === 0, JSON.stringify(state.singularities));
+  check('the picture is back to the initial one', pictureHash().hash === initial.hash);
+
+  // a refused edit shows its message and keeps the state
+  const before = JSON.stringify(state.singularities);
+  await edit({ op: 'move', from: 0, to: 1 });
+  await settle();
+  check('a refused edit is explained on the page', ui.error.textContent.includes('holds no singularity'), ui.error.textContent);
+  check('a refused edit keeps the state', JSON.stringify(state.singularities) === before);
+
+  // the frequency slider, moved as a user would (an input event)
+  const stripesBefore = state.stripes;
+  ui.stripes.value = String(Number(ui.stripes.value) + 150);
+  ui.stripes.dispatchEvent(new Event('input'));
+  await settle();
+  check('the slider changed the frequency', state.stripes > 1.2 * stripesBefore, `${stripesBefore} -> ${state.stripes}`);
+
+  // a field with singularities of its own, for the final picture
+  ui.field.value = 'smoothest';
+  await setField();
+  await settle();
+  check('the smoothest field', state.field.kind === 'smoothest', JSON.stringify(state.field));
+  await saveFrame('editor_smoothest');
+  document.querySelector('input[name="tool"][value="pair"]').click();
+  for (const p of [a, b]) { pointer('pointerdown', p.at); pointer('pointerup', p.at); }
+  await settle();
+  await saveFrame('editor_final');
+
+  const pass = checks.every((c) => c.ok);
+  const result = { pass, checks, latency: latencyLog, faces: model.json.faces };
+  ui.selftest.textContent = 'SELFTEST ' + JSON.stringify(result);
+  document.title = pass ? 'SELFTEST PASS' : 'SELFTEST FAIL';
+}
+
+start().then(() => {
+  if (params.get('selftest') === '1')
+    return selftest().catch((e) => { ui.selftest.textContent = 'SELFTEST ' + JSON.stringify({ pass: false, error: String(e && e.stack || e) }); });
+}).catch((e) => showError(`cannot start: ${e.message}`));
