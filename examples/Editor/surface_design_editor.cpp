@@ -7,6 +7,7 @@
 // per-corner coordinates it gets back. Run without arguments for the usage.
 
 #include "editor_session.h"
+#include "../common/configured_paths.h"
 
 #include <httplib.h>
 
@@ -16,12 +17,6 @@
 #include <mutex>
 #include <sstream>
 
-#ifndef CGAL_SURFACE_DESIGN_EDITOR_WEB_DIR
-#define CGAL_SURFACE_DESIGN_EDITOR_WEB_DIR ""
-#endif
-#ifndef CGAL_SURFACE_DESIGN_DATA_DIR
-#define CGAL_SURFACE_DESIGN_DATA_DIR ""
-#endif
 
 namespace {
 
@@ -34,7 +29,8 @@ const char* const usage =
   "  --port P            TCP port, 0 to 65535 (default 8080; 0: any free port)\n"
   "  --host ADDRESS      address to listen on (default 127.0.0.1, this machine only)\n"
   "  --data DIR          folder of meshes the page can load (default: the project's data/)\n"
-  "  --web DIR           folder of the page (default: the sources' examples/Editor/web)\n"
+  "  --web DIR           folder of the page (default: the sources' examples/Editor/web; both\n"
+  "                      defaults come from configured_paths.txt beside the program)\n"
   "  --three DIR         three.js r111 or later as Debian's libjs-three installs it\n"
   "                      (default /usr/share/javascript/three)\n"
   "  --save-frames DIR   accept PNG frames from the page (POST /api/frame?name=N, for the tests and\n"
@@ -42,7 +38,8 @@ const char* const usage =
 
 struct Options
 {
-  std::string mesh, host = "127.0.0.1", data = CGAL_SURFACE_DESIGN_DATA_DIR, web = CGAL_SURFACE_DESIGN_EDITOR_WEB_DIR,
+  std::string mesh, host = "127.0.0.1", data = example::configured_path("CGAL_SURFACE_DESIGN_DATA_DIR"),
+                    web = example::configured_path("CGAL_SURFACE_DESIGN_EDITOR_WEB_DIR"),
                     three = "/usr/share/javascript/three", frames;
   int port = 8080;
 };

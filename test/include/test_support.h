@@ -18,6 +18,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "../../examples/common/configured_paths.h"
+
 #include <array>
 #include <cmath>
 #include <cstdlib>
@@ -159,18 +161,22 @@ inline void ruled_soup(std::size_t n, std::size_t m, bool cone, bool seam, Soup_
 template <class Mesh>
 using Vpm = typename boost::property_map<Mesh, CGAL::vertex_point_t>::const_type;
 
-/// Path of a mesh bundled with the project (data/).
+/// Path of a mesh bundled with the project (data/; the folder comes from configured_paths.txt
+/// beside the test program, or the environment variable CGAL_SURFACE_DESIGN_DATA_DIR).
 inline std::string data_path(const std::string& name)
 {
-  return std::string(CGAL_SURFACE_DESIGN_DATA_DIR) + "/" + name;
+  const std::string dir = example::configured_path("CGAL_SURFACE_DESIGN_DATA_DIR");
+  if(dir.empty())
+    throw std::runtime_error("the folder of the bundled meshes is unknown: set CGAL_SURFACE_DESIGN_DATA_DIR "
+                             "(CMake writes it to configured_paths.txt beside the test programs)");
+  return dir + "/" + name;
 }
 
-/// Path of a larger mesh from ../shared/data/meshes, or nothing when that folder is absent.
+/// Path of a larger mesh from ../shared/data/meshes (or CGAL_SURFACE_DESIGN_SHARED_MESH_DIR), or
+/// nothing when that folder is absent.
 inline std::optional<std::string> shared_mesh_path(const std::string& name)
 {
-  const char* env = std::getenv("CGAL_SURFACE_DESIGN_SHARED_MESH_DIR");
-  const std::string path =
-    (env ? std::string(env) : std::string(CGAL_SURFACE_DESIGN_SHARED_MESH_DIR)) + "/" + name;
+  const std::string path = example::configured_path("CGAL_SURFACE_DESIGN_SHARED_MESH_DIR") + "/" + name;
   if(std::ifstream(path).good())
     return path;
   return std::nullopt;
