@@ -647,7 +647,7 @@ private:
       ++chi[m_face_component[std::size_t(f)]];
     }
     for(std::size_t c = 0; c < m_components; ++c)
-      if(closed[c] && chi[c] != 0)
+      if(closed[c])
         m_closed_euler.emplace_back(c, chi[c]);
   }
 
@@ -661,7 +661,7 @@ private:
   std::vector<Eigen::Vector3d> m_centroid;
   std::vector<std::size_t> m_face_component;
   std::size_t m_components = 1;
-  std::vector<std::pair<std::size_t, long>> m_closed_euler; // closed components with chi != 0
+  std::vector<std::pair<std::size_t, long>> m_closed_euler; // the closed components and their chi
   std::vector<Vector> m_field;
   Json m_field_spec;
   std::optional<std::vector<Vector>> m_smoothest;

@@ -224,6 +224,14 @@ def run(server, data, nv, nf):
           sum(found.values()) == 1 and all(set(faces[f]) & set(faces[inner]) for f in found), (inner, found))
     expect_refused(server, {"op": "add", "face": min(boundary), "index": -1}, ["boundary"], "a singularity on a boundary face")
 
+    # a closed surface of Euler characteristic 0: stripe indices still sum to 0 there
+    status, state, _ = server.edit({"op": "load", "name": "torus.off"})
+    mesh = server.json("api/mesh")
+    check("the torus is closed, of Euler characteristic 0", status == 200 and mesh["closed_components_euler"] == [0], mesh["closed_components_euler"])
+    expect_refused(server, {"op": "add", "face": 0, "index": 1}, ["sum", "pairs"], "a single +1 on the torus")
+    status, state, _ = server.edit({"op": "field", "kind": "trivial"})
+    check("trivial connection on the torus: no singularity needed", status == 200 and state["field_singularities"] == [], state)
+
 
 if __name__ == "__main__":
     sys.exit(main())

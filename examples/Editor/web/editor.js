@@ -163,6 +163,11 @@ function showState() {
   for (const [f, k] of state.field_singularities) lines.push(`<span class="field">field: face ${f}: ${k > 0 ? '+' : ''}${k}</span>`);
   ui.singularities.innerHTML = lines.length ? lines.join('\n') : 'none';
   ui.stripesValue.textContent = state.stripes.toFixed(1);
+  // the field menu shows the server's field (after a refused change, or another mesh)
+  const f = state.field;
+  const value = f.kind === 'axis' ? `axis:${f.axis.map((x) => Math.round(x * 1e6) / 1e6).join(',')}`
+    : f.kind === 'heat' ? `heat:${Math.round(f.degrees)}` : f.kind;
+  if ([...ui.field.options].some((o) => o.value === value)) ui.field.value = value;
   const max = Number(ui.stripes.dataset.max);
   ui.stripes.value = String(Math.round(1000 * Math.log(Math.max(state.stripes, 1)) / Math.log(Math.max(max, 1.0001))));
   const closed = model.json.closed_components_euler.length > 0;
@@ -388,6 +393,7 @@ function setField(t0 = performance.now()) {
 ui.field.addEventListener('change', () => setField());
 ui.stripes.addEventListener('input', () => {
   const max = Number(ui.stripes.dataset.max);
+  if (!model || !(max > 1)) return; // the mesh is still loading
   const stripes = Math.min(Math.exp((Number(ui.stripes.value) / 1000) * Math.log(max)), max);
   ui.stripesValue.textContent = stripes.toFixed(1);
   edit({ op: 'frequency', stripes }, performance.now(), 'frequency');
