@@ -35,7 +35,7 @@ const char* usage =
   "  singularities exactly at the given faces (faces numbered in the input file's order).\n"
   "options:\n"
   "  --field axis:X,Y,Z        constant direction projected on the surface (default axis:0,1,0)\n"
-  "  --field heat:V[:DEGREES]  gradient of the geodesic distance from vertex V (CGAL Heat_method_3),\n"
+  "  --field heat:V[:DEGREES]  gradient of the geodesic distance from vertex V (heat method),\n"
   "                            rotated by DEGREES in the tangent plane: 0 rings, 90 spokes, else\n"
   "                            spirals (spokes and spirals need --singularity at a face next to V;\n"
   "                            the faces around V are printed)\n"

@@ -94,6 +94,8 @@ def main():
     finally:
         alive = server.alive()
         server.stop()
+        if not alive or failed:
+            print("the server printed:\n" + server.output())
     check("the server is still running after all the requests", alive)
     print(f"{passed} passed, {failed} failed")
     return 0 if failed == 0 else 1

@@ -118,6 +118,7 @@ def main():
 
     if not report.startswith("SELFTEST "):
         print(f"the page's test did not finish (title '{title}'); page says: {report}")
+        print("the server printed:\n" + server.output())
         return 1
     result = json.loads(report[len("SELFTEST "):].split("\n")[0])
     failed = 0

@@ -6,6 +6,7 @@ and decode its binary state (4-byte little-endian length, JSON, float32 per-corn
 import json
 import struct
 import subprocess
+import threading
 import time
 import urllib.error
 import urllib.request
@@ -31,6 +32,10 @@ class Server:
             raise RuntimeError("the editor did not start:\n" + "".join(self.log))
         if not self.url.startswith("http://127.0.0.1:"):
             raise RuntimeError("the editor must listen on the loopback address by default, not " + self.url)
+        # keep reading what the server prints (a sanitizer's report, say) so that its pipe never fills
+        self.reader = threading.Thread(target=lambda: self.log.extend(iter(self.process.stdout.readline, "")),
+                                       daemon=True)
+        self.reader.start()
 
     def request(self, method, path, body=None, content_type="application/json"):
         """(status, content type, body bytes) of one request; HTTP errors are returned, not raised."""
@@ -64,6 +69,10 @@ class Server:
 
     def alive(self):
         return self.process.poll() is None
+
+    def output(self):
+        """Everything the server printed so far."""
+        return "".join(self.log)
 
     def stop(self):
         if self.process.poll() is None:
