@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds the stripe editor, and serves it for the bundled Stanford bunny
-# (8k faces) on http://127.0.0.1:8080/ (open it in a browser; Ctrl+C stops the server).
+# (8k faces) on port 8080: open the address it prints (with its token) in a browser; Ctrl+C stops it.
 #   bash scripts/editor.sh                       the bunny on port 8080
 #   bash scripts/editor.sh MESH [--port P] ...   another mesh or port (options: run the program
 #                                                build/examples/surface_design_editor alone)

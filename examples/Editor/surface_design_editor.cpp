@@ -5,6 +5,13 @@
 // loopback address keeps one mesh and its Field_aligned_parameterizer (factored once); the page
 // (web/, three.js from Debian's libjs-three) sends edits as JSON and draws the stripes from the
 // per-corner coordinates it gets back. Run without arguments for the usage.
+//
+// A local server is reachable from every page the user's browser opens, so it trusts nothing but
+// its own address: a request whose Host is not the editor's address (DNS rebinding) or whose
+// Origin is another site is refused with 403; every /api/ request must carry the token printed at
+// start (header X-Editor-Token, or ?token= for the PLY download link), as local notebook servers
+// do; an edit must be sent as application/json (a cross-site form or text/plain POST needs no
+// preflight, a JSON one does, and the server answers no preflight).
 
 #include "editor_session.h"
 #include "../common/configured_paths.h"
@@ -12,9 +19,13 @@
 #include <httplib.h>
 
 #include <cctype>
+#include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <mutex>
+#include <optional>
+#include <random>
+#include <set>
 #include <sstream>
 
 
@@ -22,7 +33,9 @@ namespace {
 
 const char* const usage =
   "usage: surface_design_editor MESH [options]\n"
-  "Serves an interactive stripe editor for the triangle mesh MESH (OFF, OBJ, PLY) and prints its URL.\n"
+  "Serves an interactive stripe editor for the triangle mesh MESH (OFF, OBJ, PLY) and prints its URL,\n"
+  "which carries a token made at each start: the server answers only requests that present it, that\n"
+  "address it by its own address, and that come from its own page (not from other sites).\n"
   "Open it in a browser: click faces to add singularities, drag them, annihilate pairs, change the\n"
   "field and the frequency; the stripes are re-solved without refactoring.\n"
   "options:\n"
@@ -98,6 +111,65 @@ void json_error(httplib::Response& res, int status, const std::string& message)
 
 constexpr std::size_t max_edit_bytes = 64 * 1024; // an edit is a few dozen bytes
 
+/// 128 random bits in hex: the token of one start of the server.
+std::string new_token()
+{
+  std::random_device device;
+  std::string token;
+  for(int i = 0; i < 4; ++i)
+  {
+    char word[9];
+    std::snprintf(word, sizeof(word), "%08x", unsigned(device()) & 0xFFFFFFFFu);
+    token += word;
+  }
+  return token;
+}
+
+/// Compares in a time that does not depend on where the strings differ.
+bool same_secret(const std::string& given, const std::string& token)
+{
+  if(given.size() != token.size())
+    return false;
+  unsigned char difference = 0;
+  for(std::size_t i = 0; i < token.size(); ++i)
+    difference |= static_cast<unsigned char>(given[i] ^ token[i]);
+  return difference == 0;
+}
+
+bool has_media_type(const httplib::Request& req, const std::string& type)
+{
+  const std::string value = req.get_header_value("Content-Type");
+  const std::string media = value.substr(0, value.find(';'));
+  return media.size() == type.size() && std::equal(media.begin(), media.end(), type.begin(), [](char a, char b) {
+           return std::tolower(static_cast<unsigned char>(a)) == b;
+         });
+}
+
+/// The address to print and the Host values under which this server may be addressed: the
+/// loopback names and the address it listens on, each with the port.
+struct Own_address
+{
+  std::string printed;
+  std::set<std::string> hosts;
+
+  Own_address(const std::string& host, int port)
+  {
+    const std::string p = ":" + std::to_string(port);
+    hosts = {"127.0.0.1" + p, "localhost" + p, "[::1]" + p};
+    printed = "127.0.0.1" + p;
+    if(host != "0.0.0.0" && host != "::")
+    {
+      printed = (host.find(':') != std::string::npos ? "[" + host + "]" : host) + p;
+      hosts.insert(printed);
+    }
+  }
+
+  bool is_origin(const std::string& origin) const
+  {
+    return origin.rfind("http://", 0) == 0 && hosts.count(origin.substr(7)) > 0;
+  }
+};
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -129,6 +201,34 @@ int main(int argc, char** argv)
 
     httplib::Server server;
     server.set_payload_max_length(o.frames.empty() ? max_edit_bytes : 32u << 20);
+    const std::string token = new_token();
+    std::optional<Own_address> own; // set once the port is known, before the first request
+    server.set_pre_routing_handler([&](const httplib::Request& req, httplib::Response& res) {
+      const std::string host = req.get_header_value("Host");
+      if(!own->hosts.count(host))
+      {
+        json_error(res, 403, "Host '" + host + "' is not this editor's address (" + own->printed + ")");
+        return httplib::Server::HandlerResponse::Handled;
+      }
+      if(req.has_header("Origin") && !own->is_origin(req.get_header_value("Origin")))
+      {
+        json_error(res, 403, "requests from the page of another site (Origin '" + req.get_header_value("Origin") +
+                               "') are refused");
+        return httplib::Server::HandlerResponse::Handled;
+      }
+      if(req.path.rfind("/api/", 0) == 0)
+      {
+        const std::string given =
+          req.has_header("X-Editor-Token") ? req.get_header_value("X-Editor-Token") : req.get_param_value("token");
+        if(!same_secret(given, token))
+        {
+          json_error(res, 403, std::string(given.empty() ? "no" : "a wrong") +
+                                 " token: open the address with ?token= that surface_design_editor printed");
+          return httplib::Server::HandlerResponse::Handled;
+        }
+      }
+      return httplib::Server::HandlerResponse::Unhandled;
+    });
     for(const auto& [path, file] : files)
       server.Get(path, [&file = file](const httplib::Request&, httplib::Response& res) {
         res.set_content(file.first, file.second);
@@ -148,6 +248,9 @@ int main(int argc, char** argv)
     });
     server.Post("/api/edit", [&](const httplib::Request& req, httplib::Response& res) {
       const auto received = editor::Clock::now();
+      if(!has_media_type(req, "application/json"))
+        return json_error(res, 415, "an edit must be sent as Content-Type: application/json, not '" +
+                                      req.get_header_value("Content-Type") + "'");
       if(req.body.size() > max_edit_bytes)
         return json_error(res, 413, "the request has " + std::to_string(req.body.size()) + " bytes; an edit has at most " +
                                       std::to_string(max_edit_bytes));
@@ -209,6 +312,8 @@ int main(int argc, char** argv)
       });
       if(!valid)
         return json_error(res, 400, "frame name '" + name + "': use 1 to 64 letters, digits, '_' or '-'");
+      if(!has_media_type(req, "image/png"))
+        return json_error(res, 415, "a frame must be sent as Content-Type: image/png");
       if(req.body.size() < 8 || req.body.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0)
         return json_error(res, 400, "a frame must be a PNG file");
       std::ofstream out(o.frames + "/" + name + ".png", std::ios::binary);
@@ -245,10 +350,11 @@ int main(int argc, char** argv)
     if(port <= 0)
       throw std::runtime_error("cannot listen on " + o.host + ":" + std::to_string(o.port) +
                                " (in use, or not an address of this machine): try another --port");
+    own.emplace(o.host, port);
     if(o.host != "127.0.0.1" && o.host != "localhost" && o.host != "::1")
       std::cout << "warning: listening on " << o.host << ", not only on this machine's loopback address" << std::endl;
-    std::cout << "open http://" << (o.host == "0.0.0.0" ? std::string("127.0.0.1") : o.host) << ':' << port
-              << "/ in a browser (Ctrl+C stops the server)" << std::endl;
+    std::cout << "open http://" << own->printed << "/?token=" << token << " in a browser (Ctrl+C stops the server)"
+              << std::endl;
     return server.listen_after_bind() ? 0 : 1;
   });
 }

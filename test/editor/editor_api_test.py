@@ -83,6 +83,62 @@ def expect_refused(server, request, words, what):
     check(f"{what}: the state is unchanged", same)
 
 
+def expect_blocked(server, status, words, what, method="POST", path="api/edit",
+                   body='{"op": "add_pair", "plus": 10, "minus": 20}', **options):
+    """A request refused before it reaches the session: the status, a message with all `words`,
+    and the state left exactly as it was."""
+    before = server.state()
+    got, _, content = server.request(method, path, body if method == "POST" else None, **options)
+    check(f"{what}: refused with {status}", got == status, f"status {got}")
+    try:
+        message = json.loads(content)["error"]
+    except (ValueError, KeyError):
+        message = content[:200]
+    check(f"{what}: the message says why", all(w.lower() in str(message).lower() for w in words), message)
+    after = server.state()
+    check(f"{what}: the state is unchanged", before[0]["version"] == after[0]["version"] and before[1] == after[1] and
+          before[0]["singularities"] == after[0]["singularities"])
+
+
+def hostile_requests(server):
+    """The editor as a page on another site, or a rebinding domain, would try to drive it."""
+    port = server.host.split(":")[1]
+    evil = {"Origin": "http://evil.example"}
+    expect_blocked(server, 403, ["token"], "an edit without the token", token=False)
+    expect_blocked(server, 403, ["token"], "an edit with a wrong token", headers={"X-Editor-Token": "0" * 32})
+    expect_blocked(server, 403, ["token"], "a token one character short", headers={"X-Editor-Token": server.token[:-1]})
+    expect_blocked(server, 403, ["token"], "the state without the token", method="GET", path="api/state", token=False)
+    expect_blocked(server, 403, ["token"], "the PLY without the token", method="GET", path="api/export.ply", token=False)
+    expect_blocked(server, 403, ["another site"], "an edit from another site's page (text/plain, as a form sends)",
+                   content_type="text/plain", headers=evil, token=False)
+    expect_blocked(server, 403, ["another site"], "an edit from another site's page, even with the token", headers=evil)
+    expect_blocked(server, 403, ["another site"], "an edit from a sandboxed page (Origin null)", headers={"Origin": "null"})
+    expect_blocked(server, 403, ["another site"], "an edit from https on the editor's own host",
+                   headers={"Origin": "https://" + server.host})
+    expect_blocked(server, 415, ["application/json"], "an edit sent as text/plain", content_type="text/plain")
+    expect_blocked(server, 415, ["application/json"], "an edit sent as a form",
+                   content_type="application/x-www-form-urlencoded")
+    expect_blocked(server, 403, ["host", "evil.example"], "an edit through a rebinding domain",
+                   headers={"Host": "evil.example:" + port})
+    expect_blocked(server, 403, ["host"], "the state through a rebinding domain", method="GET", path="api/state",
+                   headers={"Host": "evil.example:" + port})
+    expect_blocked(server, 403, ["host"], "the page through a rebinding domain", method="GET", path="",
+                   headers={"Host": "evil.example:" + port})
+    expect_blocked(server, 403, ["host"], "the editor's host on another port", method="GET", path="api/state",
+                   headers={"Host": "127.0.0.1:1"})
+    # what the editor's own page and a user's tools do is accepted
+    status, _, _ = server.request("GET", "", token=False)
+    check("the page itself needs no token", status == 200, status)
+    status, _, _ = server.request("GET", "api/state", headers={"Host": "localhost:" + port})
+    check("the state under the name localhost", status == 200, status)
+    status, _, body = server.request("GET", "api/export.ply?token=" + server.token, token=False)
+    check("the PLY download link carries the token in its query", status == 200 and body.startswith(b"ply"), status)
+    status, _, _ = server.request("POST", "api/edit", '{"op": "state"}', headers={"Origin": "http://" + server.host})
+    check("an edit from the editor's own page", status == 200, status)
+    status, _, _ = server.request("POST", "api/edit", '{"op": "state"}', content_type="application/json; charset=utf-8")
+    check("application/json with a charset", status == 200, status)
+
+
 def main():
     editor, data = sys.argv[1:3]
     bunny = os.path.join(data, "bunny_8k.off")
@@ -102,6 +158,7 @@ def main():
 
 
 def run(server, data, nv, nf):
+    hostile_requests(server)
     mesh = server.json("api/mesh")
     check("mesh: counts of the file", mesh["vertices"] == nv and mesh["faces"] == nf, (mesh["vertices"], mesh["faces"]))
     check("mesh: positions and triangles", len(mesh["positions"]) == 3 * nv and len(mesh["triangles"]) == 3 * nf
@@ -193,14 +250,18 @@ def run(server, data, nv, nf):
     moved = dict((f, k) for f, k in state["field_singularities"]) if status == 200 else {}
     check("move a field singularity", status == 200 and target in moved and first not in moved, state)
 
-    # several clients at once: the server serializes the edits and survives
-    errors = []
+    # several clients at once: the server serializes the edits, each one exactly once, and the
+    # final state is the one of the last edit it applied
+    errors, answers = [], []
+    before, _ = server.state()
 
     def client(i):
         for j in range(10):
-            status, state, _ = server.edit({"op": "frequency", "stripes": 3 + (i + j) % 5})
+            status, state, _ = server.edit({"op": "frequency", "stripes": 3 + (i + j) % 5 + i / 10})
             if status != 200:
                 errors.append(state)
+            else:
+                answers.append((state["version"], state["stripes"]))
             server.state()
 
     threads = [threading.Thread(target=client, args=(i,)) for i in range(4)]
@@ -209,6 +270,16 @@ def run(server, data, nv, nf):
     for t in threads:
         t.join()
     check("40 concurrent edits from 4 clients", errors == [], errors[:3])
+    after, corners = server.state()
+    versions = sorted(v for v, _ in answers)
+    check("the 40 edits were applied one after the other, each once",
+          versions == list(range(before["version"] + 1, before["version"] + 41)), versions)
+    check("the final state is the last applied edit's", after["version"] == before["version"] + 40 and
+          after["stripes"] == max(answers)[1], (after["version"], after["stripes"], max(answers)))
+    check("the concurrent edits kept the singularities and the field",
+          after["singularities"] == before["singularities"] and after["field"] == before["field"] and
+          after["field_singularities"] == before["field_singularities"])
+    check("the final corner data is finite", all(map(math.isfinite, corners)))
 
     # another mesh: with boundary, a single +1 is fine, but not on a boundary face
     status, state, _ = server.edit({"op": "load", "name": "elephant-with-holes.off"})

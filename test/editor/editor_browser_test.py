@@ -5,8 +5,11 @@ protocol over a pipe (--remote-debugging-pipe: no port, no extra package). The p
 (?selftest=1) clicks and drags with real pointer events on the canvas: it adds a +1/-1 pair by two
 clicks, checks that the picture changed and that the reported singularities are the clicked faces,
 drags the -1 across faces (saving a frame per step), annihilates the pair, checks that a refused
-edit is explained and keeps the state. This script starts the server, waits for the verdict,
-checks the frames, and saves a screenshot of the whole page.
+edit is explained and keeps the state. This script starts the server (and opens the page with the
+server's token), waits for the page's verdict, then judges from outside the page: it asks the
+server for its own state and checks that it holds exactly the pair the page clicked, has applied
+exactly as many edits as the page saw accepted, and has the page's field and frequency. It also
+checks the frames and saves a screenshot of the whole page.
 
 usage: editor_browser_test.py EDITOR DATA_DIR OUTPUT_DIR
 Exit 77 (CTest: skipped) when chromium is not installed."""
@@ -95,7 +98,7 @@ def main():
     server = Server(editor, os.path.join(data, "bunny_8k.off"), "--save-frames", output)
     browser = Chromium(binary, 1200, 760)
     try:
-        target = browser.send("Target.createTarget", {"url": server.url + "?selftest=1"})["targetId"]
+        target = browser.send("Target.createTarget", {"url": server.url + "?token=" + server.token + "&selftest=1"})["targetId"]
         session = browser.send("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
         browser.send("Runtime.enable", session=session)
         deadline, title = time.time() + 180, ""
@@ -112,6 +115,7 @@ def main():
         shot = browser.send("Page.captureScreenshot", {"format": "png"}, session=session)["data"]
         with open(os.path.join(output, "editor_page.png"), "wb") as f:
             f.write(base64.b64decode(shot))
+        server_state = server.state()[0] if server.alive() else None
     finally:
         browser.close()
         server.stop()
@@ -125,6 +129,25 @@ def main():
     for c in result.get("checks", []):
         print(("ok      " if c["ok"] else "FAILED  ") + c["name"] + (f"  ({c['detail']})" if c["detail"] else ""))
         failed += not c["ok"]
+    # judged from outside the page: after the clicks, the drag, the annihilation and the final
+    # pair, the server itself must hold exactly the pair the page clicked, and have applied
+    # exactly the edits the page saw accepted (every drag step one edit, the refused one none)
+    did = result.get("did", {})
+    server_checks = [
+        ("the server holds the +1/-1 pair at the clicked faces",
+         server_state is not None and sorted(map(tuple, server_state["singularities"])) ==
+         sorted([(did.get("plus"), 1), (did.get("minus"), -1)]),
+         (server_state and server_state["singularities"], did)),
+        ("the server applied as many edits as the page saw accepted (version)",
+         server_state is not None and did.get("edits", 0) >= 6 and server_state["version"] == did.get("edits"),
+         (server_state and server_state["version"], did.get("edits"))),
+        ("the server's field and frequency are the page's",
+         server_state is not None and server_state["field"]["kind"] == "smoothest" == did.get("field") and
+         server_state["stripes"] == did.get("stripes"), (server_state and server_state["field"], did)),
+    ]
+    for name, ok, detail in server_checks:
+        print(("ok      " if ok else "FAILED  ") + name + ("" if ok else f"  ({detail})"))
+        failed += not ok
     if "error" in result:
         print("the page's test threw:", result["error"])
         failed += 1
@@ -145,7 +168,7 @@ def main():
         frame_ms = sorted(entry["frame_ms"] for entry in drags)
         print(f"drag steps on {result['faces']} faces: server median {server_ms[len(server_ms) // 2]:.2f} ms, "
               f"event to picture median {frame_ms[len(frame_ms) // 2]:.1f} ms (software WebGL)")
-    checks = len(result.get("checks", [])) + 1
+    checks = len(result.get("checks", [])) + len(server_checks) + 1
     print(f"{checks - failed} passed, {failed} failed")
     return 0 if failed == 0 and result.get("pass") else 1
 

@@ -25,23 +25,33 @@ class Server:
                 break
             self.log.append(line)
             if line.startswith("open http://"):
-                self.url = line.split()[1]
+                address = line.split()[1]
+                self.url, _, query = address.partition("?")
+                self.token = query[len("token="):] if query.startswith("token=") else ""
                 break
         if self.url is None:
             self.stop()
             raise RuntimeError("the editor did not start:\n" + "".join(self.log))
         if not self.url.startswith("http://127.0.0.1:"):
             raise RuntimeError("the editor must listen on the loopback address by default, not " + self.url)
+        if len(self.token) != 32:
+            raise RuntimeError("the printed address must carry a 128-bit token: " + address)
+        self.host = self.url[len("http://"):].rstrip("/")
         # keep reading what the server prints (a sanitizer's report, say) so that its pipe never fills
         self.reader = threading.Thread(target=lambda: self.log.extend(iter(self.process.stdout.readline, "")),
                                        daemon=True)
         self.reader.start()
 
-    def request(self, method, path, body=None, content_type="application/json"):
-        """(status, content type, body bytes) of one request; HTTP errors are returned, not raised."""
+    def request(self, method, path, body=None, content_type="application/json", headers=None, token=True):
+        """(status, content type, body bytes) of one request, with the server's token unless `token`
+        is False; `headers` adds or replaces headers (Host, Origin, ...). HTTP errors are returned,
+        not raised."""
         data = body if body is None or isinstance(body, bytes) else body.encode()
-        req = urllib.request.Request(self.url + path, data=data, method=method,
-                                     headers={"Content-Type": content_type} if data is not None else {})
+        all_headers = {"Content-Type": content_type} if data is not None else {}
+        if token:
+            all_headers["X-Editor-Token"] = self.token
+        all_headers.update(headers or {})
+        req = urllib.request.Request(self.url + path, data=data, method=method, headers=all_headers)
         try:
             with urllib.request.urlopen(req, timeout=120) as response:
                 return response.status, response.headers.get("Content-Type", ""), response.read()

@@ -17,6 +17,22 @@ const controls = new THREE.OrbitControls(camera, canvas);
 controls.enableDamping = false;
 controls.addEventListener('change', () => requestRender());
 
+// The server answers only requests that carry the token of the address it printed (?token=...).
+const token = new URLSearchParams(window.location.search).get('token') || '';
+function api(path, options = {}) {
+  return fetch(path, Object.assign({}, options, { headers: Object.assign({ 'X-Editor-Token': token }, options.headers || {}) }));
+}
+// the answer of a GET, or the server's message as an error (a missing token, say)
+async function apiGet(path) {
+  const response = await api(path);
+  if (!response.ok) {
+    let message = `HTTP ${response.status}`;
+    try { message = (await response.json()).error || message; } catch (e) { /* not JSON */ }
+    throw new Error(message);
+  }
+  return response;
+}
+
 const ui = {
   mesh: document.getElementById('mesh'), field: document.getElementById('field'),
   stripes: document.getElementById('stripes'), stripesValue: document.getElementById('stripes-value'),
@@ -196,6 +212,7 @@ function showError(message) { ui.error.textContent = message; }
 // the queued one: a fast drag costs one re-solve per answer, not one per mouse event.
 const queue = [];
 let busy = false;
+let acceptedEdits = 0; // edits the server applied (the browser test compares with its version)
 function mergeable(last, request) {
   if (last.request.op !== request.op) return false;
   if (request.op === 'frequency') { last.request = request; return true; }
@@ -230,7 +247,7 @@ async function pump() {
 }
 async function send({ request, t0, label }) {
   try {
-    const response = await fetch('api/edit', { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(request) });
+    const response = await api('api/edit', { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(request) });
     if (!response.ok) {
       let message = `HTTP ${response.status}`;
       try { message = (await response.json()).error || message; } catch (e) { /* not JSON */ }
@@ -238,6 +255,7 @@ async function send({ request, t0, label }) {
       return false;
     }
     const buffer = await response.arrayBuffer();
+    if (request.op !== 'state' && request.op !== 'load') ++acceptedEdits;
     if (request.op === 'load') await loadMesh();
     applyState(buffer);
     showError('');
@@ -252,12 +270,12 @@ async function send({ request, t0, label }) {
 }
 
 async function loadMesh() {
-  const json = await (await fetch('api/mesh')).json();
+  const json = await (await apiGet('api/mesh')).json();
   buildModel(json);
 }
 
 async function start() {
-  const meshes = await (await fetch('api/meshes')).json();
+  const meshes = await (await apiGet('api/meshes')).json();
   ui.mesh.innerHTML = '';
   for (const name of meshes.meshes) {
     const option = document.createElement('option');
@@ -266,7 +284,7 @@ async function start() {
   }
   ui.mesh.value = meshes.current;
   await loadMesh();
-  applyState(await (await fetch('api/state')).arrayBuffer());
+  applyState(await (await apiGet('api/state')).arrayBuffer());
   render();
 }
 
@@ -400,7 +418,7 @@ ui.stripes.addEventListener('input', () => {
 });
 ui.mesh.addEventListener('change', () => edit({ op: 'load', name: ui.mesh.value }, performance.now(), 'load'));
 document.getElementById('clear').addEventListener('click', () => edit({ op: 'clear' }));
-document.getElementById('export-ply').addEventListener('click', () => { window.location.href = 'api/export.ply'; });
+document.getElementById('export-ply').addEventListener('click', () => { window.location.href = `api/export.ply?token=${encodeURIComponent(token)}`; });
 document.getElementById('export-png').addEventListener('click', () => {
   render();
   canvas.toBlob((blob) => {
@@ -444,7 +462,7 @@ function pictureHash() {
 async function saveFrame(name) {
   render();
   const blob = await new Promise((resolve) => canvas.toBlob(resolve, 'image/png'));
-  await fetch(`api/frame?name=${name}`, { method: 'POST', body: blob });
+  await api(`api/frame?name=${name}`, { method: 'POST', headers: { 'Content-Type': 'image/png' }, body: blob });
 }
 // a front-facing interior face near a screen point, with its screen position
 function faceNear(x, y) {
@@ -498,7 +516,7 @@ async function selftest() {
     strip.getContext('2d').drawImage(canvas, (i - 1) * fw, 0, fw, fh);
   }
   const stripBlob = await new Promise((resolve) => strip.toBlob(resolve, 'image/png'));
-  await fetch('api/frame?name=editor_drag_strip', { method: 'POST', body: stripBlob });
+  await api('api/frame?name=editor_drag_strip', { method: 'POST', headers: { 'Content-Type': 'image/png' }, body: stripBlob });
   pointer('pointerup', end);
   await settle();
   const minus = state.singularities.filter(([f, k]) => k < 0);
@@ -540,7 +558,9 @@ async function selftest() {
   await saveFrame('editor_final');
 
   const pass = checks.every((c) => c.ok);
-  const result = { pass, checks, latency: latencyLog, faces: model.json.faces };
+  // what the page did, for the test to compare with the server's own state
+  const did = { plus: a.face, minus: b.face, edits: acceptedEdits, stripes: state.stripes, field: state.field.kind };
+  const result = { pass, checks, did, latency: latencyLog, faces: model.json.faces };
   ui.selftest.textContent = 'SELFTEST ' + JSON.stringify(result);
   document.title = pass ? 'SELFTEST PASS' : 'SELFTEST FAIL';
 }
