@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
 # Every command-line program refuses bad options and bad input: exit status 1, a message on
-# stderr, and no output file at all (not even a partial one or a picture's side file).
-#   usage: check_cli.sh EXAMPLES_DIR DATA_DIR
+# stderr, and no output file at all (not even a partial one or a picture's side file). Its
+# successful runs write every file they name, each non-empty and parsing (check_outputs.py).
+#   usage: check_cli.sh EXAMPLES_DIR DATA_DIR [PROGRAM]   (PROGRAM: one program's checks only)
 set -u
 BIN="$1"
 DATA="$2"
+PROGRAM="${3:-all}"
+HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 WORK="$(mktemp -d)"
 trap 'rm -rf "$WORK"' EXIT
 failures=0
@@ -25,7 +28,8 @@ refuse() {
   fi
 }
 
-# accept PROGRAM ARGS...: must exit 0
+# accept PROGRAM ARGS...: must exit 0 and write every file named after --output, --pattern and
+# --picture; every file it wrote must be non-empty and parse
 accept() {
   rm -rf "$WORK/out" && mkdir -p "$WORK/out"
   local status
@@ -34,6 +38,21 @@ accept() {
   checked=$((checked + 1))
   if [ "$status" -ne 0 ]; then
     echo "FAILED (should succeed): $* -> exit $status, stderr: $(head -c 300 "$WORK/stderr")"
+    failures=$((failures + 1))
+    return
+  fi
+  local named=() previous="" arg
+  for arg in "$@"; do
+    case "$previous" in --output|--pattern|--picture) named+=("$arg") ;; esac
+    previous="$arg"
+  done
+  local written=()
+  mapfile -t written < <(find "$WORK/out" -type f | sort)
+  if [ "${#written[@]}" -eq 0 ]; then
+    echo "FAILED: $* -> exit 0 but no output file"
+    failures=$((failures + 1))
+  elif ! python3 "$HERE/check_outputs.py" "${named[@]}" "${written[@]}" >"$WORK/parse" 2>&1; then
+    echo "FAILED: $* -> outputs do not parse: $(head -c 400 "$WORK/parse")"
     failures=$((failures + 1))
   fi
 }
@@ -46,6 +65,7 @@ printf 'OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n' > "$WORK/nan.off"
 printf 'OFF\n3 1 0\n0 0 0\n1e200 0 0\n0 1e200 0\n3 0 1 2\n' > "$WORK/huge.off"
 
 # --- stripes
+check_stripes() {
 for args in "--scale nan" "--scale -3" "--scale 0" "--scale inf" "--scale 1e300" "--scale 1e-300" "--scale 3abc" \
             "--scale +3" "--scale 0x10" "--scale 1e-320" "--scale 1 --scale 2" "--field axis:0,0,0" "--field axis:1,2" \
             "--field axis:1,2,3," "--field axis:1,x,3" "--field heat:-1" "--field heat:100000" "--field heat:5:1e300" \
@@ -70,7 +90,10 @@ refuse stripes "$WORK/missing.off" --output "$O/m.ply"
 refuse stripes
 accept stripes "$B1K" --singularity 100:1 --singularity 400:-1 --output "$O/ok.ply"
 
+}
+
 # --- direction_field
+check_direction_field() {
 for args in "--method smoothest --n 0" "--method smoothest --n 2.5" "--method smoothest --n 99999999999999999999" \
             "--method magic" "--method smoothest --method trivial" "--method smoothest --singularity 5:1" \
             "--method trivial --boundary tangent" "--method smoothest --curvature-weight -1" \
@@ -85,7 +108,10 @@ refuse direction_field "$B1K" --method smoothest
 refuse direction_field "$B1K" --method trivial --singularity 5:1 --singularity 400:1 --output "$WORK/input.off"
 accept direction_field "$B1K" --method trivial --singularity 5:1 --singularity 400:1 --output "$O/ok.ply"
 
+}
+
 # --- octahedron_membrane
+check_octahedron_membrane() {
 for args in "--m 4 --radius 50" "--m 4 --radius 3" "--m 4 --radius 0" "--m 4 --radius -1" "--m 4 --radius 1e-300" \
             "--m 0 --radius 1" "--m 4x --radius 1" "--m 1000000000 --radius 1" "--m 60 --radius 1 --iterative" \
             "--radius 1" "--m 4" "--m 4 --m 5 --radius 1" "--m 4 --radius 1 --placement odd" \
@@ -96,7 +122,10 @@ for args in "--m 4 --radius 50" "--m 4 --radius 3" "--m 4 --radius 0" "--m 4 --r
 done
 accept octahedron_membrane --m 4 --radius 1 --output "$O/ok.off"
 
+}
+
 # --- octahedron_deformation
+check_octahedron_deformation() {
 refuse octahedron_deformation
 for args in "--radius 3" "--radius 2" "--step 0" "--step -0.3" "--steps 11" "--steps 1000000" "--m 300" \
             "--out-dir /nonexistent" "--bogus" "extra" "--m 40" "--steps 2 --steps 3"; do
@@ -105,7 +134,10 @@ for args in "--radius 3" "--radius 2" "--step 0" "--step -0.3" "--steps 11" "--s
 done
 accept octahedron_deformation --out-dir "$O" --m 2 --steps 2 --step 0.3 --no-iterative
 
+}
+
 # --- barycentric_embed
+check_barycentric_embed() {
 printf '0 1 2\n' > "$WORK/fixed.txt"
 for args in "--weights magic" "--weights uniform --weights cotangent" "--fixed" "--fixed $WORK" \
             "--fixed $WORK/nothing.txt" "--up x" "--up +Z" "--solver x" "--output $O/o.xyz" \
@@ -117,7 +149,10 @@ refuse barycentric_embed "$WORK/input.off" --fixed "$WORK/fixed.txt" --output "$
 refuse barycentric_embed "$WORK/huge.off" --fixed "$WORK/fixed.txt" --output "$O/h.off"
 accept barycentric_embed "$DATA/hemisphere.off" --output "$O/ok.off"
 
+}
+
 # --- developable
+check_developable() {
 for args in "--energy magic" "--subdivisions 5" "--subdivisions -1" "--iterations -1" "--iterations x" \
             "--minimum-angle 45" "--minimum-angle nan" "--descent newton" "--progress -1" "--output $O/d.xyz" \
             "--energy intrinsic --energy covariance" "--up +Z" "--bogus"; do
@@ -129,7 +164,10 @@ refuse developable "$WORK/quad.off" --output "$O/d.off"
 refuse developable "$WORK/input.off" --output "$WORK/input.off"
 accept developable "$B1K" --subdivisions 0 --iterations 20 --output "$O/ok.off"
 
+}
+
 # --- flatten
+check_flatten() {
 D="$DATA/pebble_design.off"
 for args in "--epsilon -1" "--epsilon nan" "--epsilon 1x" "--alignment -2" "--sheet 210" "--sheet 210x" "--sheet x297" \
             "--sheet 5x5" "--sheet 210x297x3" "--scale 0" "--scale -1" "--scale nan" "--margin 200" "--margin -1" \
@@ -156,8 +194,19 @@ if grep -q "^split " "$WORK/stdout" || grep -q " 0 piece(s) overlapping themselv
   failures=$((failures + 1))
 fi
 accept flatten "$DATA/hemisphere.off" --no-cut --output "$O/ok.obj" --pattern "$O/ok.svg"
+# genus 2: the cut adds the four generator loops; the pieces lay flat without folds, their
+# boundaries keeping their lengths
+accept flatten "$DATA/double-torus.off" --output "$O/genus2.obj" --pattern "$O/genus2.svg"
+if ! grep -q " 4 generator loops" "$WORK/stdout" || ! grep -q "^  0 flipped faces" "$WORK/stdout" ||
+   ! awk '/boundary length error/ { for(i = 1; i < NF; ++i) if($i == "error") { gsub(";", "", $(i + 1)); exit !($(i + 1) <= 1e-5) } }' "$WORK/stdout"; then
+  echo "FAILED: flatten double-torus.off: $(grep -E "generator|flipped" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
+
+}
 
 # --- quad_remesh
+check_quad_remesh() {
 E="$DATA/eight.off"
 for args in "--min 0" "--max 5" "--min 0 --max 0" "--min -1 --max 5" "--min 0 --max 999999" "--min x --max 5" \
             "--min 0 --max 5 --no-protrusions" "--edge-length 0" "--edge-length -1" "--edge-length nan" \
@@ -190,8 +239,11 @@ if ! grep -q "100.0% quads" "$WORK/stdout" ||
   failures=$((failures + 1))
 fi
 
+}
+
 # --- surface_design_editor (a server: refusals only; its API and page have tests of their own)
-if [ -x "$BIN/surface_design_editor" ]; then
+check_surface_design_editor() {
+if [ -x "$BIN/surface_design_editor" ] || [ "$PROGRAM" = surface_design_editor ]; then
   refuse surface_design_editor
   refuse surface_design_editor "$B1K" --port 70000
   refuse surface_design_editor "$B1K" --port -1
@@ -210,5 +262,18 @@ if [ -x "$BIN/surface_design_editor" ]; then
   refuse surface_design_editor "$B1K" --port 0 --host 203.0.113.7
 fi
 
+}
+
+ran=0
+for name in stripes direction_field octahedron_membrane octahedron_deformation barycentric_embed developable flatten quad_remesh surface_design_editor; do
+  if [ "$PROGRAM" = all ] || [ "$PROGRAM" = "$name" ]; then
+    "check_$name"
+    ran=1
+  fi
+done
+if [ "$ran" -eq 0 ]; then
+  echo "unknown program $PROGRAM (one of: stripes direction_field octahedron_membrane octahedron_deformation barycentric_embed developable flatten quad_remesh surface_design_editor)"
+  exit 2
+fi
 echo "$checked runs checked, $failures failures"
 [ "$failures" -eq 0 ]

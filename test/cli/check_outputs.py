@@ -1,0 +1,285 @@
+# Copyright (c) 2026 The CGAL Surface Design authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Checks that the files a command-line program wrote are what their names promise: each exists,
+is not empty, and parses completely:
+- OFF, OBJ, PLY (ASCII or binary little-endian): the counts of the header are the elements in
+  the file, every coordinate is finite, every face has at least 3 vertices, all within range;
+- SVG: well-formed XML whose root is <svg> with at least one drawn element;
+- PNG: the signature, an IHDR chunk of non-zero size, and an IEND chunk, every chunk CRC correct;
+- TXT, CSV, JSON: non-empty text (JSON: parses).
+usage: check_outputs.py FILE...      (exit 1 with one line per bad file)
+       check_outputs.py --self-test  (broken files of each kind must be rejected)"""
+
+import json
+import math
+import os
+import struct
+import sys
+import xml.etree.ElementTree as ET
+import zlib
+
+
+class Bad(Exception):
+    pass
+
+
+def finite(values, what):
+    for v in values:
+        if not math.isfinite(v):
+            raise Bad(f"a non-finite {what}: {v}")
+
+
+def check_faces(faces, nv):
+    for f in faces:
+        if len(f) < 3:
+            raise Bad(f"a face with {len(f)} vertices")
+        if min(f) < 0 or max(f) >= nv:
+            raise Bad(f"a face index out of range (0..{nv - 1}): {f}")
+        if len(set(f)) != len(f):
+            raise Bad(f"a face that repeats a vertex: {f}")
+
+
+def check_off(data):
+    lines = [line.split("#", 1)[0].split() for line in data.decode().splitlines()]
+    lines = [items for items in lines if items]
+    if not lines or not lines[0][0].endswith("OFF"):
+        raise Bad("no OFF header")
+    counts = lines[0][1:] if len(lines[0]) > 1 else lines.pop(1)
+    nv, nf = int(counts[0]), int(counts[1])
+    if len(lines) != 1 + nv + nf:
+        raise Bad(f"{nv} vertices and {nf} faces announced, {len(lines) - 1} lines given")
+    for items in lines[1:1 + nv]:
+        finite([float(x) for x in items[:3]], "coordinate")
+    faces = []
+    for items in lines[1 + nv:]:
+        k = int(items[0])
+        if len(items) < 1 + k:
+            raise Bad(f"a face of {k} vertices with {len(items) - 1} indices")
+        faces.append([int(x) for x in items[1:1 + k]])  # anything after: the face's colour
+    check_faces(faces, nv)
+    return nv, nf
+
+
+def check_obj(data):
+    nv, faces = 0, []
+    for line in data.decode().splitlines():
+        items = line.split()
+        if not items:
+            continue
+        if items[0] == "v":
+            finite([float(x) for x in items[1:4]], "coordinate")
+            nv += 1
+        elif items[0] == "f":
+            faces.append([int(x.split("/")[0]) - 1 for x in items[1:]])
+    if nv == 0:
+        raise Bad("no vertex")
+    check_faces(faces, nv)
+    return nv, len(faces)
+
+
+PLY_TYPES = {"char": "b", "int8": "b", "uchar": "B", "uint8": "B", "short": "h", "int16": "h", "ushort": "H",
+             "uint16": "H", "int": "i", "int32": "i", "uint": "I", "uint32": "I", "float": "f", "float32": "f",
+             "double": "d", "float64": "d"}
+
+
+def check_ply(data):
+    end = data.find(b"end_header\n")
+    if not data.startswith(b"ply\n") or end < 0:
+        raise Bad("no PLY header")
+    header = data[:end].decode().splitlines()
+    body = data[end + len(b"end_header\n"):]
+    fmt = next(line.split()[1] for line in header if line.startswith("format"))
+    elements = []
+    for line in header:
+        items = line.split()
+        if items[0] == "element":
+            elements.append((items[1], int(items[2]), []))
+        elif items[0] == "property":
+            elements[-1][2].append(items[1:])
+    counts = {name: count for name, count, _ in elements}
+    if fmt == "ascii":
+        lines = body.decode().split("\n")
+        at = 0
+        faces, positions = [], []
+        for name, count, props in elements:
+            for _ in range(count):
+                if at >= len(lines):
+                    raise Bad(f"{count} {name} elements announced, fewer given")
+                values = lines[at].split()
+                at += 1
+                k = 0
+                row = []
+                for prop in props:
+                    if prop[0] == "list":
+                        n = int(values[k])
+                        row.append([int(x) for x in values[k + 1:k + 1 + n]])
+                        k += 1 + n
+                    else:
+                        row.append(float(values[k]))
+                        k += 1
+                if name == "vertex":
+                    finite(row[:3], "coordinate")
+                    positions.append(row)
+                elif name == "face":
+                    faces.append(row[0])
+        if any(line.strip() for line in lines[at:]):
+            raise Bad("data after the last element")
+    elif fmt == "binary_little_endian":
+        at = 0
+        faces, positions = [], []
+        for name, count, props in elements:
+            for _ in range(count):
+                row = []
+                for prop in props:
+                    if prop[0] == "list":
+                        (n,) = struct.unpack_from("<" + PLY_TYPES[prop[1]], body, at)
+                        at += struct.calcsize(PLY_TYPES[prop[1]])
+                        t = "<%d%s" % (n, PLY_TYPES[prop[2]])
+                        row.append(list(struct.unpack_from(t, body, at)))
+                        at += struct.calcsize(t)
+                    else:
+                        t = "<" + PLY_TYPES[prop[0]]
+                        row.append(struct.unpack_from(t, body, at)[0])
+                        at += struct.calcsize(t)
+                if name == "vertex":
+                    finite(row[:3], "coordinate")
+                    positions.append(row)
+                elif name == "face":
+                    faces.append(row[0])
+        if at != len(body):
+            raise Bad(f"{len(body) - at} bytes after the last element")
+    else:
+        raise Bad(f"unsupported PLY format {fmt}")
+    check_faces(faces, counts.get("vertex", 0))
+    return counts.get("vertex", 0), counts.get("face", 0)
+
+
+def check_svg(data):
+    root = ET.fromstring(data)
+    if not root.tag.endswith("svg"):
+        raise Bad(f"the root element is <{root.tag}>, not <svg>")
+    drawn = [e for e in root.iter() if e.tag.split("}")[-1] in ("path", "polygon", "polyline", "line", "circle", "rect")]
+    if not drawn:
+        raise Bad("nothing is drawn")
+    return len(drawn), 0
+
+
+def check_png(data):
+    if not data.startswith(b"\x89PNG\r\n\x1a\n"):
+        raise Bad("no PNG signature")
+    at, chunks, size = 8, [], (0, 0)
+    while at < len(data):
+        (length,) = struct.unpack_from(">I", data, at)
+        kind = data[at + 4:at + 8]
+        content = data[at + 8:at + 8 + length]
+        (crc,) = struct.unpack_from(">I", data, at + 8 + length)
+        if zlib.crc32(kind + content) != crc:
+            raise Bad(f"a wrong CRC in chunk {kind}")
+        if kind == b"IHDR":
+            size = struct.unpack_from(">II", content, 0)
+        chunks.append(kind)
+        at += 12 + length
+    if not chunks or chunks[0] != b"IHDR" or chunks[-1] != b"IEND" or 0 in size:
+        raise Bad("not a complete PNG (IHDR ... IEND of non-zero size)")
+    return size
+
+
+def check_text(data):
+    data.decode()
+    return 0, 0
+
+
+def check(path):
+    if not os.path.isfile(path):
+        raise Bad("missing")
+    data = open(path, "rb").read()
+    if not data:
+        raise Bad("empty")
+    ext = os.path.splitext(path)[1].lower()
+    checkers = {".off": check_off, ".obj": check_obj, ".ply": check_ply, ".svg": check_svg, ".png": check_png,
+                ".txt": check_text, ".csv": check_text, ".json": lambda d: (json.loads(d), 0)}
+    if ext not in checkers:
+        raise Bad(f"no reader for {ext} files")
+    try:
+        return checkers[ext](data)
+    except (ValueError, IndexError, struct.error, UnicodeDecodeError, ET.ParseError, StopIteration) as e:
+        raise Bad(f"does not parse: {e}")
+
+
+def self_test():
+    """The checker is an oracle too: it must reject each of these broken files and accept the
+    well-formed ones."""
+    import tempfile
+    png_chunk = lambda kind, content: struct.pack(">I", len(content)) + kind + content + \
+        struct.pack(">I", zlib.crc32(kind + content))
+    png = b"\x89PNG\r\n\x1a\n" + png_chunk(b"IHDR", struct.pack(">IIBBBBB", 2, 2, 8, 2, 0, 0, 0)) + \
+        png_chunk(b"IDAT", zlib.compress(b"\0" * 14)) + png_chunk(b"IEND", b"")
+    ply_header = b"ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty double x\nproperty double y\n" \
+        b"property double z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+    ply_body = struct.pack("<9d", 0, 0, 0, 1, 0, 0, 0, 1, 0) + struct.pack("<B3i", 3, 0, 1, 2)
+    good = {"a.off": b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+            "b.off": b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 255 0 0\n",
+            "a.obj": b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+            "a.ply": ply_header + ply_body,
+            "b.ply": b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                     b"element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+            "a.svg": b"<svg xmlns='http://www.w3.org/2000/svg'><path d='M0 0L1 1'/></svg>",
+            "a.png": png}
+    bad = {"empty.off": b"",
+           "truncated.off": b"OFF\n3 1 0\n0 0 0\n1 0 0\n",
+           "nan.off": b"OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n",
+           "range.off": b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n",
+           "repeat.obj": b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2\n",
+           "short.ply": ply_header + ply_body[:-4],
+           "long.ply": ply_header + ply_body + b"\0",
+           "open.svg": b"<svg xmlns='http://www.w3.org/2000/svg'><path d='M0 0L1 1'/>",
+           "blank.svg": b"<svg xmlns='http://www.w3.org/2000/svg'></svg>",
+           "cut.png": png[:-12],
+           "crc.png": png[:20] + bytes([png[20] ^ 1]) + png[21:],
+           "a.xyz": b"1 2 3\n"}
+    failures = 0
+    with tempfile.TemporaryDirectory() as folder:
+        for files, should_pass in ((good, True), (bad, False)):
+            for name, content in files.items():
+                path = os.path.join(folder, name)
+                with open(path, "wb") as f:
+                    f.write(content)
+                try:
+                    check(path)
+                    passed = True
+                except Bad:
+                    passed = False
+                if passed != should_pass:
+                    print(f"FAILED  {name} was {'accepted' if passed else 'rejected'}")
+                    failures += 1
+        if not check_missing(os.path.join(folder, "missing.off")):
+            print("FAILED  a missing file was accepted")
+            failures += 1
+    total = len(good) + len(bad) + 1
+    print(f"{total - failures} passed, {failures} failed")
+    return 1 if failures else 0
+
+
+def check_missing(path):
+    try:
+        check(path)
+        return False
+    except Bad:
+        return True
+
+
+def main():
+    if sys.argv[1:] == ["--self-test"]:
+        return self_test()
+    bad = 0
+    for path in sys.argv[1:]:
+        try:
+            check(path)
+        except Bad as e:
+            print(f"{path}: {e}")
+            bad += 1
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
