@@ -63,6 +63,8 @@ inline const std::vector<Preset>& presets()
   static const std::vector<Preset> table{
     {"quick", "the default: a scanned and a generated mesh of moderate size",
      {"bundled:bunny_8k.off", "sphere:63000"}},
+    {"smoke", "every workload once on two small meshes (CTest's benchmark_smoke_run)",
+     {"bundled:bunny_1k.off", "storus:1000"}},
     {"sizes", "scaling on well-shaped spheres, ~1k to ~1M faces",
      {"sphere:1000", "sphere:8000", "sphere:63000", "sphere:250000", "sphere:1000000"}},
     {"bunny", "scaling on the shared bunny meshes, 1k to 955k faces (skipped when absent)",

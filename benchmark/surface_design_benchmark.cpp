@@ -453,8 +453,11 @@ int run_benchmark(int argc, char** argv)
   const std::size_t failed_checks = std::size_t(
     std::count_if(checks.begin(), checks.end(), [](const Check_result& k) { return !k.passed(); }));
   if(failed_checks > 0)
-    std::cout << "\nWARNING: " << failed_checks << " of " << checks.size()
-              << " sanity checks failed (see above)\n";
+  {
+    // the figures of a run whose results are wrong are not figures: the run fails (after the JSON)
+    std::cout << "\nERROR: " << failed_checks << " of " << checks.size() << " sanity checks failed (see above)\n";
+    exit_code = 1;
+  }
 
   if(write_json(options.json, machine, options.timing, command_line, results, comparisons, checks,
                 not_applicable))
