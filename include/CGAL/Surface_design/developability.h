@@ -456,18 +456,14 @@ Developability_metrics metrics(const TriangleMesh& tm, const VertexPointMap& vpm
   if(reference)
   {
     const auto ref_vpm = get(CGAL::vertex_point, *reference);
-    using Ref_vpm = std::decay_t<decltype(ref_vpm)>;
-    if constexpr(std::is_same<Ref_vpm, VertexPointMap>::value)
-    {
-      CGAL::Bbox_3 box;
-      for(auto v : vertices(*reference))
-        box += get(ref_vpm, v).bbox();
-      const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                                        CGAL::square(box.zmax() - box.zmin()));
-      const auto dist = internal::surface_distances(tm, vpm, *reference, ref_vpm, 4 * (m.faces + num_faces(*reference)));
-      m.hausdorff_distance = dist.first / diagonal;
-      m.mean_distance = dist.second / diagonal;
-    }
+    CGAL::Bbox_3 box;
+    for(auto v : vertices(*reference))
+      box += get(ref_vpm, v).bbox();
+    const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                      CGAL::square(box.zmax() - box.zmin()));
+    const auto dist = internal::surface_distances(tm, vpm, *reference, ref_vpm, 4 * (m.faces + num_faces(*reference)));
+    m.hausdorff_distance = dist.first / diagonal;
+    m.mean_distance = dist.second / diagonal;
   }
   return m;
 }
@@ -489,13 +485,14 @@ Developability_metrics developability_metrics(const TriangleMesh& tm,
 }
 
 /// \ingroup PkgDevelopabilityRef
-/// Same, with the distances to `reference` (e.g. the input of the flow; read with its own vertex
-/// point map), relative to the reference's bounding-box diagonal.
+/// Same, with the distances to `reference` (e.g. the input of the flow), relative to the
+/// reference's bounding-box diagonal. `tm` is read through the point map of `np`, `reference`
+/// through its own `CGAL::vertex_point` map.
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Developability_metrics developability_metrics(const TriangleMesh& tm, const TriangleMesh& reference,
                                               const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return developability_detail::metrics(tm, get(CGAL::vertex_point, tm), &reference, np);
+  return developability_detail::metrics(tm, internal::const_vertex_point_map(tm, np), &reference, np);
 }
 
 } // namespace Surface_design

@@ -63,21 +63,21 @@ Developability_per_vertex developability_per_vertex(const Indices& idx, const Ve
   return d;
 }
 
-/// Symmetric (approximate) Hausdorff distance and mean distance between two triangle meshes:
-/// points sampled on each (CGAL's grid sampling, about `samples` points per mesh) and their
-/// distances to the other through an AABB tree.
-template <class Mesh, class VertexPointMap>
-std::pair<double, double> surface_distances(const Mesh& a, const VertexPointMap& vpm_a, const Mesh& b,
-                                            const VertexPointMap& vpm_b, std::size_t samples)
+/// Symmetric (approximate) Hausdorff distance and mean distance between two triangle meshes, each
+/// read through its own vertex point map: points sampled on each (CGAL's grid sampling, about
+/// `samples` points per mesh) and their distances to the other through an AABB tree.
+template <class Mesh, class VertexPointMapA, class VertexPointMapB>
+std::pair<double, double> surface_distances(const Mesh& a, const VertexPointMapA& vpm_a, const Mesh& b,
+                                            const VertexPointMapB& vpm_b, std::size_t samples)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
-  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+  using Point = typename boost::property_traits<VertexPointMapA>::value_type;
   using Kernel = typename CGAL::Kernel_traits<Point>::Kernel;
-  using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh, VertexPointMap>;
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
   double largest = 0., sum = 0.;
   std::size_t count = 0;
-  auto one_way = [&](const Mesh& from, const VertexPointMap& vpm_from, const Mesh& to, const VertexPointMap& vpm_to) {
+  auto one_way = [&](const Mesh& from, const auto& vpm_from, const Mesh& to, const auto& vpm_to) {
+    using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh, std::decay_t<decltype(vpm_to)>>;
+    using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
     Tree tree(faces(to).first, faces(to).second, to, vpm_to);
     tree.accelerate_distance_queries();
     const double area = CGAL::to_double(PMP::area(from, CGAL::parameters::vertex_point_map(vpm_from)));
