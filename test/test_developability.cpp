@@ -14,7 +14,11 @@
 //   topology; the metrics on analytic cases (flat grid, exact cube, cone apex);
 // - the visitor stops the flow, the same run on Surface_mesh and Polyhedron_3 gives the same
 //   result, gradient descent also descends, and bad meshes and parameters throw before anything
-//   is modified.
+//   is modified;
+// - with a separate vertex_point_map (a Surface_mesh property, a std::map for Polyhedron_3) the
+//   flow, new vertices included, gives bit for bit the result of the default map and leaves the
+//   mesh's own points alone; vertex_energy_map sums to the total energy (and matches the
+//   definitions per star), vertex_gradient_map matches central differences of the total.
 
 #include <test_support.h>
 
@@ -34,6 +38,8 @@
 #include <limits>
 #include <map>
 #include <random>
+#include <set>
+#include <type_traits>
 #include <vector>
 
 namespace SD = CGAL::Surface_design;
@@ -733,6 +739,358 @@ TEST_CASE("the flow on an open mesh with boundary: boundary vertices omitted or 
     CHECK(e1 < 0.05 * e0);
     check_valid_mesh(mesh, 1, 1);
   }
+}
+
+// --- the user's maps: a separate point map through the flow, per-vertex energies and gradients
+
+namespace {
+
+test::Point nan_point()
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  return test::Point(nan, nan, nan);
+}
+
+bool is_finite(const test::Point& p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()); }
+
+/// A writable vertex point map other than the mesh's own, filled with the mesh's positions: a
+/// `std::map` keyed by the vertex descriptors, through `boost::associative_property_map`. The
+/// handles of a Polyhedron_3 stay valid through flips, collapses and splits.
+template <class Mesh>
+class Associative_points
+{
+public:
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  using Map = boost::associative_property_map<std::map<vertex_descriptor, test::Point>>;
+
+  explicit Associative_points(const Mesh& mesh)
+  {
+    for(auto v : vertices(mesh))
+      m_points.emplace(v, get(CGAL::vertex_point, mesh, v));
+  }
+  Map map() { return Map(m_points); }
+  /// The position of `v`, NaN if the map has none.
+  test::Point at(vertex_descriptor v) const
+  {
+    const auto it = m_points.find(v);
+    return it == m_points.end() ? nan_point() : it->second;
+  }
+
+private:
+  std::map<vertex_descriptor, test::Point> m_points;
+};
+
+/// For a Surface_mesh, a second point property: `collect_garbage()` renumbers it along with the
+/// mesh; new vertices start at NaN.
+class Property_points
+{
+  using Mesh = test::Surface_mesh;
+
+public:
+  using vertex_descriptor = Mesh::Vertex_index;
+  using Map = Mesh::Property_map<vertex_descriptor, test::Point>;
+
+  explicit Property_points(Mesh& mesh)
+    : m_map(mesh.add_property_map<vertex_descriptor, test::Point>("v:user_point", nan_point()).first)
+  {
+    for(auto v : vertices(mesh))
+      put(m_map, v, mesh.point(v));
+  }
+  Map map() const { return m_map; }
+  test::Point at(vertex_descriptor v) const { return get(m_map, v); }
+
+private:
+  Map m_map;
+};
+
+/// What a user observes of a mesh through a point map: coordinates and faces (as vertex
+/// sequences), in iteration order.
+struct Observed_mesh
+{
+  std::vector<double> coordinates;
+  std::vector<std::vector<std::size_t>> faces;
+};
+
+template <class Mesh, class PointAt>
+Observed_mesh observe(const Mesh& mesh, const PointAt& point_at)
+{
+  Observed_mesh o;
+  std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, std::size_t> id;
+  for(auto v : vertices(mesh))
+  {
+    id.emplace(v, id.size());
+    const test::Point p = point_at(v);
+    o.coordinates.insert(o.coordinates.end(), {p.x(), p.y(), p.z()});
+  }
+  for(auto f : faces(mesh))
+  {
+    o.faces.emplace_back();
+    for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+      o.faces.back().push_back(id.at(v));
+  }
+  return o;
+}
+
+/// The mesh's own points, moved by an affine map that changes the angles: reading them instead
+/// of the user's map would change what the flow flips, collapses and writes.
+std::array<double, 3> own_point_of(const test::Point& p) { return {1.5 * p.x() + 3., p.y() - 2., 0.5 * p.z()}; }
+
+/// The flow on bunny_1k with the point map of `Points` (new vertices, flips and collapses) against
+/// the same flow with the mesh's own point map on a copy: (a) every vertex of the result has a
+/// finite position in the user's map, (b) the two results are the same, vertex for vertex and
+/// bit for bit, (c) the mesh's own points were neither read nor written.
+template <class Mesh, class Points>
+void check_flow_with_separate_points()
+{
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  const Mesh input = test::load_mesh<Mesh>("bunny_1k.off");
+  // one subdivision (new vertices), and a minimum angle of about 9 degrees so that the flow flips
+  // and collapses within a few iterations
+  const auto np = SD::parameters::number_of_subdivisions(std::size_t(1), SD::parameters::minimum_angle(0.15))
+                    .number_of_iterations(sanitized ? 8 : 20);
+
+  // the reference: the same flow with the mesh's own point map, on a copy
+  Mesh reference = input;
+  const SD::Developability_flow_result expected = SD::make_piecewise_developable(reference, np);
+  INFO("reference run: " << expected.flips << " flips, " << expected.collapses << " collapses, "
+                         << num_vertices(input) << " -> " << num_vertices(reference) << " vertices");
+  REQUIRE(expected.subdivisions == 1);
+  REQUIRE(expected.flips > 0);
+  REQUIRE(expected.collapses > 0);
+
+  Mesh mesh = input;
+  Points points(mesh);
+  // the mesh's own points move away from the shape, and, for a Surface_mesh, every vertex keeps
+  // its input index in a property that collect_garbage() renumbers with it
+  auto own = get(CGAL::vertex_point, mesh);
+  std::vector<std::array<double, 3>> own_input;
+  std::set<std::array<double, 3>> own_input_set;
+  for(auto v : vertices(mesh))
+  {
+    const std::array<double, 3> q = own_point_of(get(own, v));
+    put(own, v, test::Point(q[0], q[1], q[2]));
+    own_input.push_back(q);
+    own_input_set.insert(q);
+  }
+  constexpr bool surface_mesh = std::is_same<Mesh, test::Surface_mesh>::value;
+  using Input_index_map = test::Surface_mesh::Property_map<test::Surface_mesh::Vertex_index, std::size_t>;
+  [[maybe_unused]] Input_index_map input_index;
+  if constexpr(surface_mesh)
+  {
+    input_index = mesh.template add_property_map<vertex_descriptor, std::size_t>("v:input_index", SDI::npos).first;
+    std::size_t i = 0;
+    for(auto v : vertices(mesh))
+      put(input_index, v, i++);
+  }
+  const std::size_t input_vertices = num_vertices(mesh);
+
+  const SD::Developability_flow_result r = SD::make_piecewise_developable(mesh, np.vertex_point_map(points.map()));
+
+  // the same run, operation for operation
+  CHECK(r.iterations == expected.iterations);
+  CHECK(r.evaluations == expected.evaluations);
+  CHECK(r.flips == expected.flips);
+  CHECK(r.collapses == expected.collapses);
+  CHECK(r.subdivisions == expected.subdivisions);
+  REQUIRE(r.levels.size() == expected.levels.size());
+  for(std::size_t l = 0; l < r.levels.size(); ++l)
+  {
+    CHECK(r.levels[l].final_energy == expected.levels[l].final_energy);
+    CHECK(r.levels[l].vertices == expected.levels[l].vertices);
+  }
+
+  // (a) every vertex of the result, new ones included, has a finite position in the user's map
+  std::size_t missing = 0;
+  for(auto v : vertices(mesh))
+    missing += !is_finite(points.at(v));
+  CHECK(missing == 0);
+  CHECK(num_vertices(mesh) > input_vertices);
+
+  // (b) vertex for vertex the result of the reference run: same faces, bitwise same positions
+  const Observed_mesh got = observe(mesh, [&](vertex_descriptor v) { return points.at(v); });
+  const Observed_mesh want = observe(reference, [&](vertex_descriptor v) { return get(CGAL::vertex_point, reference, v); });
+  REQUIRE(got.coordinates.size() == want.coordinates.size());
+  CHECK(got.faces == want.faces);
+  double largest = 0.;
+  for(std::size_t i = 0; i < got.coordinates.size(); ++i)
+    largest = (std::max)(largest, std::abs(got.coordinates[i] - want.coordinates[i]));
+  CHECK(largest == 0.);
+
+  // (c) the mesh's own points: never written. Every collapse removes one vertex, so at least
+  // `input - collapses` input vertices survive, each with its own point as it was; no vertex has
+  // its own point equal to its output.
+  std::size_t unchanged = 0, written = 0;
+  for(auto v : vertices(mesh))
+  {
+    const test::Point q = get(own, v), p = points.at(v);
+    unchanged += own_input_set.count({q.x(), q.y(), q.z()});
+    written += q == p;
+  }
+  CHECK(unchanged >= input_vertices - r.collapses);
+  CHECK(written == 0);
+  if constexpr(surface_mesh)
+  {
+    std::size_t survivors = 0, moved = 0;
+    for(auto v : vertices(mesh))
+    {
+      const std::size_t i = get(input_index, v);
+      if(i == SDI::npos)
+        continue; // a vertex of the subdivision
+      ++survivors;
+      const test::Point q = get(own, v);
+      moved += !(q.x() == own_input[i][0] && q.y() == own_input[i][1] && q.z() == own_input[i][2]);
+    }
+    CHECK(survivors >= input_vertices - r.collapses);
+    CHECK(moved == 0);
+  }
+}
+
+} // namespace
+
+TEMPLATE_TEST_CASE("the flow reads and writes only a separate vertex_point_map, new vertices included",
+                   "[developability][flow][point_map]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  if constexpr(std::is_same<Mesh, test::Surface_mesh>::value)
+    check_flow_with_separate_points<Mesh, Property_points>();
+  else
+    check_flow_with_separate_points<Mesh, Associative_points<Mesh>>();
+}
+
+// The flow collects the garbage of a Surface_mesh after its collapses, which renumbers the
+// vertices: a point map keyed by vertex index outside the mesh (here a std::map) must be carried
+// across (once, every vertex got the position of another one and the flow went on, silently,
+// from a scrambled mesh: 416 collapses instead of 19).
+TEST_CASE("The flow on a Surface_mesh with a std::map point map keyed by vertex index",
+          "[developability][flow][point_map]")
+{
+  check_flow_with_separate_points<test::Surface_mesh, Associative_points<test::Surface_mesh>>();
+}
+
+TEMPLATE_TEST_CASE("vertex_energy_map sums to the total energy and vertex_gradient_map is its gradient",
+                   "[developability][energy_maps]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  using Vector = test::Kernel::Vector_3;
+  // central differences of step h = 1e-6 (relative to the bounding diagonal) are accurate to
+  // ~h^2 / edge^2 + 1e-16 / h of the gradient, ~1e-10 here: the tolerance, 10 h, is loose for a
+  // correct gradient and tight for a wrong one. Where the steps h and h/2 disagree, a kink of
+  // the energy (a repeated eigenvalue) lies within the stencil and the coordinate is skipped.
+  constexpr double relative_step = 1e-6, tolerance = 10. * relative_step;
+
+  Mesh sphere = make_icosphere<Mesh>(1); // 42 vertices of valence 5 and 6
+  {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-0.05, 0.05);
+    auto vpm = get(CGAL::vertex_point, sphere);
+    for(auto v : vertices(sphere))
+    {
+      const test::Point q = get(vpm, v);
+      put(vpm, v, test::Point(q.x() + u(rng), q.y() + u(rng), q.z() + u(rng)));
+    }
+  }
+  const Mesh tube = make_tube<Mesh>(8, 3, 1., 0.8, 1.2, 0.15); // open: boundary stars
+  struct Case
+  {
+    const char* name;
+    const Mesh* mesh;
+    bool boundary;
+  };
+  for(const Case& c : {Case{"noisy icosphere", &sphere, false}, Case{"noisy tube", &tube, false},
+                       Case{"noisy tube with boundary stars", &tube, true}})
+    for(SD::Developability_energy e : {SD::Developability_energy::covariance, SD::Developability_energy::intrinsic,
+                                       SD::Developability_energy::squared_angle_defect})
+    {
+      INFO(c.name << ", " << SD::to_string(e));
+      const Mesh& mesh = *c.mesh;
+      // the positions come from a map of the user, which the finite differences perturb
+      std::map<vertex_descriptor, test::Point> points;
+      std::map<vertex_descriptor, double> energy;
+      std::map<vertex_descriptor, Vector> gradient;
+      for(auto v : vertices(mesh))
+      {
+        points.emplace(v, get(CGAL::vertex_point, mesh, v));
+        energy.emplace(v, std::numeric_limits<double>::quiet_NaN());
+        gradient.emplace(v, Vector(nan_point().x(), 0., 0.));
+      }
+      const auto np = SD::parameters::developability_energy(
+        e, SD::parameters::include_boundary_vertices(c.boundary,
+                                                     CGAL::parameters::vertex_point_map(boost::make_assoc_property_map(points))));
+      const double total = SD::developability_energy(
+        mesh, SD::parameters::vertex_energy_map(boost::make_assoc_property_map(energy),
+                                                SD::parameters::vertex_gradient_map(boost::make_assoc_property_map(gradient), np)));
+      CHECK(total > 0.);
+      CHECK(SD::developability_energy(mesh, np) == total); // the maps do not change the result
+      CHECK(energy.size() == num_vertices(mesh));         // written for the mesh's vertices only
+      CHECK(gradient.size() == num_vertices(mesh));
+
+      // the per-vertex energies: nonnegative, zero on omitted boundary stars, summing to the total;
+      // on the closed sphere, computed here from the definitions
+      double sum = 0.;
+      const auto stars = interior_stars(mesh);
+      for(auto v : vertices(mesh))
+      {
+        REQUIRE(std::isfinite(energy.at(v)));
+        CHECK(energy.at(v) >= 0.);
+        if(!c.boundary && CGAL::is_border(v, mesh))
+          CHECK(energy.at(v) == 0.);
+        sum += energy.at(v);
+      }
+      CHECK(sum == Approx(total).epsilon(1e-12));
+      if(!c.boundary && e != SD::Developability_energy::intrinsic)
+        for(const auto& s : stars)
+        {
+          if(s.valence < 4)
+          {
+            CHECK(energy.at(s.v) == 0.); // valence 3: omitted by default
+            continue;
+          }
+          const double defect = SDI::two_pi - s.angle_sum;
+          const double value = e == SD::Developability_energy::covariance ? s.lambda : defect * defect;
+          CHECK(energy.at(s.v) == Approx(value).epsilon(1e-10).margin(1e-14));
+        }
+
+      // the per-vertex gradient: central differences of the total, one coordinate at a time
+      const double h = relative_step * bounding_diagonal(mesh);
+      double largest = 0.;
+      for(auto v : vertices(mesh))
+      {
+        const Vector& g = gradient.at(v);
+        REQUIRE((std::isfinite(g.x()) && std::isfinite(g.y()) && std::isfinite(g.z())));
+        largest = (std::max)({largest, std::abs(g.x()), std::abs(g.y()), std::abs(g.z())});
+      }
+      REQUIRE(largest > 0.);
+      std::size_t checked = 0, skipped = 0;
+      double worst = 0.;
+      for(auto v : vertices(mesh))
+        for(int k = 0; k < 3; ++k)
+        {
+          const test::Point p0 = points.at(v);
+          auto at = [&](double t) {
+            std::array<double, 3> q{p0.x(), p0.y(), p0.z()};
+            q[std::size_t(k)] += t;
+            points[v] = test::Point(q[0], q[1], q[2]);
+            const double value = SD::developability_energy(mesh, np);
+            points[v] = p0;
+            return value;
+          };
+          const double fd = (at(h) - at(-h)) / (2. * h), fd_half = (at(h / 2.) - at(-h / 2.)) / h;
+          if(std::abs(fd - fd_half) > 0.1 * tolerance * largest)
+          {
+            ++skipped;
+            continue;
+          }
+          ++checked;
+          worst = (std::max)(worst, std::abs(gradient.at(v)[k] - fd));
+        }
+      INFO("largest difference to the finite differences " << worst / largest << " of the largest entry, "
+                                                             << skipped << " coordinates skipped at a kink");
+      CHECK(worst <= tolerance * largest);
+      if(e == SD::Developability_energy::squared_angle_defect) // smooth everywhere
+        CHECK(skipped == 0);
+      CHECK(skipped * 20 <= checked + skipped);
+    }
 }
 
 // --- bad input

@@ -50,13 +50,28 @@ void put_point(const VertexPointMap& vpm, typename boost::property_traits<Vertex
 
 } // namespace remeshing_detail
 
-/// Frees the storage of removed elements if the mesh type keeps it (`Surface_mesh`).
-template <class Mesh>
-void collect_garbage_if_any(Mesh& tm)
+/// Frees the storage of removed elements if the mesh type keeps it (`Surface_mesh`), keeping the
+/// positions of `vpm` with their vertices. `collect_garbage()` renumbers the vertices and permutes
+/// the mesh's own property maps along, but not a map kept outside the mesh (a `std::map` keyed by
+/// vertex index, say): the positions are carried across in a property of the mesh and written
+/// back to `vpm` under the new indices.
+template <class Mesh, class VertexPointMap>
+void collect_garbage_if_any(Mesh& tm, const VertexPointMap& vpm)
 {
   if constexpr(remeshing_detail::Has_collect_garbage<Mesh>::value)
+  {
+    if(!tm.has_garbage())
+      return;
+    using Point = typename boost::property_traits<VertexPointMap>::value_type;
+    auto carried = get(CGAL::dynamic_vertex_property_t<Point>(), tm);
+    for(auto v : vertices(tm))
+      put(carried, v, get(vpm, v));
     tm.collect_garbage();
+    for(auto v : vertices(tm))
+      put(vpm, v, get(carried, v));
+  }
   (void)tm;
+  (void)vpm;
 }
 
 /// Regular 4-1 subdivision without smoothing (paper, sec. 4.2): every edge is split at its
@@ -203,7 +218,7 @@ Small_angle_report remove_small_angles(Mesh& tm, const VertexPointMap& vpm, doub
     if(!changed)
       break;
   }
-  collect_garbage_if_any(tm);
+  collect_garbage_if_any(tm, vpm);
   return report;
 }
 
