@@ -51,7 +51,8 @@ enum class Harmonic_weights
 {
   cotangent,         ///< the cotangent weights of the mesh (negative across non-Delaunay edges)
   intrinsic_delaunay ///< the cotangent weights of the intrinsic Delaunay triangulation (>= 0 on
-                     ///< interior edges: the discrete maximum principle holds on its edges; extrema
+                     ///< interior edges up to rounding, -1e-12 at worst: the discrete maximum
+                     ///< principle holds on its edges; extrema
                      ///< are classified on the mesh's own edges, where they are then rare)
 };
 

@@ -31,8 +31,9 @@ struct Weighted_edge
 ///
 /// `make_delaunay()` flips edges *intrinsically* (only the edge lengths change; the vertex set and
 /// the metric stay: Bobenko & Springborn 2007) until every interior edge is locally Delaunay
-/// (a_ij + b_ij <= pi): every interior weight is then >= 0, so the Laplacian satisfies the
-/// discrete maximum principle. Boundary edges are never flipped (an obtuse angle opposite one keeps
+/// (a_ij + b_ij <= pi): every interior weight is then >= 0 up to rounding (the flips stop at
+/// cot a_ij + cot b_ij >= -1e-12, so a few weights of needle triangles may be tiny negatives), so
+/// the Laplacian satisfies the discrete maximum principle. Boundary edges are never flipped (an obtuse angle opposite one keeps
 /// its weight negative), and the weights may join vertices that are not neighbours in the mesh.
 class Intrinsic_triangulation
 {
