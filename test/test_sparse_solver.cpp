@@ -79,10 +79,19 @@ TEST_CASE("The factorization is reused: later solves do not refactor", "[solver]
 {
   const test::Surface_mesh mesh = test::load_mesh<test::Surface_mesh>("bunny_1k.off");
   const SDI::Sparse_matrix A = screened_laplacian(mesh, 1e-2);
+  // counted, not inferred: one factorization, then every solve is a back-substitution only
+  test::Counting_solver_traits counting;
+  SDI::Factored_system<test::Counting_solver_traits> counted(counting);
+  counted.factor(SDI::Sparse_matrix(A));
+  const Eigen::VectorXd b = random_vector(A.rows(), 9);
+  const Eigen::VectorXd y1 = counted.solve(b), y2 = counted.solve(2. * b);
+  REQUIRE(counting.counts().factorizations == 1);
+  REQUIRE(counting.counts().solves == 2);
+  REQUIRE((y2 - 2. * y1).norm() <= 1e-12 * y2.norm());
+  REQUIRE((A * y1 - b).norm() <= 1e-10 * b.norm());
   SDI::Factored_system<SD::Default_solver_traits> system;
   system.factor(SDI::Sparse_matrix(A));
   // the solver object holds the factor of A: solving with it twice gives identical results
-  const Eigen::VectorXd b = random_vector(A.rows(), 9);
   const Eigen::VectorXd x1 = system.solve(b), x2 = system.solve(b);
   REQUIRE((x1 - x2).norm() == 0.);
   // a copy of the system's traits shares the factorization (Eigen_solver_traits semantics)
