@@ -28,7 +28,6 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
-#include <regex>
 #include <set>
 #include <cstdio>
 #include <cstdlib>
@@ -194,15 +193,60 @@ inline std::string option_value(int argc, char** argv, int& i)
   return argv[++i];
 }
 
+/// The digits of `text` from `i` on; advances `i` past them.
+inline std::size_t skip_digits(const std::string& text, std::size_t& i)
+{
+  const std::size_t start = i;
+  while(i < text.size() && text[i] >= '0' && text[i] <= '9')
+    ++i;
+  return i - start;
+}
+
+/// Whether the whole of `text` is -?(D+.?D*|.D+)([eE][-+]?D+)? with D a decimal digit. Scanned
+/// by hand: std::regex matches recursively and overflows the stack on long arguments (found by
+/// fuzzing: a 20 000-digit --scale crashed every program).
+inline bool is_decimal(const std::string& text)
+{
+  std::size_t i = 0;
+  if(i < text.size() && text[i] == '-')
+    ++i;
+  std::size_t digits = skip_digits(text, i);
+  if(i < text.size() && text[i] == '.')
+    digits += skip_digits(text, ++i);
+  if(digits == 0)
+    return false;
+  if(i < text.size() && (text[i] == 'e' || text[i] == 'E'))
+  {
+    ++i;
+    if(i < text.size() && (text[i] == '+' || text[i] == '-'))
+      ++i;
+    if(skip_digits(text, i) == 0)
+      return false;
+  }
+  return i == text.size();
+}
+
+/// Whether the whole of `text` is -?D+.
+inline bool is_integer(const std::string& text)
+{
+  std::size_t i = text.size() > 0 && text[0] == '-' ? 1 : 0;
+  return skip_digits(text, i) > 0 && i == text.size();
+}
+
+/// `text` for a message: at most 40 characters of it.
+inline std::string shown(const std::string& text)
+{
+  return text.size() <= 40 ? text : text.substr(0, 40) + "... (" + std::to_string(text.size()) + " characters)";
+}
+
 /// Parses the whole of `text` as a finite decimal number in [lo, hi], or throws naming the option.
 /// Strict: no leading spaces or '+', no hexadecimal, no trailing characters.
 inline double parse_double(const std::string& text, const std::string& option,
                            double lo = -std::numeric_limits<double>::max(),
                            double hi = std::numeric_limits<double>::max())
 {
-  static const std::regex decimal(R"(-?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?)");
-  if(!std::regex_match(text, decimal))
-    throw Usage_error(option + " expects a decimal number, not \"" + text + "\"");
+  if(!is_decimal(text))
+    throw Usage_error(option + " expects a decimal number, not \"" + shown(text) + "\"");
   errno = 0;
   const double value = std::strtod(text.c_str(), nullptr);
   if(errno == ERANGE || !std::isfinite(value) || (value != 0. && std::abs(value) < std::numeric_limits<double>::min()))
@@ -228,9 +272,8 @@ inline double parse_positive(const std::string& text, const std::string& option)
 /// Parses the whole of `text` as a decimal integer in [lo, hi], or throws naming the option.
 inline long parse_integer(const std::string& text, const std::string& option, long lo, long hi)
 {
-  static const std::regex integer(R"(-?[0-9]+)");
-  if(!std::regex_match(text, integer))
-    throw Usage_error(option + " expects an integer, not \"" + text + "\"");
+  if(!is_integer(text))
+    throw Usage_error(option + " expects an integer, not \"" + shown(text) + "\"");
   errno = 0;
   const long value = std::strtol(text.c_str(), nullptr, 10);
   if(errno == ERANGE || value < lo || value > hi)

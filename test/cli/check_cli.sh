@@ -79,6 +79,11 @@ for args in "--scale nan" "--scale -3" "--scale 0" "--scale inf" "--scale 1e300"
   # shellcheck disable=SC2086
   refuse stripes "$B1K" $args --output "$O/s.ply"
 done
+# arguments of 20 000 characters (found by fuzzing: the number parsers overflowed the stack)
+LONG_NUMBER="$(printf '1%.0s' $(seq 20000))"
+refuse stripes "$B1K" --scale "$LONG_NUMBER" --output "$O/s.ply"
+refuse stripes "$B1K" --singularity "$LONG_NUMBER:1" --output "$O/s.ply"
+refuse stripes "$B1K" --scale "${LONG_NUMBER}x" --output "$O/s.ply"
 refuse stripes "$WORK/input.off" --output "$WORK/input.off"
 refuse stripes "$DATA/elephant-with-holes.off" --singularity 100:1 --output "$O/e.ply"
 refuse stripes "$DATA/torus.off" --winding 0:100000 --output "$O/t.ply"
