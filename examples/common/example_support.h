@@ -22,7 +22,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -33,6 +35,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
+#include <iterator>
 #include <memory>
 #include <iostream>
 #include <sstream>
@@ -82,18 +85,234 @@ int run_main(const char* name, const char* usage, int argc, Body&& body)
 }
 
 
+/// The digits of `text` from `i` on; advances `i` past them.
+inline std::size_t skip_digits(const std::string& text, std::size_t& i)
+{
+  const std::size_t start = i;
+  while(i < text.size() && text[i] >= '0' && text[i] <= '9')
+    ++i;
+  return i - start;
+}
+
+/// `text` for a message: at most 40 characters of it.
+inline std::string shown(const std::string& text)
+{
+  return text.size() <= 40 ? text : text.substr(0, 40) + "... (" + std::to_string(text.size()) + " characters)";
+}
+
+/// Whether the whole of `text` is -?(D+.?D*|.D+)([eE][-+]?D+)? with D a decimal digit. Scanned
+/// by hand: std::regex matches recursively and overflows the stack on long arguments (found by
+/// fuzzing: a 20 000-digit --scale crashed every program).
+inline bool is_decimal(const std::string& text)
+{
+  std::size_t i = 0;
+  if(i < text.size() && text[i] == '-')
+    ++i;
+  std::size_t digits = skip_digits(text, i);
+  if(i < text.size() && text[i] == '.')
+    digits += skip_digits(text, ++i);
+  if(digits == 0)
+    return false;
+  if(i < text.size() && (text[i] == 'e' || text[i] == 'E'))
+  {
+    ++i;
+    if(i < text.size() && (text[i] == '+' || text[i] == '-'))
+      ++i;
+    if(skip_digits(text, i) == 0)
+      return false;
+  }
+  return i == text.size();
+}
+
+/// Whether the whole of `text` is -?D+.
+inline bool is_integer(const std::string& text)
+{
+  std::size_t i = text.size() > 0 && text[0] == '-' ? 1 : 0;
+  return skip_digits(text, i) > 0 && i == text.size();
+}
+
+/// Refuses a PLY header that CGAL 5.5's PLY reader mishandles (both found by fuzzing the
+/// programs' reader): a "property" line before any "element" line (the reader takes the last
+/// element of an empty list: undefined behaviour, a crash), and an element with more items than the
+/// file has bytes, or items without properties (the reader loops over every announced item, for
+/// hours on a count like 888888888888880); vertex coordinates that are not float or double (an
+/// assertion, a null dereference without assertions).
+inline void check_ply_header(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::error_code ec;
+  const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
+  std::string line;
+  std::string element; // the current element, its item count and its property count
+  std::size_t count = 0, properties = 0, number = 0;
+  auto check_element = [&]() {
+    if(!element.empty() && count > 0 && (properties == 0 || ec || count > bytes))
+      throw std::runtime_error("cannot read " + path + ": its PLY header announces " + std::to_string(count) + " '" +
+                               element + "' items" + (properties == 0 ? " without any property" : ", more than the file holds"));
+  };
+  while(std::getline(in, line))
+  {
+    std::istringstream words(line);
+    std::string keyword, type;
+    std::size_t items = 0;
+    if(++number <= 2 || !(words >> keyword)) // the signature and the format line, or an empty line
+      continue;
+    if(keyword == "end_header")
+      break;
+    if(keyword == "element" && words >> type >> items)
+    {
+      check_element();
+      element = type;
+      count = items;
+      properties = 0;
+    }
+    else if(keyword == "property")
+    {
+      if(element.empty())
+        throw std::runtime_error("cannot read " + path + ": its PLY header declares a property before any element (line " +
+                                 std::to_string(number) + ")");
+      ++properties;
+      std::string name, size_type, index_type;
+      words >> type >> name;
+      if(type == "list")
+        words >> index_type >> name;
+      const bool coordinate = (element == "vertex" || element == "vertices") && (name == "x" || name == "y" || name == "z");
+      if(coordinate && type != "float" && type != "float32" && type != "double" && type != "float64")
+        throw std::runtime_error("cannot read " + path + ": its PLY header declares the vertex coordinate " + name +
+                                 " as '" + type + "' (line " + std::to_string(number) + "); coordinates are float or double");
+    }
+  }
+  check_element();
+}
+
+/// Reads an ASCII OFF file (OFF, COFF, NOFF, STOFF and their combinations: one vertex per line,
+/// its first three numbers the position, anything after them (colour, normal, texture) ignored;
+/// one face per line, its size then its vertex indices, anything after them ignored) into a
+/// soup, strictly: every number whole and finite, every count and index in range, every face of
+/// at least 3 vertices. Returns false for a binary OFF file (left to CGAL's reader). Written for
+/// the programs because CGAL 5.5's OFF scanner trusts the file: it allocates whatever a count
+/// announces (gigabytes for "OFF 301111111 3") and converts numbers through a double into
+/// unsigned integers, undefined behaviour out of range (a colour of 765, an index of 27 digits);
+/// all found by fuzzing the programs' reader.
+inline bool read_ascii_off(const std::string& path, std::vector<Point>& points,
+                           std::vector<std::vector<std::size_t>>& polygons)
+{
+  std::ifstream in(path, std::ios::binary);
+  if(!in)
+    throw std::runtime_error("cannot read " + path + ": the file cannot be opened");
+  std::size_t number = 0;
+  std::vector<std::string> words;
+  // the words of the next line that has any (comments after '#' removed); false at the end
+  auto next_line = [&]() {
+    std::string line;
+    while(std::getline(in, line))
+    {
+      ++number;
+      std::istringstream stream(line.substr(0, line.find('#')));
+      words.assign(std::istream_iterator<std::string>(stream), std::istream_iterator<std::string>());
+      if(!words.empty())
+        return true;
+    }
+    return false;
+  };
+  auto fail = [&](const std::string& what) {
+    throw std::runtime_error("cannot read " + path + ": line " + std::to_string(number) + ": " + what);
+  };
+  auto count = [&](const std::string& word, std::size_t bound, const char* what) {
+    std::size_t i = 0;
+    if(skip_digits(word, i) == 0 || i != word.size() || i > 18 || std::stoull(word) > bound)
+      fail(std::string(what) + " \"" + shown(word) + "\" is not an integer from 0 to " + std::to_string(bound));
+    return std::size_t(std::stoull(word));
+  };
+  if(!next_line())
+    fail("the file is empty");
+  const std::string keyword = words[0];
+  const std::size_t off = keyword.rfind("OFF");
+  if(off == std::string::npos || off + 3 != keyword.size() ||
+     keyword.substr(0, off).find_first_not_of("STCN") != std::string::npos)
+    fail("\"" + shown(keyword) + "\" is not an OFF keyword (OFF, COFF, NOFF, STOFF, ...; 4OFF and nOFF are not read)");
+  if(words.size() > 1 && words[1] == "BINARY")
+    return false;
+  words.erase(words.begin());
+  if(words.empty() && !next_line())
+    fail("no vertex and face counts");
+  std::error_code ec;
+  const std::size_t bytes = std::size_t(std::filesystem::file_size(path, ec));
+  // every vertex and face takes a line of at least 2 bytes: counts above that are not in the file
+  const std::size_t nv = count(words[0], bytes / 2, "the vertex count");
+  const std::size_t nf = count(words.size() > 1 ? words[1] : "", bytes / 2, "the face count");
+  points.clear();
+  polygons.clear();
+  points.reserve(nv);
+  polygons.reserve(nf);
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    if(!next_line() || words.size() < 3)
+      fail("vertex " + std::to_string(v) + " needs three coordinates");
+    double x[3];
+    for(int k = 0; k < 3; ++k)
+    {
+      if(!is_decimal(words[std::size_t(k)]))
+        fail("coordinate \"" + shown(words[std::size_t(k)]) + "\" of vertex " + std::to_string(v) + " is not a number");
+      x[k] = std::strtod(words[std::size_t(k)].c_str(), nullptr);
+      if(!std::isfinite(x[k]))
+        fail("coordinate \"" + shown(words[std::size_t(k)]) + "\" of vertex " + std::to_string(v) + " is not finite");
+    }
+    points.emplace_back(x[0], x[1], x[2]);
+  }
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    if(!next_line())
+      fail("face " + std::to_string(f) + " is missing (" + std::to_string(nf) + " announced)");
+    const std::size_t size = count(words[0], nv, "the size of a face");
+    if(size < 3 || words.size() < 1 + size)
+      fail("face " + std::to_string(f) + " needs at least 3 vertex indices, and as many as its size says");
+    std::vector<std::size_t> polygon;
+    for(std::size_t k = 1; k <= size; ++k)
+    {
+      polygon.push_back(count(words[k], nv, "a vertex index"));
+      if(polygon.back() == nv)
+        fail("face " + std::to_string(f) + " refers to vertex " + words[k] + ", but the file has " + std::to_string(nv) +
+             " vertices");
+    }
+    polygons.push_back(std::move(polygon));
+  }
+  return true;
+}
+
 /// Reads OFF, OBJ, PLY, STL... into a Surface_mesh whose vertices and faces keep the file's order
 /// (vertex i and face i of the file are Mesh::Vertex_index(i) and Mesh::Face_index(i)).
 /// Refuses, with a clear message, inputs that are not already a valid polygon mesh rather than
 /// repairing them silently (repairs would renumber the faces).
 inline Mesh read_mesh(const std::string& path)
 {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  if(extension == ".ply")
+    check_ply_header(path);
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> polygons;
-  if(!CGAL::IO::read_polygon_soup(path, points, polygons))
+  bool read = extension == ".off" && read_ascii_off(path, points, polygons);
+  try
+  {
+    read = read || CGAL::IO::read_polygon_soup(path, points, polygons);
+  }
+  catch(const std::exception& e) // CGAL's readers throw what their containers throw (a list size of -5, say)
+  {
+    throw std::runtime_error("cannot read " + path + ": not a readable mesh file (" + e.what() + ")");
+  }
+  if(!read)
     throw std::runtime_error("cannot read " + path + ": not a readable mesh file (missing or unreadable file, unknown "
                              "extension, non-numeric or non-finite coordinates, or a face with an invalid vertex "
                              "index)");
+  // CGAL 5.5's OBJ reader keeps faces that refer to vertices the file does not have (found by
+  // fuzzing: the conversion below then reads past the points)
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+    for(std::size_t v : polygons[f])
+      if(v >= points.size())
+        throw std::runtime_error("cannot read " + path + ": face " + std::to_string(f) + " refers to vertex " +
+                                 std::to_string(v) + ", but the file has " + std::to_string(points.size()) + " vertices");
   if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
     throw std::runtime_error(path + " is not a manifold, consistently oriented polygon mesh; "
                                     "repair it first (e.g. CGAL::Polygon_mesh_processing::repair_polygon_soup "
@@ -191,52 +410,6 @@ inline std::string option_value(int argc, char** argv, int& i)
   if(i + 1 >= argc)
     throw Usage_error(std::string(argv[i]) + " needs a value");
   return argv[++i];
-}
-
-/// The digits of `text` from `i` on; advances `i` past them.
-inline std::size_t skip_digits(const std::string& text, std::size_t& i)
-{
-  const std::size_t start = i;
-  while(i < text.size() && text[i] >= '0' && text[i] <= '9')
-    ++i;
-  return i - start;
-}
-
-/// Whether the whole of `text` is -?(D+.?D*|.D+)([eE][-+]?D+)? with D a decimal digit. Scanned
-/// by hand: std::regex matches recursively and overflows the stack on long arguments (found by
-/// fuzzing: a 20 000-digit --scale crashed every program).
-inline bool is_decimal(const std::string& text)
-{
-  std::size_t i = 0;
-  if(i < text.size() && text[i] == '-')
-    ++i;
-  std::size_t digits = skip_digits(text, i);
-  if(i < text.size() && text[i] == '.')
-    digits += skip_digits(text, ++i);
-  if(digits == 0)
-    return false;
-  if(i < text.size() && (text[i] == 'e' || text[i] == 'E'))
-  {
-    ++i;
-    if(i < text.size() && (text[i] == '+' || text[i] == '-'))
-      ++i;
-    if(skip_digits(text, i) == 0)
-      return false;
-  }
-  return i == text.size();
-}
-
-/// Whether the whole of `text` is -?D+.
-inline bool is_integer(const std::string& text)
-{
-  std::size_t i = text.size() > 0 && text[0] == '-' ? 1 : 0;
-  return skip_digits(text, i) > 0 && i == text.size();
-}
-
-/// `text` for a message: at most 40 characters of it.
-inline std::string shown(const std::string& text)
-{
-  return text.size() <= 40 ? text : text.substr(0, 40) + "... (" + std::to_string(text.size()) + " characters)";
 }
 
 /// Parses the whole of `text` as a finite decimal number in [lo, hi], or throws naming the option.

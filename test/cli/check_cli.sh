@@ -84,6 +84,13 @@ LONG_NUMBER="$(printf '1%.0s' $(seq 20000))"
 refuse stripes "$B1K" --scale "$LONG_NUMBER" --output "$O/s.ply"
 refuse stripes "$B1K" --singularity "$LONG_NUMBER:1" --output "$O/s.ply"
 refuse stripes "$B1K" --scale "${LONG_NUMBER}x" --output "$O/s.ply"
+# malformed files the reader once crashed or hung on (found by fuzzing; see malformed/README.md)
+for file in "$HERE"/malformed/*.off "$HERE"/malformed/*.obj "$HERE"/malformed/*.ply; do
+  case "$file" in
+    */colour_765.off) accept stripes "$file" --output "$O/colour.ply" ;;
+    *) refuse stripes "$file" --output "$O/m.ply" ;;
+  esac
+done
 refuse stripes "$WORK/input.off" --output "$WORK/input.off"
 refuse stripes "$DATA/elephant-with-holes.off" --singularity 100:1 --output "$O/e.ply"
 refuse stripes "$DATA/torus.off" --winding 0:100000 --output "$O/t.ply"

@@ -38,8 +38,9 @@ for target in "${TARGETS[@]}"; do
     "$OUT/corpus_$target" "$HERE/corpus/$target" > "$log" 2>&1
   rc=$?
   runs=$(grep -oE "stat::number_of_executed_units: *[0-9]+" "$log" | grep -oE "[0-9]+$" | tail -1)
-  crashes=$(find "$OUT/crashes_$target" -type f | wc -l)
-  summary+=("$target: ${runs:-?} executions in $SECONDS_EACH s, $crashes crash file(s), exit $rc")
+  crashes=$(find "$OUT/crashes_$target" -type f ! -name 'slow-unit-*' | wc -l)
+  slow=$(find "$OUT/crashes_$target" -type f -name 'slow-unit-*' | wc -l)
+  summary+=("$target: ${runs:-?} executions in $SECONDS_EACH s, $crashes crash/timeout/out-of-memory file(s), $slow slow input(s), exit $rc")
   if [ "$rc" -ne 0 ] || [ "$crashes" -ne 0 ]; then
     status=1
     echo "FINDING in $target (see $log and $OUT/crashes_$target):"
