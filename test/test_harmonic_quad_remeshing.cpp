@@ -38,17 +38,20 @@
 #include <CGAL/Surface_design/Harmonic_quad_remesher.h>
 #include <CGAL/Surface_design/harmonic_quad_remeshing.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/curves.h>
+#include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/net_cells.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/odd_faces.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/spectacles.h>
 #include <CGAL/Surface_design/mesh_generators.h>
 #include <CGAL/Surface_design/quad_mesh_quality.h>
 
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -1422,4 +1425,214 @@ TEMPLATE_TEST_CASE("Bad input to harmonic remeshing throws clear exceptions and 
     CHECK_THROWS_AS(remesher.set_constraints(foreign), SD::Invalid_constraints);
     CHECK(remesher.constraints().size() >= 2); // the previous constraints stay
   }
+}
+
+namespace {
+
+// the four generated surfaces of the topology tests
+template <class Mesh>
+Mesh generated_surface(const std::string& name)
+{
+  Mesh mesh;
+  if(name == "genus 2, coarse")
+    // a slab with two holes and square rims, coarse: its saddles come in pairs at one value
+    SD::make_slab(mesh, 5, 3, 0.25, [](std::size_t i, std::size_t j) { return j == 1 && (i == 1 || i == 3); });
+  else if(name == "genus 100")
+    // 10 x 10 holes of 2 x 2 cells through a slab with rounded rims
+    SD::make_slab(mesh, 42, 42, 1. / 42., [](std::size_t i, std::size_t j) { return (i / 2) % 2 == 1 && (j / 2) % 2 == 1; },
+                  3);
+  else if(name == "100 holes")
+    SD::make_grid(mesh, 42, 42, 0.1, [](std::size_t i, std::size_t j) { return (i / 2) % 2 == 1 && (j / 2) % 2 == 1; });
+  else // "obtuse torus": rings closer than the major steps, every other one turned by half a step
+  {
+    SD::make_torus(mesh, 30, 40, 1., 0.4);
+    std::size_t k = 0;
+    for(auto v : vertices(mesh))
+    {
+      const double a = SDI::two_pi / 30. * 0.5 * double((k++ % 40) % 2);
+      const test::Point p = get(CGAL::vertex_point, mesh, v);
+      put(CGAL::vertex_point, mesh, v,
+          test::Point(std::cos(a) * p.x() - std::sin(a) * p.y(), std::sin(a) * p.x() + std::cos(a) * p.y(), p.z()));
+    }
+  }
+  return mesh;
+}
+
+template <class Mesh>
+double largest_angle_degrees(const Mesh& mesh)
+{
+  double largest = 0.;
+  for(auto f : faces(mesh))
+  {
+    std::vector<test::Point> p;
+    for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+      p.push_back(get(CGAL::vertex_point, mesh, v));
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      const auto a = p[(k + 1) % 3] - p[k], b = p[(k + 2) % 3] - p[k];
+      largest = (std::max)(largest, std::acos(a * b / std::sqrt(a.squared_length() * b.squared_length())) * 180. / SDI::pi);
+    }
+  }
+  return largest;
+}
+
+} // namespace
+
+TEMPLATE_TEST_CASE("Generated surfaces keep their topology: genus 2 coarse, genus 100, 100 holes, an obtuse torus",
+                   "[harmonic_quad][remesh][topology]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  struct Case
+  {
+    const char* name;
+    long chi;
+    std::size_t loops;
+    double faces_per_area; // the spacing: h = sqrt(area / this), 0 for the default
+    bool first_net_fails;  // the net as asked came out with another topology (kept as a reproduction)
+  };
+  // genus 2: at h = sqrt(area / 5000) its net with spectacles had genus 3 and was returned as it
+  // was before the check; genus 100: at the default spacing, Euler characteristic -200 with
+  // spectacles (no fall-back took place: a valid mesh of another topology was returned)
+  for(const Case c : {Case{"genus 2, coarse", -2, 0, 5000., true}, Case{"genus 100", -198, 0, 0., true},
+                      Case{"100 holes", -99, 101, 0., false}, Case{"obtuse torus", 0, 0, 0., false}})
+  {
+    INFO(c.name);
+    const Mesh mesh = generated_surface<Mesh>(c.name);
+    CHECK(long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh)) == c.chi);
+    if(std::string(c.name) == "obtuse torus")
+      CHECK(largest_angle_degrees(mesh) > 140.); // (every triangle has an angle of about 145 degrees)
+    const test::Mesh_snapshot before(mesh);
+    Quad_mesh out;
+    SD::Harmonic_quad_remeshing_report r;
+    if(c.faces_per_area > 0.)
+      r = SD::harmonic_quad_remeshing(
+        mesh, out, P::target_edge_length(std::sqrt(CGAL::Polygon_mesh_processing::area(mesh) / c.faces_per_area)));
+    else
+      r = SD::harmonic_quad_remeshing(mesh, out);
+    CHECK(test::Mesh_snapshot(mesh) == before);
+    const SD::Quad_mesh_quality q = SD::quad_mesh_quality(out, mesh);
+    INFO("faces " << q.faces << ", quads " << q.quad_fraction << ", Hausdorff " << q.relative_hausdorff_distance
+                  << ", chi " << q.euler_characteristic << ", loops " << q.boundary_loops << ", fall-backs "
+                  << r.fallbacks.size() << (r.fallbacks.empty() ? "" : ": " + r.fallbacks.front()));
+    CHECK(q.valid);
+    CHECK(q.same_topology);
+    CHECK(q.euler_characteristic == c.chi);
+    CHECK(q.boundary_loops == c.loops);
+    CHECK(q.connected_components == 1);
+    CHECK(r.euler_characteristic == c.chi);
+    CHECK(r.boundary_loops == c.loops);
+    CHECK(r.components == 1);
+    CHECK(q.quad_fraction >= 0.85);
+    CHECK(q.relative_hausdorff_distance <= 0.015);
+    CHECK(r.fallbacks.empty() != c.first_net_fails);
+    if(c.first_net_fails)
+    {
+      REQUIRE(r.fallbacks.size() >= 2);
+      CHECK(r.fallbacks.front().rfind("as asked: ", 0) == 0);
+      CHECK(r.fallbacks.back().rfind("used: ", 0) == 0);
+    }
+  }
+}
+
+TEST_CASE("A net of another topology is never returned: triceratops at 5000 faces had genus 1",
+          "[harmonic_quad][remesh][topology]")
+{
+  // the sphere-like triceratops (slivers down to 0.0002 degrees) at h = sqrt(area / 5000): its
+  // net with spectacles had Euler characteristic 0 and was written as the result
+  const test::Surface_mesh mesh = test::load_mesh<test::Surface_mesh>("triceratops.off");
+  Quad_mesh out;
+  const SD::Harmonic_quad_remeshing_report r = SD::harmonic_quad_remeshing(
+    mesh, out, P::target_edge_length(std::sqrt(CGAL::Polygon_mesh_processing::area(mesh) / 5000.)));
+  const SD::Quad_mesh_quality q = SD::quad_mesh_quality(out, mesh);
+  REQUIRE(!r.fallbacks.empty());
+  INFO(r.fallbacks.front());
+  CHECK(r.fallbacks.front().find("Euler characteristic 0") != std::string::npos);
+  CHECK(r.fallbacks.back() == "used: without spectacles");
+  CHECK(r.spectacles == 0);
+  CHECK(r.skipped_saddles.size() == r.saddles); // every saddle said why it has no spectacles
+  CHECK(q.valid);
+  CHECK(q.same_topology);
+  CHECK(q.euler_characteristic == 2);
+}
+
+TEMPLATE_TEST_CASE("A tube thinner than the spacing: a clear failure after every fall-back, the output untouched",
+                   "[harmonic_quad][remesh][topology]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  // circumference of the tube 0.126, spacing 0.3 (and 0.15 at the finest fall-back): every
+  // isoline is shorter than the spacing, the net is empty (before: an empty mesh, exit 0)
+  Mesh torus;
+  SD::make_torus(torus, 80, 8, 1., 0.02);
+  Quad_mesh out;
+  SD::make_sphere(out, 1);
+  const test::Mesh_snapshot before(out);
+  try
+  {
+    SD::harmonic_quad_remeshing(torus, out, P::target_edge_length(0.3));
+    FAIL("no exception");
+  }
+  catch(const SD::Remeshing_failure& e)
+  {
+    const std::string what = e.what();
+    INFO(what);
+    CHECK(what.find("Euler characteristic 0, 0 boundary loops, 1 component") != std::string::npos);
+    for(const char* attempt : {"as asked:", "the intrinsic Delaunay Laplacian:", "spacing h / sqrt 2:", "spacing h / 2:"})
+      CHECK(what.find(attempt) != std::string::npos);
+    CHECK(what.find("the net is empty") != std::string::npos);
+  }
+  CHECK(test::Mesh_snapshot(out) == before);
+  // the same tube at a spacing below its circumference: a valid torus
+  Quad_mesh fine;
+  SD::harmonic_quad_remeshing(torus, fine, P::target_edge_length(0.05));
+  const SD::Quad_mesh_quality q = SD::quad_mesh_quality(fine, torus);
+  CHECK(q.valid);
+  CHECK(q.same_topology);
+}
+
+TEST_CASE("Topology of a soup, and a slit cell cut by a chord", "[harmonic_quad][topology]")
+{
+  H::Polygon_soup soup;
+  // an annulus: outer square 0..3 (side 4), inner square 4..7 (side 2), both counter-clockwise
+  for(const auto& p : std::vector<std::array<double, 2>>{{-2, -2}, {2, -2}, {2, 2}, {-2, 2}, {-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
+    soup.points.emplace_back(p[0], p[1], 0.);
+  soup.kind.assign(8, 0);
+  const std::vector<std::vector<std::size_t>> annulus{{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  H::Soup_topology t = H::soup_topology(annulus, 8);
+  CHECK(t.euler_characteristic == 0);
+  CHECK(t.boundary_loops == 2);
+  CHECK(t.components == 1);
+  // negative control: the annulus's two boundaries taken as two disks (what a net without a
+  // line across a band makes of a cell) have Euler characteristic 2, not 0
+  t = H::soup_topology(std::vector<std::vector<std::size_t>>{{0, 1, 2, 3}, {7, 6, 5, 4}}, 8);
+  CHECK(t.euler_characteristic == 2);
+  CHECK(t.boundary_loops == 2);
+  CHECK(t.components == 2);
+  // two separate squares, and an unused point
+  t = H::soup_topology(std::vector<std::vector<std::size_t>>{{0, 1, 2, 3}, {4, 5, 6, 7}}, 9);
+  CHECK(t == H::Soup_topology{2, 2, 2});
+  // the annulus as one cell whose walk runs along the single line 0-4 on both sides (a slit):
+  // not a polygon; one chord between the two loops makes two simple faces of the annulus
+  soup.faces = {{0, 4, 7, 6, 5, 4, 0, 1, 2, 3}};
+  CHECK_FALSE(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup.faces));
+  CHECK(H::split_pinched_cells(soup) == 1);
+  REQUIRE(soup.faces.size() == 2);
+  for(const auto& f : soup.faces)
+  {
+    std::set<std::size_t> distinct(f.begin(), f.end());
+    CHECK(distinct.size() == f.size());
+  }
+  CHECK(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup.faces));
+  t = H::soup_topology(soup.faces, 8);
+  CHECK(t.euler_characteristic == 0);
+  CHECK(t.boundary_loops == 2);
+  // the chord joins the closest pair visited once: a corner of the inner square and the outer
+  // corner next to it (distance sqrt 2)
+  std::size_t sides = 0;
+  for(const auto& f : soup.faces)
+    sides += f.size();
+  CHECK(sides == 10 + 2); // the walk's 10 sides, the chord on both faces
+  // a simple face is left alone
+  H::Polygon_soup simple = soup;
+  CHECK(H::split_pinched_cells(simple) == 0);
+  CHECK(simple.faces == soup.faces);
 }

@@ -29,6 +29,9 @@ const char* usage =
   "usage: quad_remesh INPUT --output OUT.off [options]\n"
   "  Remeshes a manifold triangle mesh into a quad mesh: the net of the isolines and gradient\n"
   "  lines of a harmonic function (Dong, Kircher & Garland 2005), its odd faces paired into quads.\n"
+  "  The result has the input's topology (Euler characteristic, boundary loops, components): when\n"
+  "  the net comes out otherwise, the program falls back (without spectacles, the intrinsic\n"
+  "  Delaunay Laplacian, spacing h / sqrt 2, h / 2) and, if none works, fails (exit 1, no file).\n"
   "options:\n"
   "  --min V               vertex V is a minimum of the function (value 0); repeatable\n"
   "  --max V               vertex V is a maximum (value 1); repeatable. Without --min/--max:\n"
@@ -241,9 +244,13 @@ int run(const Options& o, Traits traits)
     for(const auto& [v, why] : r.skipped_saddles)
       std::printf("  saddle at vertex %zu skipped: %s\n", v, why.c_str());
   }
+  for(const auto& f : r.fallbacks)
+    std::printf("fall-back: %s\n", f.c_str());
+  if(r.repaired_cells > 0)
+    std::printf("%zu cells of the net whose boundary ran through a node twice were cut by a chord\n", r.repaired_cells);
   std::printf("net (h = %.4g): %zu levels, %zu isolines (%zu between saddles), %zu gradient lines (%zu started, %zu "
               "stopped, %zu met another), %zu vertices on boundary detail\n",
-              r.target_edge_length, r.levels, r.isolines, r.saddle_levels, r.gradient_lines, r.started_lines,
+              r.spacing, r.levels, r.isolines, r.saddle_levels, r.gradient_lines, r.started_lines,
               r.stopped_lines, r.merged_lines, r.boundary_detail_vertices);
   if(o.all_quads)
     std::printf("quads only: %zu faces with an odd number of sides paired by %zu paths, %zu edges split\n",
@@ -271,6 +278,9 @@ int run(const Options& o, Traits traits)
               100. * q.relative_hausdorff_distance, q.valid ? "valid" : "INVALID", q.euler_characteristic,
               q.boundary_loops, q.connected_components, q.same_topology ? "as" : "NOT as");
 
+  if(!q.valid || !q.same_topology) // (the remesher checks this: a second look before writing)
+    throw std::runtime_error("the quad mesh is not a valid mesh with the input's topology (a bug: please report it "
+                             "with the input mesh); nothing written");
   example::Output_files outputs;
   if(!CGAL::IO::write_polygon_mesh(outputs.stage(o.output), quads, CGAL::parameters::stream_precision(17)))
     throw std::runtime_error("cannot write " + o.output);

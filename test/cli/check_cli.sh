@@ -250,6 +250,20 @@ if ! grep -q "100.0% quads" "$WORK/stdout" ||
   echo "FAILED: quad_remesh mech-holes-shark.off: $(grep -E "quads|Hausdorff" "$WORK/stdout")"
   failures=$((failures + 1))
 fi
+# the topology is kept or the program fails: on the torus (tube circumference about 1.3) at
+# spacing 3 the net was a sphere and at 5 empty, both written with exit 0 before; now spacing 3
+# falls back to h / 2, and at 5 (2.5 at the finest fall-back) it fails with the attempts listed
+accept quad_remesh "$DATA/torus.off" --edge-length 3 --output "$O/coarse_torus.off"
+if ! grep -q "fall-back: used: spacing h / 2" "$WORK/stdout" ||
+   ! grep -q "Euler characteristic 0, 0 boundary loops, 1 components (as the input's)" "$WORK/stdout"; then
+  echo "FAILED: quad_remesh torus.off --edge-length 3: $(grep -E "fall-back|Euler" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
+refuse quad_remesh "$DATA/torus.off" --edge-length 5 --output "$O/q.off"
+if ! grep -q "spacing h / 2: the net is empty" "$WORK/stderr"; then
+  echo "FAILED: quad_remesh torus.off --edge-length 5: $(cat "$WORK/stderr")"
+  failures=$((failures + 1))
+fi
 
 }
 

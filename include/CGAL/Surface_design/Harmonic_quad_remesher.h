@@ -16,6 +16,7 @@
 #include <CGAL/Surface_design/internal/Core/named_parameters.h>
 #include <CGAL/Surface_design/internal/Core/validation.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/harmonic_function.h>
+#include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/net_cells.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/odd_faces.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/quad_net.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/snap.h>
@@ -35,6 +36,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstddef>
 #include <memory>
 #include <stdexcept>
@@ -85,6 +87,9 @@ struct Harmonic_critical_points
 struct Harmonic_quad_remeshing_report
 {
   double target_edge_length = 0.;
+  /// the spacing h of the net that was used: `target_edge_length`, or finer after a fall-back
+  /// (see `fallbacks`)
+  double spacing = 0.;
   std::size_t levels = 0;          ///< isovalues
   std::size_t isolines = 0;        ///< connected isolines in the net (loops and paths)
   std::size_t gradient_lines = 0;  ///< traced gradient-line pieces (isoline to isoline)
@@ -100,6 +105,16 @@ struct Harmonic_quad_remeshing_report
   std::size_t boundary_detail_vertices = 0;
   /// saddles left without spectacles (input vertex index, reason), with `spectacles(true)`
   std::vector<std::pair<std::size_t, std::string>> skipped_saddles;
+  /// cells of the net whose boundary ran through a node twice (a band crossed by a single
+  /// gradient line leaves a slit; two loops of the net touching pinch a cell), each cut by a
+  /// chord between the two parts of its boundary
+  std::size_t repaired_cells = 0;
+  /// the attempts that failed before the one that made the output ("what: why"), then "used:
+  /// what"; empty when the net came out right at once. A net is accepted only as a valid
+  /// polygon mesh with the input's topology; the attempts, in turn: as asked, without
+  /// spectacles, the intrinsic Delaunay Laplacian (when the cotangent one has negative
+  /// weights), spacing h / sqrt 2, spacing h / 2.
+  std::vector<std::string> fallbacks;
   std::size_t odd_faces = 0;        ///< faces of the net with an odd number of sides
   std::size_t odd_face_paths = 0;   ///< with `all_quads(true)`: paths that paired them (or led to the boundary)
   std::size_t split_edges = 0;      ///< with `all_quads(true)`: edges of the net given a vertex
@@ -108,6 +123,10 @@ struct Harmonic_quad_remeshing_report
   std::size_t snapped_vertices = 0; ///< with `feature_snapping(true)`: output vertices moved onto them
   double largest_input_distance = 0.; ///< the largest of those distances, before snapping (0 without it)
   std::size_t vertices = 0, faces = 0; ///< of the output
+  /// of the output, always the input's (checked on the net: a net with another topology is
+  /// never returned)
+  long euler_characteristic = 0;
+  std::size_t boundary_loops = 0, components = 0;
   double harmonic_seconds = 0.;    ///< Laplacian, factorization, solve (when they were done)
   double spectacles_seconds = 0.;  ///< spectacles: curves, insertion into the mesh, re-solve
   double curves_seconds = 0.;      ///< isolines and gradient lines
@@ -193,6 +212,7 @@ public:
     using CGAL::parameters::get_parameter;
     internal::validate_mesh(m_idx, m_vpm);
     m_mesh = internal::harmonic_quad::make_trace_mesh(m_idx, m_vpm);
+    m_topology = internal::harmonic_quad::soup_topology(m_mesh.tri, m_mesh.number_of_vertices());
     m_weights_kind = choose_parameter(get_parameter(np, internal_np::harmonic_weights), Harmonic_weights::cotangent);
     const auto start = Clock::now();
     internal::Intrinsic_triangulation intrinsic(m_idx, m_vpm);
@@ -316,8 +336,10 @@ public:
   }
 
   /// Remeshes into `out` (the new vertices and faces are added to it): a quad mesh (with
-  /// `all_quads(false)`: the quad-dominant net) with the input's topology, consistently oriented
-  /// like the input.
+  /// `all_quads(false)`: the quad-dominant net) with the input's topology (Euler characteristic,
+  /// boundary loops and connected components, checked), consistently oriented like the input.
+  /// When the net of the requested settings comes out wrong, the method falls back to what the
+  /// package has (see `Harmonic_quad_remeshing_report::fallbacks`) and otherwise throws.
   ///
   /// \tparam PolygonMesh a model of `MutableFaceGraph` with an internal point property map
   /// \param np optional named parameters among:
@@ -333,7 +355,7 @@ public:
   ///   Saddles whose spectacles cannot be built (on the boundary, of multiplicity > 1, both
   ///   wedges reaching one isoline, crossing other spectacles) are listed in
   ///   `skipped_saddles` with the reason; when the net with spectacles is not a valid polygon
-  ///   mesh, the net is built without them and all are listed there.
+  ///   mesh with the input's topology, the net is built without them and all are listed there.
   /// - `all_quads` (bool, default true): quads only. The net's faces with an odd number of
   ///   sides (the pentagons where a line ends on an isoline, triangles) are paired by short,
   ///   straight paths across the net (or led to the boundary); every edge a path crosses gets a
@@ -356,7 +378,10 @@ public:
   /// - `vertex_point_map`: of `out`
   /// \throws Invalid_parameter `target_edge_length` is not finite and positive, or so small that
   ///         the net would exceed 10 million vertices; `curvature_adaptation` negative or not finite
-  /// \throws std::logic_error if the net is not a valid polygon mesh (a bug: please report it)
+  /// \throws Remeshing_failure when no attempt (see `Harmonic_quad_remeshing_report::fallbacks`)
+  ///         makes a net that is a valid polygon mesh with the input's topology; `out` is
+  ///         then unchanged. A result with another topology is never returned.
+  /// \throws Linear_solver_failure if a factorization fails
   template <class PolygonMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
   Harmonic_quad_remeshing_report remesh(PolygonMesh& out, const NamedParameters& np = CGAL::parameters::default_values())
   {
@@ -383,90 +408,69 @@ public:
     report.harmonic_seconds = m_setup_seconds + m_solve_seconds;
 
     namespace hq = internal::harmonic_quad;
-    hq::Net_options options;
-    options.edge_length = h;
-    options.quad_poles = choose_parameter(get_parameter(np, internal_np::quad_poles), true);
     const auto critical = hq::critical_points(m_mesh, m_u).first;
     for(const auto& c : critical)
       report.saddles += c.kind == hq::Critical_kind::saddle;
-    // with spectacles: the net of the re-solved function on the mesh refined along them
-    hq::Trace_mesh refined;
-    std::vector<double> refined_u;
-    const hq::Trace_mesh* mesh = &m_mesh;
-    const std::vector<double>* u = &m_u;
-    std::vector<std::size_t> spectacles_saddles; // the saddles given spectacles
-    if(choose_parameter(get_parameter(np, internal_np::spectacles), true) && report.saddles > 0)
+    // what the package has, tried in turn until the net has the input's topology
+    const bool spectacles = choose_parameter(get_parameter(np, internal_np::spectacles), true) && report.saddles > 0;
+    std::vector<Net_attempt> attempts{{spectacles, 1., false, "as asked"}};
+    if(spectacles)
+      attempts.push_back({false, 1., false, "without spectacles"});
+    if(m_weights_kind == Harmonic_weights::cotangent && number_of_negative_weights() > 0)
+      attempts.push_back({false, 1., true, "the intrinsic Delaunay Laplacian"});
+    for(const auto& [scale, name] : {std::make_pair(std::sqrt(0.5), "spacing h / sqrt 2"), std::make_pair(0.5, "spacing h / 2")})
+      if(area / (h * h * scale * scale) <= 1e7)
+        attempts.push_back({false, scale, false, name});
+    Net_settings settings;
+    settings.h = h;
+    settings.adaptation = adaptation;
+    settings.quad_poles = choose_parameter(get_parameter(np, internal_np::quad_poles), true);
+    settings.all_quads = choose_parameter(get_parameter(np, internal_np::all_quads), true);
+    hq::Polygon_soup soup;
+    bool made = false;
+    for(std::size_t k = 0; k < attempts.size() && !made; ++k)
     {
-      const auto start = Clock::now();
-      options.levels = hq::Quad_net_builder(m_mesh, m_u, options).regular_levels();
-      if(insert_spectacles(critical, options, refined, refined_u, spectacles_saddles, report))
+      const Net_attempt& attempt = attempts[k];
+      Harmonic_quad_remeshing_report r = report;
+      std::string why;
+      made = make_net(attempt, critical, settings, soup, r, why);
+      // the times add up over the attempts
+      report.harmonic_seconds = r.harmonic_seconds;
+      report.spectacles_seconds = r.spectacles_seconds;
+      report.curves_seconds = r.curves_seconds;
+      report.meshing_seconds = r.meshing_seconds;
+      report.all_quads_seconds = r.all_quads_seconds;
+      if(made)
       {
-        mesh = &refined;
-        u = &refined_u;
+        r.fallbacks = report.fallbacks;
+        if(k > 0)
+          r.fallbacks.push_back(std::string("used: ") + attempt.what);
+        report = std::move(r);
       }
       else
-        options.levels.clear();
-      report.spectacles_seconds = seconds_since(start);
-    }
-
-    auto start = Clock::now();
-    if(adaptation > 0.)
-      options.spacing_scale = hq::curvature_spacing_scale(*mesh, h, adaptation);
-    auto builder = std::make_unique<hq::Quad_net_builder>(*mesh, *u, options);
-    internal::harmonic_quad::Polygon_soup soup = builder->build();
-    if(!options.spectacles.empty() && !CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup.faces))
-    {
-      // the spectacles did not fit into the net (a case the method leaves open): without them
-      for(std::size_t sp : spectacles_saddles)
-        report.skipped_saddles.emplace_back(sp, "the net around its spectacles is not a valid polygon mesh");
-      report.spectacles = 0;
-      options.spectacles.clear();
-      options.levels.clear();
-      if(adaptation > 0.)
-        options.spacing_scale = hq::curvature_spacing_scale(m_mesh, h, adaptation);
-      builder = std::make_unique<hq::Quad_net_builder>(m_mesh, m_u, options);
-      soup = builder->build();
-    }
-    const auto& s = builder->statistics();
-    report.levels = s.levels;
-    report.isolines = s.isolines;
-    report.gradient_lines = s.gradient_lines;
-    report.stopped_lines = s.stopped_lines;
-    report.started_lines = s.started_lines;
-    report.merged_lines = s.merged_lines;
-    report.saddle_levels = s.saddle_levels;
-    report.spectacles_lines = s.spectacles_lines;
-    report.boundary_detail_vertices = s.boundary_detail_nodes;
-    report.curves_seconds = seconds_since(start);
-
-    start = Clock::now();
-    if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup.faces))
-      throw std::logic_error("CGAL::Surface_design::Harmonic_quad_remesher: the net of isolines and gradient "
-                             "lines is not a valid polygon mesh (please report this with the input mesh)");
-    bool only_quads = true;
-    for(const auto& face : soup.faces)
-    {
-      report.odd_faces += face.size() % 2;
-      only_quads = only_quads && face.size() == 4;
-    }
-    if(choose_parameter(get_parameter(np, internal_np::all_quads), true) && !only_quads)
-    {
-      const auto quads_start = Clock::now();
-      hq::Polygon_soup quads = soup;
-      const hq::Odd_face_statistics pairing = hq::Odd_face_pairing(quads).run();
-      // (kept only when valid: the pairing never breaks a valid mesh, this is a safety net)
-      if(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(quads.faces))
       {
-        soup = std::move(quads);
-        report.odd_face_paths = pairing.paths + pairing.boundary_paths;
-        report.split_edges = pairing.split_edges;
+        report.fallbacks.push_back(std::string(attempt.what) + ": " + why);
+        report.skipped_saddles = r.skipped_saddles;
       }
-      report.all_quads_seconds = seconds_since(quads_start);
+      // a later attempt without spectacles would repeat this one when no spectacles were placed
+      if(!made && attempt.spectacles && r.spectacles == 0 && k + 1 < attempts.size() && !attempts[k + 1].spectacles &&
+         attempts[k + 1].spacing == 1. && !attempts[k + 1].intrinsic)
+        ++k;
     }
+    if(!made)
+    {
+      std::string what = "no net of isolines and gradient lines with the input's topology (" + m_topology.text() +
+                         "); tried";
+      for(const auto& f : report.fallbacks)
+        what += "\n  " + f;
+      throw Remeshing_failure(what);
+    }
+    const auto start = Clock::now();
     if(choose_parameter(get_parameter(np, internal_np::feature_snapping), true))
     {
       const auto snap_start = Clock::now();
-      const hq::Snap_statistics snap = hq::snap_to_far_vertices(soup, m_mesh, h / 4., 2. * h, true);
+      const double spacing = report.spacing;
+      const hq::Snap_statistics snap = hq::snap_to_far_vertices(soup, m_mesh, spacing / 4., 2. * spacing, true);
       report.far_input_vertices = snap.far_vertices;
       report.snapped_vertices = snap.snapped;
       report.largest_input_distance = snap.largest_distance;
@@ -482,12 +486,145 @@ public:
                                                                 CGAL::parameters::default_values(), np);
     report.vertices = soup.points.size();
     report.faces = soup.faces.size();
-    report.meshing_seconds = seconds_since(start);
+    report.euler_characteristic = m_topology.euler_characteristic;
+    report.boundary_loops = m_topology.boundary_loops;
+    report.components = m_topology.components;
+    report.meshing_seconds += seconds_since(start);
     return report;
   }
 
 private:
   using Solver = internal::harmonic_quad::Harmonic_solver<SolverTraits>;
+
+  struct Net_attempt
+  {
+    bool spectacles;
+    double spacing;  // times h
+    bool intrinsic;  // the function of the intrinsic Delaunay Laplacian
+    const char* what;
+  };
+
+  struct Net_settings
+  {
+    double h = 1., adaptation = 0.;
+    bool quad_poles = true, all_quads = true;
+  };
+
+  // One net: the function, spectacles, curves, cells; true when it is a valid polygon mesh
+  // with the input's topology (else `why` says what went wrong). With all quads, the odd faces
+  // are paired (the pairing is kept only when it keeps the mesh valid and its topology).
+  bool make_net(const Net_attempt& attempt,
+                const std::vector<internal::harmonic_quad::Critical_point>& critical, const Net_settings& settings,
+                internal::harmonic_quad::Polygon_soup& soup, Harmonic_quad_remeshing_report& report, std::string& why)
+  {
+    namespace hq = internal::harmonic_quad;
+    using CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh;
+    hq::Net_options options;
+    options.edge_length = settings.h * attempt.spacing;
+    options.quad_poles = settings.quad_poles;
+    report.spacing = options.edge_length;
+    const std::vector<double>* u = &m_u;
+    if(attempt.intrinsic)
+    {
+      const auto start = Clock::now();
+      if(m_intrinsic_u.empty())
+      {
+        internal::Intrinsic_triangulation intrinsic(m_idx, m_vpm);
+        intrinsic.make_delaunay();
+        Solver solver(m_mesh.number_of_vertices(), intrinsic.cotangent_weights(),
+                      internal::new_solver_like(m_solver->traits()));
+        m_intrinsic_u.assign(m_mesh.number_of_vertices(), 0.);
+        for(const auto& [v, value] : m_constraints)
+          m_intrinsic_u[v] = value;
+        solver.factor(m_constrained);
+        solver.solve(m_intrinsic_u);
+      }
+      u = &m_intrinsic_u;
+      report.harmonic_seconds += seconds_since(start);
+    }
+    // with spectacles: the net of the re-solved function on the mesh refined along them
+    hq::Trace_mesh refined;
+    std::vector<double> refined_u;
+    const hq::Trace_mesh* mesh = &m_mesh;
+    std::vector<std::size_t> spectacles_saddles; // the saddles given spectacles
+    report.spectacles = 0;
+    if(attempt.spectacles)
+    {
+      const auto start = Clock::now();
+      options.levels = hq::Quad_net_builder(m_mesh, m_u, options).regular_levels();
+      if(insert_spectacles(critical, options, refined, refined_u, spectacles_saddles, report))
+      {
+        mesh = &refined;
+        u = &refined_u;
+      }
+      else
+        options.levels.clear();
+      report.spectacles_seconds += seconds_since(start);
+    }
+
+    auto start = Clock::now();
+    if(settings.adaptation > 0.)
+      options.spacing_scale = hq::curvature_spacing_scale(*mesh, options.edge_length, settings.adaptation);
+    hq::Quad_net_builder builder(*mesh, *u, options);
+    soup = builder.build();
+    const auto& s = builder.statistics();
+    report.levels = s.levels;
+    report.isolines = s.isolines;
+    report.gradient_lines = s.gradient_lines;
+    report.stopped_lines = s.stopped_lines;
+    report.started_lines = s.started_lines;
+    report.merged_lines = s.merged_lines;
+    report.saddle_levels = s.saddle_levels;
+    report.spectacles_lines = s.spectacles_lines;
+    report.boundary_detail_vertices = s.boundary_detail_nodes;
+    report.curves_seconds += seconds_since(start);
+
+    start = Clock::now();
+    report.repaired_cells = hq::split_pinched_cells(soup);
+    auto failed = [&](const std::string& reason) {
+      why = reason;
+      for(std::size_t sp : spectacles_saddles)
+        report.skipped_saddles.emplace_back(sp, "the net around its spectacles is not a valid polygon mesh "
+                                                "with the input's topology");
+      report.meshing_seconds += seconds_since(start);
+      return false;
+    };
+    if(soup.faces.empty())
+    {
+      char spacing[32];
+      std::snprintf(spacing, sizeof spacing, "%.4g", options.edge_length);
+      return failed(std::string("the net is empty (every isoline was shorter than the spacing ") + spacing + ")");
+    }
+    if(!is_polygon_soup_a_polygon_mesh(soup.faces))
+      return failed("the net is not a valid polygon mesh (a cell of the net could not be made a disk)");
+    const hq::Soup_topology net = hq::soup_topology(soup.faces, soup.points.size());
+    if(net != m_topology)
+      return failed("the net has " + net.text() + " (a cell of the net is not a disk: the curves "
+                    "missed a handle or a hole)");
+    report.odd_faces = 0;
+    bool only_quads = true;
+    for(const auto& face : soup.faces)
+    {
+      report.odd_faces += face.size() % 2;
+      only_quads = only_quads && face.size() == 4;
+    }
+    if(settings.all_quads && !only_quads)
+    {
+      const auto quads_start = Clock::now();
+      hq::Polygon_soup quads = soup;
+      const hq::Odd_face_statistics pairing = hq::Odd_face_pairing(quads).run();
+      // (kept only when valid: the pairing never breaks a valid mesh, this is a safety net)
+      if(is_polygon_soup_a_polygon_mesh(quads.faces) && hq::soup_topology(quads.faces, quads.points.size()) == m_topology)
+      {
+        soup = std::move(quads);
+        report.odd_face_paths = pairing.paths + pairing.boundary_paths;
+        report.split_edges = pairing.split_edges;
+      }
+      report.all_quads_seconds += seconds_since(quads_start);
+    }
+    report.meshing_seconds += seconds_since(start);
+    return true;
+  }
 
   // Nagano & Imai: the spectacles of the saddles (planned on the function and the levels of
   // the net), inserted into a copy of the mesh; the function re-solved there with every
@@ -646,6 +783,7 @@ private:
     }
     m_solver->factor(m_constrained);
     m_solver->solve(m_u);
+    m_intrinsic_u.clear();
     m_solve_seconds = seconds_since(start);
     m_solved = true;
   }
@@ -659,6 +797,8 @@ private:
   std::vector<std::pair<std::size_t, double>> m_constraints;
   std::vector<char> m_constrained;
   std::vector<double> m_u;
+  std::vector<double> m_intrinsic_u; // the intrinsic Delaunay function, when a fall-back needed it
+  internal::harmonic_quad::Soup_topology m_topology; // of the input
   bool m_solved = false;
   double m_setup_seconds = 0., m_solve_seconds = 0.;
 };

@@ -114,6 +114,18 @@ public:
   {}
 };
 
+/// \ingroup PkgSurfaceDesignRef
+/// Thrown when an algorithm cannot produce a result that keeps its promise, for example a
+/// remesher that cannot make a mesh with the input's topology. The message says what was tried
+/// and why each attempt failed. The output mesh is left unchanged.
+class Remeshing_failure : public std::runtime_error
+{
+public:
+  explicit Remeshing_failure(const std::string& what)
+    : std::runtime_error("CGAL::Surface_design: remeshing failure: " + what)
+  {}
+};
+
 } // namespace Surface_design
 } // namespace CGAL
 

@@ -15,8 +15,8 @@ namespace Surface_design {
 
 /// \ingroup PkgHarmonicQuadRemeshingRef
 ///
-/// Remeshes the triangle mesh `tm` into a quad mesh (with `all_quads(false)`: the quad-dominant
-/// net) added to `out`, from the isolines and gradient lines of a harmonic function (see
+/// Remeshes the triangle mesh `tm` into a quad mesh with its topology (with `all_quads(false)`:
+/// the quad-dominant net) added to `out`, from the isolines and gradient lines of a harmonic function (see
 /// `Harmonic_quad_remesher`).
 ///
 /// \param np optional named parameters: those of the `Harmonic_quad_remesher` constructor
@@ -26,8 +26,9 @@ namespace Surface_design {
 ///        `feature_snapping`);
 ///        `out`'s point map is its internal one
 /// \returns the report of `remesh()`; `report.harmonic_seconds` includes building the Laplacian
-/// \throws Invalid_mesh, Invalid_constraints, Invalid_parameter, Linear_solver_failure; `out` is
-///         not modified then
+/// \throws Invalid_mesh, Invalid_constraints, Invalid_parameter, Linear_solver_failure,
+///         Remeshing_failure (no net with the input's topology, see `Harmonic_quad_remesher::remesh()`);
+///         `out` is not modified then
 template <class TriangleMesh, class PolygonMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Harmonic_quad_remeshing_report harmonic_quad_remeshing(const TriangleMesh& tm, PolygonMesh& out,
                                                        const NamedParameters& np = CGAL::parameters::default_values())

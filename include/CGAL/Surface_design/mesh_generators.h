@@ -152,23 +152,15 @@ void make_sphere(PolygonMesh& mesh, std::size_t n)
   generators_detail::soup_to_mesh(pts, tris, mesh);
 }
 
-/// \ingroup PkgSurfaceDesignRef
-/// Planar grid on [0, 1]^2 (z = 0) with `nx` x `ny` square cells, each split into two triangles
-/// (alternating diagonals, so that the mesh has no preferred direction). Cells (i, j) for which
-/// `is_hole(i, j)` is true are left out, which makes holes (boundary loops); vertices are numbered
-/// in the order the cells first use them (row by row), unused ones are dropped. Every interior vertex can be moved
-/// in the plane by up to `jitter` cell sizes along each axis (deterministic pseudo-random), which
-/// makes obtuse triangles and negative cotangent weights. No triangle can flip for jitter < 1/6;
-/// larger values may flip some (check the orientation if it matters).
-/// \pre `nx, ny >= 1`, `0 <= jitter < 0.5`.
-template <class PolygonMesh>
-void make_grid(PolygonMesh& mesh, std::size_t nx, std::size_t ny, double jitter = 0.,
-               const std::function<bool(std::size_t, std::size_t)>& is_hole = {})
+namespace generators_detail {
+
+// the triangles of `make_grid` (see there)
+inline void grid_soup(std::size_t nx, std::size_t ny, double jitter,
+                      const std::function<bool(std::size_t, std::size_t)>& is_hole,
+                      std::vector<std::array<double, 3>>& pts, std::vector<std::array<std::size_t, 3>>& tris)
 {
-  if(nx < 1 || ny < 1 || !(jitter >= 0. && jitter < 0.5))
-    throw std::invalid_argument("make_grid: needs nx, ny >= 1 and 0 <= jitter < 0.5");
-  std::vector<std::array<double, 3>> pts;
-  std::vector<std::array<std::size_t, 3>> tris;
+  pts.clear();
+  tris.clear();
   std::vector<std::size_t> remap((nx + 1) * (ny + 1), std::size_t(-1));
   unsigned long state = 12345u; // linear congruential generator: reproducible on every platform
   auto uniform = [&state]() {
@@ -216,6 +208,123 @@ void make_grid(PolygonMesh& mesh, std::size_t nx, std::size_t ny, double jitter 
         }
       }
   }
+}
+
+} // namespace generators_detail
+
+/// \ingroup PkgSurfaceDesignRef
+/// Planar grid on [0, 1]^2 (z = 0) with `nx` x `ny` square cells, each split into two triangles
+/// (alternating diagonals, so that the mesh has no preferred direction). Cells (i, j) for which
+/// `is_hole(i, j)` is true are left out, which makes holes (boundary loops); vertices are numbered
+/// in the order the cells first use them (row by row), unused ones are dropped. Every interior vertex can be moved
+/// in the plane by up to `jitter` cell sizes along each axis (deterministic pseudo-random), which
+/// makes obtuse triangles and negative cotangent weights. No triangle can flip for jitter < 1/6;
+/// larger values may flip some (check the orientation if it matters).
+/// \pre `nx, ny >= 1`, `0 <= jitter < 0.5`.
+template <class PolygonMesh>
+void make_grid(PolygonMesh& mesh, std::size_t nx, std::size_t ny, double jitter = 0.,
+               const std::function<bool(std::size_t, std::size_t)>& is_hole = {})
+{
+  if(nx < 1 || ny < 1 || !(jitter >= 0. && jitter < 0.5))
+    throw std::invalid_argument("make_grid: needs nx, ny >= 1 and 0 <= jitter < 0.5");
+  std::vector<std::array<double, 3>> pts;
+  std::vector<std::array<std::size_t, 3>> tris;
+  generators_detail::grid_soup(nx, ny, jitter, is_hole, pts, tris);
+  generators_detail::soup_to_mesh(pts, tris, mesh);
+}
+
+/// \ingroup PkgSurfaceDesignRef
+/// The grid of `make_grid` (no jitter) thickened into a closed slab: its top at z = thickness / 2,
+/// a mirrored copy at z = -thickness / 2, and a wall of `wall_segments` rows of triangles along
+/// every boundary loop, straight for one row, else on a half circle of diameter `thickness`
+/// that bulges outwards (into the holes: keep `thickness` below the holes' width). A hole is a group of edge-adjacent hole cells; every hole goes through
+/// the slab, so the surface has genus equal to the number of holes. Its mirror symmetry puts the
+/// saddles of symmetric functions in pairs at one value. Hole cells must not lie on the border
+/// nor meet other hole cells only at a corner (the grid would not be a manifold).
+/// \pre `nx, ny >= 1`, `thickness > 0`, `wall_segments >= 1`.
+template <class PolygonMesh>
+void make_slab(PolygonMesh& mesh, std::size_t nx, std::size_t ny, double thickness,
+               const std::function<bool(std::size_t, std::size_t)>& is_hole = {}, std::size_t wall_segments = 1)
+{
+  if(nx < 1 || ny < 1 || !(thickness > 0. && std::isfinite(thickness)) || wall_segments < 1)
+    throw std::invalid_argument("make_slab: needs nx, ny >= 1, a finite thickness > 0 and wall_segments >= 1");
+  auto hole = [&](std::ptrdiff_t i, std::ptrdiff_t j) {
+    return i >= 0 && j >= 0 && std::size_t(i) < nx && std::size_t(j) < ny && is_hole &&
+           is_hole(std::size_t(i), std::size_t(j));
+  };
+  for(std::ptrdiff_t j = 0; j < std::ptrdiff_t(ny); ++j)
+    for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(nx); ++i)
+      if(hole(i, j) && (i == 0 || j == 0 || i + 1 == std::ptrdiff_t(nx) || j + 1 == std::ptrdiff_t(ny)))
+        throw std::invalid_argument("make_slab: hole cell (" + std::to_string(i) + ", " + std::to_string(j) +
+                                    ") is on the border");
+  for(std::ptrdiff_t j = 1; j < std::ptrdiff_t(ny); ++j)
+    for(std::ptrdiff_t i = 1; i < std::ptrdiff_t(nx); ++i)
+    {
+      // the cells around grid vertex (i, j): holes meeting diagonally make it non-manifold
+      const bool sw = hole(i - 1, j - 1), se = hole(i, j - 1), ne = hole(i, j), nw = hole(i - 1, j);
+      if(sw == ne && se == nw && sw != se)
+        throw std::invalid_argument("make_slab: holes meet diagonally at grid vertex (" + std::to_string(i) + ", " +
+                                    std::to_string(j) + ")");
+    }
+  std::vector<std::array<double, 3>> pts;
+  std::vector<std::array<std::size_t, 3>> tris;
+  generators_detail::grid_soup(nx, ny, 0., is_hole, pts, tris);
+  // the layers z_0 = top, ..., z_wall_segments = bottom; interior vertices only on top and bottom
+  const std::size_t n = pts.size(), top_triangles = tris.size();
+  std::map<std::pair<std::size_t, std::size_t>, int> directed;
+  for(const auto& t : tris)
+    for(int k = 0; k < 3; ++k)
+      ++directed[{t[std::size_t(k)], t[std::size_t((k + 1) % 3)]}];
+  std::vector<std::pair<std::size_t, std::size_t>> boundary; // (a, b): a top triangle has a -> b
+  for(const auto& [e, count] : directed)
+    if(directed.count({e.second, e.first}) == 0)
+      boundary.push_back(e);
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> layer_vertex; // (vertex, layer) -> index
+  // the outward normal (in the plane) at every boundary vertex: the mean of its two edges'
+  std::map<std::size_t, std::array<double, 2>> outward;
+  for(const auto& [a, b] : boundary)
+  {
+    const double dx = pts[b][0] - pts[a][0], dy = pts[b][1] - pts[a][1], l = std::hypot(dx, dy);
+    for(std::size_t v : {a, b})
+    {
+      outward[v][0] += dy / l;
+      outward[v][1] -= dx / l;
+    }
+  }
+  for(auto& [v, o] : outward)
+  {
+    const double l = std::hypot(o[0], o[1]);
+    o = {o[0] / l, o[1] / l};
+  }
+  constexpr double pi = internal::pi;
+  auto at = [&](std::size_t v, std::size_t layer) -> std::size_t {
+    if(layer == 0)
+      return v;
+    if(layer == wall_segments)
+      return n + v;
+    auto [it, inserted] = layer_vertex.emplace(std::make_pair(v, layer), pts.size());
+    if(inserted)
+    {
+      const double angle = pi * double(layer) / double(wall_segments), bulge = 0.5 * thickness * std::sin(angle);
+      pts.push_back({pts[v][0] + bulge * outward[v][0], pts[v][1] + bulge * outward[v][1],
+                     0.5 * thickness * std::cos(angle)});
+    }
+    return it->second;
+  };
+  for(std::size_t v = 0; v < n; ++v)
+    pts.push_back({pts[v][0], pts[v][1], -0.5 * thickness});
+  for(std::size_t v = 0; v < n; ++v)
+    pts[v][2] = 0.5 * thickness;
+  for(std::size_t t = 0; t < top_triangles; ++t)
+    tris.push_back({n + tris[t][2], n + tris[t][1], n + tris[t][0]});
+  for(const auto& [a, b] : boundary)
+    for(std::size_t layer = 0; layer < wall_segments; ++layer)
+    {
+      // the wall quad b_l -> a_l -> a_(l+1) -> b_(l+1) (its edge b -> a is the twin of the top's a -> b)
+      const std::size_t a0 = at(a, layer), b0 = at(b, layer), a1 = at(a, layer + 1), b1 = at(b, layer + 1);
+      tris.push_back({b0, a0, a1});
+      tris.push_back({b0, a1, b1});
+    }
   generators_detail::soup_to_mesh(pts, tris, mesh);
 }
 
