@@ -113,7 +113,8 @@ struct Harmonic_quad_remeshing_report
   /// what"; empty when the net came out right at once. A net is accepted only as a valid
   /// polygon mesh with the input's topology; the attempts, in turn: as asked, without
   /// spectacles, the intrinsic Delaunay Laplacian (when the cotangent one has negative
-  /// weights), spacing h / sqrt 2, spacing h / 2.
+  /// weights), then finer spacings, the one that adds the fewest faces first: h / 2 within 2 h
+  /// of the saddles, h / sqrt 2, h / 2.
   std::vector<std::string> fallbacks;
   std::size_t odd_faces = 0;        ///< faces of the net with an odd number of sides
   std::size_t odd_face_paths = 0;   ///< with `all_quads(true)`: paths that paired them (or led to the boundary)
@@ -413,15 +414,34 @@ public:
       report.saddles += c.kind == hq::Critical_kind::saddle;
     // what the package has, tried in turn until the net has the input's topology
     const bool spectacles = choose_parameter(get_parameter(np, internal_np::spectacles), true) && report.saddles > 0;
-    std::vector<Net_attempt> attempts{{spectacles, 1., false, "as asked"}};
+    std::vector<Net_attempt> attempts{{spectacles, 1., false, false, "as asked"}};
     if(spectacles)
-      attempts.push_back({false, 1., false, "without spectacles"});
+      attempts.push_back({false, 1., false, false, "without spectacles"});
     if(m_weights_kind == Harmonic_weights::cotangent && number_of_negative_weights() > 0)
-      attempts.push_back({false, 1., true, "the intrinsic Delaunay Laplacian"});
+      attempts.push_back({false, 1., true, false, "the intrinsic Delaunay Laplacian"});
+    // finer spacings, the one that adds the fewest faces first: h / 2 near the saddles (a share
+    // a of the area: about 1 + 3 a times the faces), h / sqrt 2 (twice), h / 2 (four times)
+    Net_settings settings;
+    std::vector<std::pair<double, Net_attempt>> finer;
+    if(report.saddles > 0)
+    {
+      std::vector<std::size_t> saddles;
+      for(const auto& c : critical)
+        if(c.kind == hq::Critical_kind::saddle)
+          saddles.push_back(c.vertex);
+      settings.near_saddles = hq::saddle_spacing_scale(m_mesh, saddles, 2. * h, 0.5);
+      double near = 0.;
+      for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
+        near += settings.near_saddles[f] < 1. ? m_mesh.area[f] : 0.;
+      if(area * (1. + 3. * near / area) / (h * h) <= 1e7)
+        finer.push_back({1. + 3. * near / area, {false, 1., false, true, "spacing h / 2 within 2 h of the saddles"}});
+    }
     for(const auto& [scale, name] : {std::make_pair(std::sqrt(0.5), "spacing h / sqrt 2"), std::make_pair(0.5, "spacing h / 2")})
       if(area / (h * h * scale * scale) <= 1e7)
-        attempts.push_back({false, scale, false, name});
-    Net_settings settings;
+        finer.push_back({1. / (scale * scale), {false, scale, false, false, name}});
+    std::stable_sort(finer.begin(), finer.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for(const auto& f : finer)
+      attempts.push_back(f.second);
     settings.h = h;
     settings.adaptation = adaptation;
     settings.quad_poles = choose_parameter(get_parameter(np, internal_np::quad_poles), true);
@@ -454,7 +474,7 @@ public:
       }
       // a later attempt without spectacles would repeat this one when no spectacles were placed
       if(!made && attempt.spectacles && r.spectacles == 0 && k + 1 < attempts.size() && !attempts[k + 1].spectacles &&
-         attempts[k + 1].spacing == 1. && !attempts[k + 1].intrinsic)
+         attempts[k + 1].spacing == 1. && !attempts[k + 1].intrinsic && !attempts[k + 1].near_saddles)
         ++k;
     }
     if(!made)
@@ -501,6 +521,7 @@ private:
     bool spectacles;
     double spacing;  // times h
     bool intrinsic;  // the function of the intrinsic Delaunay Laplacian
+    bool near_saddles; // half the spacing within 2 h of the saddles
     const char* what;
   };
 
@@ -508,6 +529,7 @@ private:
   {
     double h = 1., adaptation = 0.;
     bool quad_poles = true, all_quads = true;
+    std::vector<double> near_saddles; // spacing scale per face: 1/2 within 2 h of a saddle
   };
 
   // One net: the function, spectacles, curves, cells; true when it is a valid polygon mesh
@@ -565,6 +587,15 @@ private:
     auto start = Clock::now();
     if(settings.adaptation > 0.)
       options.spacing_scale = hq::curvature_spacing_scale(*mesh, options.edge_length, settings.adaptation);
+    if(attempt.near_saddles) // (no spectacles: `mesh` is the input)
+    {
+      const std::vector<double>& near = settings.near_saddles;
+      if(options.spacing_scale.empty())
+        options.spacing_scale = near;
+      else
+        for(std::size_t f = 0; f < near.size(); ++f)
+          options.spacing_scale[f] = (std::max)(0.25, options.spacing_scale[f] * near[f]);
+    }
     hq::Quad_net_builder builder(*mesh, *u, options);
     soup = builder.build();
     const auto& s = builder.statistics();

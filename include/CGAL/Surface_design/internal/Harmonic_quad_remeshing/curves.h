@@ -103,17 +103,20 @@ inline double avoid_vertex_values(double c, const std::vector<double>& sorted, d
 inline std::vector<Isoline> extract_isolines(const Trace_mesh& m, const std::vector<double>& u, double c)
 {
   const std::size_t nf = m.number_of_faces();
-  // entry (rising) and exit (falling) local edges of every crossed face
+  // entry (rising) and exit (falling) local edges of every crossed face; a vertex valued c
+  // exactly counts as above (a symbolic perturbation of c downwards), so that a face is crossed
+  // on two edges or on none (with a strict test, a level through a vertex met its faces on one
+  // edge only: the walks below read past the cut table and ended paths inside the surface)
   std::vector<std::pair<signed char, signed char>> cut(nf, {-1, -1});
   for(std::size_t f = 0; f < nf; ++f)
   {
     const auto& t = m.tri[f];
     for(int i = 0; i < 3; ++i)
     {
-      const double a = u[t[i]] - c, b = u[t[(i + 1) % 3]] - c;
-      if(a < 0. && b > 0.)
+      const bool a = u[t[i]] >= c, b = u[t[(i + 1) % 3]] >= c;
+      if(!a && b)
         cut[f].first = static_cast<signed char>(i);
-      else if(a > 0. && b < 0.)
+      else if(a && !b)
         cut[f].second = static_cast<signed char>(i);
     }
   }
@@ -157,11 +160,8 @@ inline std::vector<Isoline> extract_isolines(const Trace_mesh& m, const std::vec
       iso.point.push_back(edge_point(f, cut[f].first));
       iso.point_edge.push_back(m.edge[f][std::size_t(cut[f].first)]);
       const std::size_t next = m.neighbour[f][std::size_t(cut[f].second)];
-      if(next != npos && (done[next] && next != start)) // cannot happen on a manifold mesh
-        break;
-      if(next != npos && (cut[next].first < 0 || cut[next].second < 0))
-        break;
-      if(next == npos)
+      // (`next` is crossed too, and unvisited but for the start of a loop, on a manifold mesh)
+      if(next == npos || (done[next] && next != start))
       {
         iso.point.push_back(edge_point(f, cut[f].second));
         iso.point_edge.push_back(m.edge[f][std::size_t(cut[f].second)]);

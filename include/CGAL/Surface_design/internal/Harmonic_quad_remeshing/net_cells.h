@@ -1,13 +1,15 @@
 // Copyright (c) 2026 The CGAL Surface Design authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The cells of the net as a polygon soup: the topology of a soup, and the repair of cells whose
-// boundary walk visits a node twice (a cell that is not a disk).
+// The cells of the net as a polygon soup: the topology of a soup, the repair of cells whose
+// boundary walk visits a node twice (a cell that is not a disk), and the finer spacing near the
+// saddles that a fall-back uses.
 
 #ifndef CGAL_SURFACE_DESIGN_INTERNAL_HARMONIC_QUAD_REMESHING_NET_CELLS_H
 #define CGAL_SURFACE_DESIGN_INTERNAL_HARMONIC_QUAD_REMESHING_NET_CELLS_H
 
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/quad_net.h>
+#include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/trace_mesh.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -15,6 +17,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <queue>
 #include <set>
 #include <string>
 #include <utility>
@@ -176,6 +179,47 @@ inline std::size_t split_pinched_cells(Polygon_soup& soup)
       ++chords;
     }
   return chords;
+}
+
+/// A spacing scale per face for the fall-back "finer spacing near the saddles": `scale` on the
+/// faces with a corner within `radius` of a saddle (distances along the mesh's edges, from
+/// every saddle at once), 1 elsewhere.
+inline std::vector<double> saddle_spacing_scale(const Trace_mesh& m, const std::vector<std::size_t>& saddles,
+                                                double radius, double scale)
+{
+  const std::size_t nv = m.number_of_vertices();
+  std::vector<double> distance(nv, std::numeric_limits<double>::infinity());
+  using Item = std::pair<double, std::size_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+  for(std::size_t v : saddles)
+  {
+    distance[v] = 0.;
+    queue.emplace(0., v);
+  }
+  while(!queue.empty())
+  {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if(d > distance[v] || d > radius)
+      continue;
+    for(const auto& [f, corner] : m.star[v])
+      for(std::size_t k = 1; k < 3; ++k)
+      {
+        const std::size_t w = m.tri[f][(corner + k) % 3];
+        const double dw = d + (m.point[w] - m.point[v]).norm();
+        if(dw < distance[w])
+        {
+          distance[w] = dw;
+          queue.emplace(dw, w);
+        }
+      }
+  }
+  std::vector<double> out(m.number_of_faces(), 1.);
+  for(std::size_t f = 0; f < out.size(); ++f)
+    for(std::size_t v : m.tri[f])
+      if(distance[v] <= radius)
+        out[f] = scale;
+  return out;
 }
 
 } // namespace harmonic_quad
