@@ -8,6 +8,7 @@
 #ifndef CGAL_SURFACE_DESIGN_INTERNAL_HARMONIC_QUAD_REMESHING_NET_CELLS_H
 #define CGAL_SURFACE_DESIGN_INTERNAL_HARMONIC_QUAD_REMESHING_NET_CELLS_H
 
+#include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/harmonic_function.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/quad_net.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/trace_mesh.h>
 
@@ -17,7 +18,6 @@
 #include <limits>
 #include <map>
 #include <numeric>
-#include <queue>
 #include <set>
 #include <string>
 #include <utility>
@@ -187,33 +187,7 @@ inline std::size_t split_pinched_cells(Polygon_soup& soup)
 inline std::vector<double> saddle_spacing_scale(const Trace_mesh& m, const std::vector<std::size_t>& saddles,
                                                 double radius, double scale)
 {
-  const std::size_t nv = m.number_of_vertices();
-  std::vector<double> distance(nv, std::numeric_limits<double>::infinity());
-  using Item = std::pair<double, std::size_t>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-  for(std::size_t v : saddles)
-  {
-    distance[v] = 0.;
-    queue.emplace(0., v);
-  }
-  while(!queue.empty())
-  {
-    const auto [d, v] = queue.top();
-    queue.pop();
-    if(d > distance[v] || d > radius)
-      continue;
-    for(const auto& [f, corner] : m.star[v])
-      for(std::size_t k = 1; k < 3; ++k)
-      {
-        const std::size_t w = m.tri[f][(corner + k) % 3];
-        const double dw = d + (m.point[w] - m.point[v]).norm();
-        if(dw < distance[w])
-        {
-          distance[w] = dw;
-          queue.emplace(dw, w);
-        }
-      }
-  }
+  const std::vector<double> distance = edge_distances(m, saddles, radius);
   std::vector<double> out(m.number_of_faces(), 1.);
   for(std::size_t f = 0; f < out.size(); ++f)
     for(std::size_t v : m.tri[f])
