@@ -410,8 +410,11 @@ public:
 
     namespace hq = internal::harmonic_quad;
     const auto critical = hq::critical_points(m_mesh, m_u).first;
+    std::vector<std::size_t> saddles;
     for(const auto& c : critical)
-      report.saddles += c.kind == hq::Critical_kind::saddle;
+      if(c.kind == hq::Critical_kind::saddle)
+        saddles.push_back(c.vertex);
+    report.saddles = saddles.size();
     // what the package has, tried in turn until the net has the input's topology
     const bool spectacles = choose_parameter(get_parameter(np, internal_np::spectacles), true) && report.saddles > 0;
     std::vector<Net_attempt> attempts{{spectacles, 1., false, false, "as asked"}};
@@ -423,12 +426,8 @@ public:
     // a of the area: about 1 + 3 a times the faces), h / sqrt 2 (twice), h / 2 (four times)
     Net_settings settings;
     std::vector<std::pair<double, Net_attempt>> finer;
-    if(report.saddles > 0)
+    if(!saddles.empty())
     {
-      std::vector<std::size_t> saddles;
-      for(const auto& c : critical)
-        if(c.kind == hq::Critical_kind::saddle)
-          saddles.push_back(c.vertex);
       settings.near_saddles = hq::saddle_spacing_scale(m_mesh, saddles, 2. * h, 0.5);
       double near = 0.;
       for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
