@@ -5,6 +5,8 @@ is not empty, and parses completely:
 - OFF, OBJ, PLY (ASCII or binary little-endian): the counts of the header are the elements in
   the file, every coordinate is finite, every face has at least 3 vertices, all within range;
 - SVG: well-formed XML whose root is <svg> with at least one drawn element;
+- VTK (legacy ASCII POLYDATA, the pictures' surface files): the counts of POINTS, POLYGONS and
+  POINT_DATA are the values given, every number finite, every polygon's indices within range;
 - PNG: the signature, an IHDR chunk of non-zero size, and an IEND chunk, every chunk CRC correct;
 - TXT, CSV, JSON: non-empty text (JSON: parses).
 usage: check_outputs.py FILE...      (exit 1 with one line per bad file)
@@ -154,6 +156,57 @@ def check_ply(data):
     return counts.get("vertex", 0), counts.get("face", 0)
 
 
+def check_vtk(data):
+    lines = data.decode().splitlines()
+    if len(lines) < 4 or not lines[0].startswith("# vtk DataFile") or lines[2].strip() != "ASCII" \
+            or lines[3].split() != ["DATASET", "POLYDATA"]:
+        raise Bad("no legacy ASCII POLYDATA header")
+    tokens = " ".join(lines[4:]).split()
+    at, nv, polygons = 0, None, 0
+
+    def take(n, what):
+        nonlocal at
+        if at + n > len(tokens):
+            raise Bad(f"{n} values of {what} announced, fewer given")
+        values = tokens[at:at + n]
+        at += n
+        return values
+    while at < len(tokens):
+        key = tokens[at]
+        if key == "POINTS":
+            nv = int(tokens[at + 1])
+            at += 3
+            finite([float(x) for x in take(3 * nv, "POINTS")], "coordinate")
+        elif key == "POLYGONS":
+            polygons, size = int(tokens[at + 1]), int(tokens[at + 2])
+            at += 3
+            values = [int(x) for x in take(size, "POLYGONS")]
+            faces, k = [], 0
+            while k < len(values):
+                faces.append(values[k + 1:k + 1 + values[k]])
+                k += 1 + values[k]
+            if k != size or len(faces) != polygons:
+                raise Bad(f"{polygons} polygons announced, {len(faces)} given")
+            check_faces(faces, nv or 0)
+        elif key == "POINT_DATA":
+            if int(tokens[at + 1]) != nv:
+                raise Bad(f"POINT_DATA {tokens[at + 1]} for {nv} points")
+            at += 2
+        elif key == "SCALARS":
+            at += 4 if tokens[at + 3] == "1" else 3
+            if tokens[at] == "LOOKUP_TABLE":
+                at += 2
+            finite([float(x) for x in take(nv, "SCALARS")], "scalar")
+        elif key == "NORMALS":
+            at += 3
+            finite([float(x) for x in take(3 * nv, "NORMALS")], "normal")
+        else:
+            raise Bad(f"unexpected {key!r}")
+    if nv is None or polygons == 0:
+        raise Bad("no points or no polygons")
+    return nv, polygons
+
+
 def check_svg(data):
     root = ET.fromstring(data)
     if not root.tag.endswith("svg"):
@@ -196,7 +249,7 @@ def check(path):
     if not data:
         raise Bad("empty")
     ext = os.path.splitext(path)[1].lower()
-    checkers = {".off": check_off, ".obj": check_obj, ".ply": check_ply, ".svg": check_svg, ".png": check_png,
+    checkers = {".off": check_off, ".obj": check_obj, ".ply": check_ply, ".svg": check_svg, ".png": check_png, ".vtk": check_vtk,
                 ".txt": check_text, ".csv": check_text, ".json": lambda d: (json.loads(d), 0)}
     if ext not in checkers:
         raise Bad(f"no reader for {ext} files")
@@ -217,6 +270,9 @@ def self_test():
     ply_header = b"ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty double x\nproperty double y\n" \
         b"property double z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
     ply_body = struct.pack("<9d", 0, 0, 0, 1, 0, 0, 0, 1, 0) + struct.pack("<B3i", 3, 0, 1, 2)
+    vtk = b"# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0\n1 0 0\n0 1 0\n" \
+        b"POLYGONS 1 4\n3 0 1 2\nPOINT_DATA 3\nSCALARS z float 1\nLOOKUP_TABLE default\n0\n1\n2\n" \
+        b"NORMALS normals float\n0 0 1\n0 0 1\n0 0 1\n"
     good = {"a.off": b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
             "b.off": b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 255 0 0\n",
             "a.obj": b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
@@ -224,7 +280,8 @@ def self_test():
             "b.ply": b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
                      b"element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
             "a.svg": b"<svg xmlns='http://www.w3.org/2000/svg'><path d='M0 0L1 1'/></svg>",
-            "a.png": png}
+            "a.png": png,
+            "a.vtk": vtk}
     bad = {"empty.off": b"",
            "truncated.off": b"OFF\n3 1 0\n0 0 0\n1 0 0\n",
            "nan.off": b"OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n",
@@ -236,6 +293,9 @@ def self_test():
            "blank.svg": b"<svg xmlns='http://www.w3.org/2000/svg'></svg>",
            "cut.png": png[:-12],
            "crc.png": png[:20] + bytes([png[20] ^ 1]) + png[21:],
+           "range.vtk": vtk.replace(b"3 0 1 2", b"3 0 1 3"),
+           "short.vtk": vtk[:-6],
+           "nan.vtk": vtk.replace(b"1 0 0", b"nan 0 0"),
            "a.xyz": b"1 2 3\n"}
     failures = 0
     with tempfile.TemporaryDirectory() as folder:
