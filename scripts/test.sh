@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs the whole test suite.
-#   bash scripts/test.sh              Release build (warnings are errors), all tests
+#   bash scripts/test.sh              Release build (warnings are errors; the test programs at -O1,
+#                                     see test/CMakeLists.txt), all tests
 #   bash scripts/test.sh --sanitize   the same tests and the programs (command lines, editor server)
-#                                     under AddressSanitizer + UBSan (-O1, line tables only (-g1: enough
-#                                     for stack traces, faster to build), assertions on)
+#                                     under AddressSanitizer + UBSan (-O0, the long-running programs
+#                                     at -O1, see CMakeLists.txt; line tables only (-g1); assertions on)
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 install_packages "${BUILD_PACKAGES[@]}" "${EDITOR_PACKAGES[@]}" python3 chromium
