@@ -1,12 +1,14 @@
 #!/usr/bin/env python3
 # Copyright (c) 2026 The CGAL Surface Design authors.
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Writes the two generated design meshes of data/ (standard library only, deterministic):
+"""Writes the three generated design meshes of data/ (standard library only, deterministic):
 
 - egg_1k.off: an icosphere (icosahedron, 4-1 subdivided 3 times: 642 vertices, 1280 faces)
   stretched along z by 1.35, its sections widened by (1 + 0.18 z): an egg, blunt end up.
 - pebble_1k.off: the same icosphere as an ellipsoid of half-axes 1.2, 0.8, 0.5 twisted about
   its long (x) axis by 0.9 rad per unit length: a twisted pebble.
+- pebble_320.off: the same pebble from the icosphere one level coarser (162 vertices, 320 faces),
+  the lighter input of the developability example under the sanitizers.
 
 Usage: python3 scripts/make_design_meshes.py [OUTPUT_FOLDER]   (default: data/)
 """
@@ -71,6 +73,9 @@ def main():
               "egg: icosphere (3 levels) stretched 1.35 along z, sections widened by 1 + 0.18 z")
     write_off(os.path.join(out, "pebble_1k.off"), [pebble(p) for p in points], faces,
               "twisted pebble: icosphere (3 levels), ellipsoid 1.2 x 0.8 x 0.5 twisted 0.9 rad per unit about x")
+    points, faces = icosphere(2)
+    write_off(os.path.join(out, "pebble_320.off"), [pebble(p) for p in points], faces,
+              "twisted pebble: icosphere (2 levels), ellipsoid 1.2 x 0.8 x 0.5 twisted 0.9 rad per unit about x")
 
 
 if __name__ == "__main__":

@@ -10,7 +10,8 @@
 //   length error, self-overlapping pieces (and polygon_self_intersects(),
 //   compute_overlap_splitting_cut());
 // - quad_mesh_quality(): faces by sides, irregular vertices, T-junctions, corner angles, edge
-//   lengths, topology, validity, Hausdorff distance; count_non_quads_near();
+//   lengths, topology, validity, Hausdorff distance (and the certified distance itself,
+//   internal::bounded_hausdorff_distance()); count_non_quads_near();
 // - developability_metrics(): lambda, hinge shares, angle defects, seams, minimum angle,
 //   distances to a reference;
 // - singularity indices: direction_field_singularities(), stripe_singularities(),
@@ -29,6 +30,7 @@
 #include <CGAL/Surface_design/field_aligned_parameterization.h>
 #include <CGAL/Surface_design/flattening_distortion.h>
 #include <CGAL/Surface_design/internal/Core/cut_mesh.h>
+#include <CGAL/Surface_design/internal/Core/hausdorff_distance.h>
 #include <CGAL/Surface_design/internal/Core/topology.h>
 #include <CGAL/Surface_design/internal/Flattening/bff.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/harmonic_function.h>
@@ -37,6 +39,7 @@
 #include <CGAL/Surface_design/overlap_splitting_cut.h>
 #include <CGAL/Surface_design/quad_mesh_quality.h>
 
+#include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
 #include <boost/property_map/property_map.hpp>
@@ -45,6 +48,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <string>
@@ -448,6 +452,117 @@ TEMPLATE_TEST_CASE("Control: corner angles, Hausdorff distance and topology of q
     CHECK(q.valid);
     CHECK(q.connected_components == 1);
     CHECK(!q.same_topology);
+  }
+}
+
+TEMPLATE_TEST_CASE("Control: the certified Hausdorff distance brackets the exact one, also inside a triangle",
+                   "[oracle][quad_quality]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  const double error = 1e-3;
+  SECTION("a unit square and four corner triangles of it: the farthest point lies inside a triangle")
+  {
+    // A is the square (two triangles), B four triangles of different sizes at its corners, inside
+    // it: h(B, A) = 0, and h(A, B) is reached at an interior point, where no corner of A is (every
+    // corner of A lies on B). The exact value is brute-forced on a 201 x 201 grid: with spacing
+    // g it lies in [s, s + g / sqrt(2)] (the distance is 1-Lipschitz).
+    Soup_points points;
+    Soup_triangles triangles;
+    square_soup(points, triangles);
+    const Mesh square = from_soup<Mesh>(points, triangles);
+    const std::array<std::array<double, 3>, 4> corner = {{{0., 0., 0.1}, {1., 0., 0.2}, {1., 1., 0.05}, {0., 1., 0.3}}};
+    Soup_points b_points;
+    Soup_triangles b_triangles;
+    for(const auto& c : corner)
+    {
+      const double sx = c[0] > 0.5 ? -1. : 1., sy = c[1] > 0.5 ? -1. : 1., d = c[2];
+      const std::size_t k = b_points.size();
+      b_points.push_back({c[0], c[1], 0.});
+      b_points.push_back({c[0] + sx * d, c[1], 0.});
+      b_points.push_back({c[0], c[1] + sy * d, 0.});
+      if(sx * sy > 0.)
+        b_triangles.push_back({k, k + 1, k + 2});
+      else
+        b_triangles.push_back({k, k + 2, k + 1});
+    }
+    const Mesh pieces = from_soup<Mesh>(b_points, b_triangles);
+    std::vector<SDI::Triangle_soup::Point> bp;
+    for(const auto& p : b_points)
+      bp.emplace_back(p[0], p[1], p[2]);
+    const int n = 200;
+    double s = 0.;
+    for(int i = 0; i <= n; ++i)
+      for(int j = 0; j <= n; ++j)
+      {
+        const SDI::Triangle_soup::Point p(double(i) / n, double(j) / n, 0.);
+        double d = std::numeric_limits<double>::infinity();
+        for(const auto& t : b_triangles)
+          d = (std::min)(d, std::sqrt(CGAL::squared_distance(p, SDI::hausdorff_internal::Triangle(bp[t[0]], bp[t[1]], bp[t[2]]))));
+        s = (std::max)(s, d);
+      }
+    const double slack = 1. / (n * std::sqrt(2.)) + 1e-12;
+    const SDI::Hausdorff_bounds h = SDI::bounded_hausdorff_distance(
+      SDI::fanned_triangle_soup(square, get(CGAL::vertex_point, square)),
+      SDI::fanned_triangle_soup(pieces, get(CGAL::vertex_point, pieces)), error);
+    INFO("brute force " << s << ", bounds [" << h.lower << ", " << h.upper << "]");
+    CHECK(s > 0.5); // far from every corner of A: the refinement found it
+    CHECK(h.lower <= s + slack);
+    CHECK(h.upper >= s - 1e-12);
+    CHECK(h.upper - h.lower <= error);
+    CHECK(h.lower > s - error - slack);
+    // through quad_mesh_quality (relative to B's bounding-box diagonal, sqrt(2))
+    const SD::Quad_mesh_quality q =
+      SD::quad_mesh_quality(square, pieces, CGAL::parameters::default_values(), P::hausdorff_error_bound(error));
+    CHECK(q.hausdorff_distance >= s - 1e-12);
+    CHECK(q.hausdorff_distance <= s + slack + error * std::sqrt(2.));
+  }
+  SECTION("a grid with one vertex raised by 0.3: the distance is 0.3 both ways round")
+  {
+    // every point of the flat grid lies at most 0.3 below the bumped one, and the raised vertex
+    // lies 0.3 above the flat grid (its foot is inside the grid)
+    Mesh flat, bumped;
+    SD::make_grid(flat, 6, 6);
+    SD::make_grid(bumped, 6, 6);
+    auto vpm = get(CGAL::vertex_point, bumped);
+    std::size_t raised = 0;
+    for(auto v : vertices(bumped))
+    {
+      const auto p = get(vpm, v);
+      if(std::abs(p.x() - 0.5) < 1e-9 && std::abs(p.y() - 0.5) < 1e-9)
+      {
+        put(vpm, v, test::Point(p.x(), p.y(), 0.3));
+        ++raised;
+      }
+    }
+    REQUIRE(raised == 1);
+    for(int swap = 0; swap < 2; ++swap)
+    {
+      const Mesh& a = swap ? bumped : flat;
+      const Mesh& b = swap ? flat : bumped;
+      const SDI::Hausdorff_bounds h = SDI::bounded_hausdorff_distance(
+        SDI::fanned_triangle_soup(a, get(CGAL::vertex_point, a)), SDI::fanned_triangle_soup(b, get(CGAL::vertex_point, b)), error);
+      CHECK(h.lower == Approx(0.3).epsilon(1e-12));
+      CHECK(h.upper >= 0.3);
+      CHECK(h.upper <= 0.3 + error);
+    }
+  }
+  SECTION("two spheres of different resolutions: CGAL's bounded-error distance within the error of the bounds")
+  {
+    // an independent implementation (Polygon Mesh Processing), whose estimate lies within its
+    // error bound of the exact value
+    Mesh coarse, fine;
+    SD::make_sphere(coarse, 2);
+    SD::make_sphere(fine, 5);
+    const SDI::Hausdorff_bounds h = SDI::bounded_hausdorff_distance(
+      SDI::fanned_triangle_soup(coarse, get(CGAL::vertex_point, coarse)),
+      SDI::fanned_triangle_soup(fine, get(CGAL::vertex_point, fine)), error);
+    const double cgal = CGAL::Polygon_mesh_processing::bounded_error_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(
+      coarse, fine, error);
+    INFO("CGAL " << cgal << ", bounds [" << h.lower << ", " << h.upper << "]");
+    CHECK(h.lower > 0.01); // the coarse sphere's flat faces sink well inside the fine one
+    CHECK(h.upper - h.lower <= error);
+    CHECK(cgal >= h.lower - error);
+    CHECK(cgal <= h.upper + error);
   }
 }
 

@@ -15,9 +15,9 @@ namespace P = CGAL::Surface_design::parameters;
 
 int main(int argc, char** argv)
 {
-  const std::string data = argc > 1 ? argv[1] : "data";
+  const std::string file = argc > 1 ? argv[1] : "data/pebble_1k.off";
   Mesh mesh;
-  if(!CGAL::IO::read_polygon_mesh(data + "/pebble_1k.off", mesh))
+  if(!CGAL::IO::read_polygon_mesh(file, mesh))
     return 1;
   const Mesh input = mesh;
 
