@@ -34,7 +34,7 @@
 #include <system_error>
 #include <vector>
 
-#include "../examples/common/configured_paths.h"
+#include "../examples/Programs/common/configured_paths.h"
 
 namespace benchmark {
 
@@ -209,7 +209,7 @@ inline bool parse_mesh_source(const std::string& spec, Mesh_source& source, std:
 /// set, else the folder configured in CMake.
 inline std::string shared_mesh_dir()
 {
-  return example::configured_path("CGAL_SURFACE_DESIGN_SHARED_MESH_DIR");
+  return program::configured_path("CGAL_SURFACE_DESIGN_SHARED_MESH_DIR");
 }
 
 namespace mesh_sources_detail {
@@ -303,7 +303,7 @@ inline Load_status load_mesh(const Mesh_source& source, Mesh& mesh, std::string&
   else
   {
     const bool shared = source.origin == Mesh_origin::shared;
-    const std::string dir = shared ? shared_mesh_dir() : example::configured_path("CGAL_SURFACE_DESIGN_DATA_DIR");
+    const std::string dir = shared ? shared_mesh_dir() : program::configured_path("CGAL_SURFACE_DESIGN_DATA_DIR");
     const std::string path = dir + "/" + source.file;
     // messages show the paths without "..", which the OS resolves (through symlinks) when opening
     auto shown = [](const std::string& p) { return fs::path(p).lexically_normal().string(); };

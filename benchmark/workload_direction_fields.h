@@ -34,7 +34,7 @@ template <class SolverTraits>
 void run_smoothest(const Mesh& mesh, Run& run)
 {
   std::vector<Kernel::Vector_3> field(num_vertices(mesh));
-  SD::Smoothest_direction_field_info info;
+  SD::Smoothest_direction_field_result info;
   run.phase("full", [&] {
     info = SD::smoothest_direction_field(mesh, CGAL::make_property_map(field),
                                          SD::parameters::sparse_linear_solver(SolverTraits()));

@@ -5,7 +5,7 @@
 
 #include "workload_editor.h"
 
-#include "../examples/Editor/editor_session.h"
+#include "../examples/Programs/Editor/editor_session.h"
 
 #include <set>
 #include <string>

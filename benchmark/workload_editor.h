@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The CGAL Surface Design authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Workload `editor`: the server side of the stripe editor (examples/Editor), edit by edit, as the
+// Workload `editor`: the server side of the stripe editor (examples/Programs/Editor), edit by edit, as the
 // HTTP handler runs it: parse the JSON request, change the singularities, re-solve (one
 // back-substitution), write the per-corner state. Compiled when nlohmann-json is available.
 

@@ -157,7 +157,7 @@ void run_flatten_split(const Mesh& mesh, Run& run)
       auto uv = pieces.add_property_map<Mesh::Vertex_index, Uv>("v:uv").first;
       SD::boundary_first_flattening(pieces, uv, CGAL::parameters::sparse_linear_solver(SolverTraits()));
       std::vector<Mesh::Edge_index> cut;
-      const SD::Overlap_splitting_report r = SD::compute_overlap_splitting_cut(pieces, uv, std::back_inserter(cut));
+      const SD::Overlap_splitting_result r = SD::compute_overlap_splitting_cut(pieces, uv, std::back_inserter(cut));
       overlapping = r.overlapping_pieces;
       if(r.split_pieces == 0 || rounds == 64)
         break;

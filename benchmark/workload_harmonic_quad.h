@@ -34,7 +34,7 @@ void run_harmonic_quad(const Mesh& mesh, Run& run, CGAL::Surface_design::Harmoni
     remesher->harmonic_function();
   });
   Mesh out;
-  const SD::Harmonic_quad_remeshing_report r =
+  const SD::Harmonic_quad_remeshing_result r =
     remesher->remesh(out, SD::parameters::spectacles(
                             spectacles, SD::parameters::all_quads(
                                           all_quads, SD::parameters::curvature_adaptation(curvature_adaptation))));

@@ -9,7 +9,7 @@
 
 #include "harness.h"
 
-#include <CGAL/Surface_design/internal/Core/Factored_system.h>
+#include <CGAL/Surface_design/internal/Solvers/Factored_system.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/Core/dec.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>

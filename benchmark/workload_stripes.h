@@ -253,7 +253,7 @@ std::size_t field_then_stripes(const Mesh& mesh, bool shared, std::vector<Kernel
     else
       f();
   };
-  SD::Smoothest_direction_field_info info;
+  SD::Smoothest_direction_field_result info;
   timed("field", [&] {
     info = SD::smoothest_direction_field(mesh, CGAL::make_property_map(field),
                                          SD::parameters::sparse_linear_solver(field_traits));

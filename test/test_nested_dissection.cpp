@@ -13,8 +13,8 @@
 #include <CGAL/Surface_design/nested_dissection_ordering.h>
 #include <CGAL/Surface_design/supernodal_cholesky.h>
 #include <CGAL/Surface_design/internal/Core/dec.h>
-#include <CGAL/Surface_design/internal/Core/Factored_system.h>
-#include <CGAL/Surface_design/internal/Core/Hermitian_system.h>
+#include <CGAL/Surface_design/internal/Solvers/Factored_system.h>
+#include <CGAL/Surface_design/internal/Solvers/Hermitian_system.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 

@@ -1,12 +1,12 @@
 // Copyright (c) 2026 The CGAL Surface Design authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The nonsmooth first-order minimizer (internal/Core/Lbfgs_minimizer.h): convergence on smooth
+// The nonsmooth first-order minimizer (internal/Solvers/Lbfgs_minimizer.h): convergence on smooth
 // (Rosenbrock) and nonsmooth (|x| + x^2, max of quadratics) problems with known minimizers, the
 // line-search conditions of every accepted step, the state API (step, reset), the stopping rules,
 // NaN regions, determinism. Counts are printed for the record (`test_optimizer -s` shows them).
 
-#include <CGAL/Surface_design/internal/Core/Lbfgs_minimizer.h>
+#include <CGAL/Surface_design/internal/Solvers/Lbfgs_minimizer.h>
 
 #include <catch2/catch.hpp>
 

@@ -9,7 +9,7 @@
 #include <test_support.h>
 
 #include <CGAL/Surface_design/internal/Core/dec.h>
-#include <CGAL/Surface_design/internal/Core/Factored_system.h>
+#include <CGAL/Surface_design/internal/Solvers/Factored_system.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/solver_traits.h>
@@ -103,7 +103,8 @@ TEST_CASE("The factorization is reused: later solves do not refactor", "[solver]
 
 #if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
 #define SD_SOLVER_TYPES                                                                                               \
-  SD::Default_solver_traits, SD::Simplicial_ldlt_solver_traits, SD::Supernodal_solver_traits, SD::Cholmod_solver_traits
+  SD::Default_solver_traits, SD::Simplicial_ldlt_solver_traits, SD::Supernodal_solver_traits, SD::Cholmod_solver_traits, \
+    SD::Cholmod_nested_dissection_solver_traits
 #else
 #define SD_SOLVER_TYPES SD::Default_solver_traits, SD::Simplicial_ldlt_solver_traits, SD::Supernodal_solver_traits
 #endif
@@ -228,7 +229,7 @@ TEST_CASE("Default solver: the supernodal factorization from 20k unknowns on, by
   SD::Default_solver_traits traits;
   CHECK(traits.solver().size_threshold() == 20000);
   CHECK(traits.solver().info() == Eigen::InvalidInput);     // nothing analysed yet
-  CHECK_THROWS_AS(traits.solver().set_size_threshold(-1), std::invalid_argument);
+  CHECK_THROWS_AS(traits.solver().set_size_threshold(-1), SD::Invalid_parameter);
   CHECK(traits.solver().size_threshold() == 20000);
 }
 
@@ -274,6 +275,41 @@ TEST_CASE("Default solver: Hermitian systems in complex arithmetic with both fac
     traits.solver().set_size_threshold(threshold);
     test::require_hermitian_system_solution<SD::Default_solver_traits>(h, b, reference, traits);
   }
+}
+
+TEST_CASE("CHOLMOD with the library's nested dissection: the order given, the same solutions, Hermitian too", "[solver]")
+{
+#if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
+  const test::Surface_mesh mesh = test::load_mesh<test::Surface_mesh>("kitten.off");
+  const SDI::Sparse_matrix A = screened_laplacian(mesh, 1e-2);
+  const std::vector<Eigen::VectorXd> rhs{random_vector(A.rows(), 1), random_vector(A.rows(), 2)};
+  const auto nd = factor_and_solve<SD::Cholmod_nested_dissection_solver_traits>(A, rhs);
+  const auto reference = factor_and_solve<SD::Default_solver_traits>(A, rhs);
+  for(std::size_t k = 0; k < rhs.size(); ++k)
+    REQUIRE((nd[k] - reference[k]).norm() <= 1e-10 * reference[k].norm());
+  // CHOLMOD analysed with the order given, and that order is the nested dissection's: its factor
+  // has exactly the nonzeros of SimplicialLDLT's with Nested_dissection_ordering (CHOLMOD only
+  // postorders the order it is given, which keeps the fill), not those of AMD's
+  SD::Cholmod_nested_dissection_llt<SDI::Sparse_matrix> given;
+  CHECK(given.ordering_used() == -1);
+  given.compute(A);
+  REQUIRE(given.info() == Eigen::Success);
+  CHECK(given.ordering_used() == CHOLMOD_GIVEN);
+  const Eigen::SimplicialLDLT<SDI::Sparse_matrix, Eigen::Lower, SD::Nested_dissection_ordering<int>> nd_ldlt(A);
+  const Eigen::SimplicialLDLT<SDI::Sparse_matrix> amd_ldlt(A);
+  const double strictly_lower = given.cholmod().lnz - double(A.rows());
+  INFO("strictly lower nnz(L): CHOLMOD given the nested dissection " << strictly_lower << ", SimplicialLDLT with it "
+       << nd_ldlt.matrixL().nestedExpression().nonZeros() << ", with AMD " << amd_ldlt.matrixL().nestedExpression().nonZeros());
+  CHECK(strictly_lower == double(nd_ldlt.matrixL().nestedExpression().nonZeros()));
+  CHECK(strictly_lower != double(amd_ldlt.matrixL().nestedExpression().nonZeros()));
+  // a Hermitian system in complex arithmetic with the same order
+  const test::Complex_matrix h = test::magnetic_laplacian(screened_laplacian(mesh, 1e-2));
+  const Eigen::VectorXcd b = test::complex_test_vector(h.rows(), 5);
+  const Eigen::VectorXcd x = Eigen::SimplicialLDLT<test::Complex_matrix>(h).solve(b);
+  test::require_hermitian_system_solution<SD::Cholmod_nested_dissection_solver_traits>(h, b, x);
+#else
+  SD_CHOLMOD_UNAVAILABLE("CHOLMOD with the nested dissection");
+#endif
 }
 
 TEST_CASE("Default solver: indefinite and singular systems fail with both factorizations", "[solver]")

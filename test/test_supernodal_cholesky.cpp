@@ -15,8 +15,8 @@
 #include <CGAL/Surface_design/Field_aligned_parameterizer.h>
 #include <CGAL/Surface_design/supernodal_cholesky.h>
 #include <CGAL/Surface_design/Trivial_connection.h>
-#include <CGAL/Surface_design/internal/Core/Factored_system.h>
-#include <CGAL/Surface_design/internal/Core/Hermitian_system.h>
+#include <CGAL/Surface_design/internal/Solvers/Factored_system.h>
+#include <CGAL/Surface_design/internal/Solvers/Hermitian_system.h>
 
 #include <Eigen/OrderingMethods>
 #include <Eigen/SparseCholesky>

@@ -9,7 +9,7 @@
 #define CGAL_SURFACE_DESIGN_TEST_SPARSE_TEST_MATRICES_H
 
 #include <CGAL/Surface_design/internal/Core/dec.h>
-#include <CGAL/Surface_design/internal/Core/Hermitian_system.h>
+#include <CGAL/Surface_design/internal/Solvers/Hermitian_system.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 

@@ -18,7 +18,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "../../examples/common/configured_paths.h"
+#include "../../examples/Programs/common/configured_paths.h"
 
 #include <array>
 #include <cmath>
@@ -117,7 +117,7 @@ template <class Mesh>
 Mesh from_soup(const Soup_points& points, const Soup_triangles& triangles)
 {
   Mesh mesh;
-  CGAL::Surface_design::generators_detail::soup_to_mesh(points, triangles, mesh);
+  CGAL::Surface_design::internal::soup_to_mesh(points, triangles, mesh);
   REQUIRE(CGAL::is_valid_polygon_mesh(mesh));
   REQUIRE(num_faces(mesh) == triangles.size());
   return mesh;
@@ -165,7 +165,7 @@ using Vpm = typename boost::property_map<Mesh, CGAL::vertex_point_t>::const_type
 /// beside the test program, or the environment variable CGAL_SURFACE_DESIGN_DATA_DIR).
 inline std::string data_path(const std::string& name)
 {
-  const std::string dir = example::configured_path("CGAL_SURFACE_DESIGN_DATA_DIR");
+  const std::string dir = program::configured_path("CGAL_SURFACE_DESIGN_DATA_DIR");
   if(dir.empty())
     throw std::runtime_error("the folder of the bundled meshes is unknown: set CGAL_SURFACE_DESIGN_DATA_DIR "
                              "(CMake writes it to configured_paths.txt beside the test programs)");
@@ -176,7 +176,7 @@ inline std::string data_path(const std::string& name)
 /// nothing when that folder is absent.
 inline std::optional<std::string> shared_mesh_path(const std::string& name)
 {
-  const std::string path = example::configured_path("CGAL_SURFACE_DESIGN_SHARED_MESH_DIR") + "/" + name;
+  const std::string path = program::configured_path("CGAL_SURFACE_DESIGN_SHARED_MESH_DIR") + "/" + name;
   if(std::ifstream(path).good())
     return path;
   return std::nullopt;

@@ -7,6 +7,7 @@
 #define CGAL_SURFACE_DESIGN_INTERNAL_CORE_DEC_H
 
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Solvers/sparse_types.h>
 
 #include <Eigen/Sparse>
 
@@ -19,7 +20,6 @@ namespace CGAL {
 namespace Surface_design {
 namespace internal {
 
-using Sparse_matrix = Eigen::SparseMatrix<double>;
 using Triplet = Eigen::Triplet<double>;
 
 // Orientation conventions (see Mesh_indices): edge e runs from its endpoint of smaller vertex

@@ -8,7 +8,7 @@
 #define CGAL_SURFACE_DESIGN_INTERNAL_CORE_NAMED_PARAMETERS_H
 
 #include <CGAL/Surface_design/exceptions.h>
-#include <CGAL/Surface_design/solver_traits.h>
+#include <CGAL/Surface_design/internal/Solvers/solver_traits.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>

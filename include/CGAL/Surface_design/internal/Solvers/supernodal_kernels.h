@@ -24,11 +24,11 @@
 // roots are kept aside for the sequential top of the tree), and the large fronts of the top
 // separators by blocks of rows or columns in parallel.
 
-#ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_SUPERNODAL_CHOLESKY_H
-#define CGAL_SURFACE_DESIGN_INTERNAL_CORE_SUPERNODAL_CHOLESKY_H
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_SUPERNODAL_KERNELS_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_SUPERNODAL_KERNELS_H
 
-#include <CGAL/Surface_design/internal/Core/nested_dissection.h>
-#include <CGAL/Surface_design/internal/Core/parallel.h>
+#include <CGAL/Surface_design/internal/Solvers/nested_dissection.h>
+#include <CGAL/Surface_design/internal/Solvers/parallel.h>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -960,4 +960,4 @@ private:
 } // namespace Surface_design
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_DESIGN_INTERNAL_CORE_SUPERNODAL_CHOLESKY_H
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_SUPERNODAL_KERNELS_H

@@ -26,10 +26,10 @@
 //     separators) as a lower bound on the external degree.
 // Everything is O(n log n) time and O(n + nnz) memory; no recursion on the call stack.
 
-#ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_NESTED_DISSECTION_H
-#define CGAL_SURFACE_DESIGN_INTERNAL_CORE_NESTED_DISSECTION_H
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_NESTED_DISSECTION_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_NESTED_DISSECTION_H
 
-#include <CGAL/Surface_design/internal/Core/parallel.h>
+#include <CGAL/Surface_design/internal/Solvers/parallel.h>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -619,4 +619,4 @@ public:
 } // namespace Surface_design
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_DESIGN_INTERNAL_CORE_NESTED_DISSECTION_H
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_NESTED_DISSECTION_H

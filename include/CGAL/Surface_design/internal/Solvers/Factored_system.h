@@ -3,11 +3,11 @@
 //
 // Factor once, solve many times, through any model of SparseLinearAlgebraWithFactorTraits_d.
 
-#ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_FACTORED_SYSTEM_H
-#define CGAL_SURFACE_DESIGN_INTERNAL_CORE_FACTORED_SYSTEM_H
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_FACTORED_SYSTEM_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_FACTORED_SYSTEM_H
 
 #include <CGAL/Surface_design/exceptions.h>
-#include <CGAL/Surface_design/solver_traits.h>
+#include <CGAL/Surface_design/internal/Solvers/solver_traits.h>
 
 #include <CGAL/Eigen_matrix.h>
 #include <CGAL/Eigen_vector.h>
@@ -162,4 +162,4 @@ private:
 } // namespace Surface_design
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_DESIGN_INTERNAL_CORE_FACTORED_SYSTEM_H
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_FACTORED_SYSTEM_H

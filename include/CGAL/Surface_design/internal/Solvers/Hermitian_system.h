@@ -5,13 +5,13 @@
 // user's `SolverTraits`: in complex arithmetic for the library's own traits, as the equivalent
 // real symmetric system of twice the size for any other model of the concept.
 
-#ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_HERMITIAN_SYSTEM_H
-#define CGAL_SURFACE_DESIGN_INTERNAL_CORE_HERMITIAN_SYSTEM_H
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_HERMITIAN_SYSTEM_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_HERMITIAN_SYSTEM_H
 
 #include <CGAL/Surface_design/exceptions.h>
-#include <CGAL/Surface_design/internal/Core/dec.h>
-#include <CGAL/Surface_design/internal/Core/Factored_system.h>
-#include <CGAL/Surface_design/solver_traits.h>
+#include <CGAL/Surface_design/internal/Solvers/Factored_system.h>
+#include <CGAL/Surface_design/internal/Solvers/solver_traits.h>
+#include <CGAL/Surface_design/internal/Solvers/sparse_types.h>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -26,8 +26,6 @@
 namespace CGAL {
 namespace Surface_design {
 namespace internal {
-
-using Complex_sparse_matrix = Eigen::SparseMatrix<std::complex<double>>;
 
 /// The real symmetric form of a Hermitian matrix: entry p + iq of (i, j) becomes the block
 /// [p -q; q p] at rows 2i, 2i+1 and columns 2j, 2j+1, so that a complex vector with (Re, Im)
@@ -76,11 +74,22 @@ struct Complex_solver_of<Supernodal_solver_traits>
 {
   using type = Supernodal_cholesky<Complex_sparse_matrix>;
 };
+// with the same ordering in complex arithmetic, rather than in the real form of twice the size
+template <>
+struct Complex_solver_of<Nested_dissection_ldlt_solver_traits>
+{
+  using type = Eigen::SimplicialLDLT<Complex_sparse_matrix, Eigen::Lower, Nested_dissection_ordering<int>>;
+};
 #if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
 template <>
 struct Complex_solver_of<Cholmod_solver_traits>
 {
   using type = Cholmod_amd_supernodal_llt<Complex_sparse_matrix>;
+};
+template <>
+struct Complex_solver_of<Cholmod_nested_dissection_solver_traits>
+{
+  using type = Cholmod_nested_dissection_llt<Complex_sparse_matrix>;
 };
 #endif
 #if defined(CGAL_SURFACE_DESIGN_HAS_METIS)
@@ -95,8 +104,8 @@ struct Complex_solver_of<Metis_ldlt_solver_traits>
 /// right-hand sides (`solve`), vectors given with (Re, Im) interleaved. With the library's own
 /// traits (`Default_solver_traits`, `Simplicial_ldlt_solver_traits`, `Supernodal_solver_traits`,
 /// `Nested_dissection_ldlt_solver_traits`, `Cholmod_solver_traits`, `Metis_ldlt_solver_traits`) the
-/// same factorization runs in complex arithmetic (about 3x faster than the real form: half the
-/// floating-point operations, a quarter of the index work); any other model of
+/// same factorization runs in complex arithmetic (half the floating-point operations of the real
+/// form and a quarter of its index work); any other model of
 /// `SparseLinearAlgebraWithFactorTraits_d` factors the real symmetric form (`realify`).
 template <class SolverTraits>
 class Hermitian_system
@@ -174,4 +183,4 @@ private:
 } // namespace Surface_design
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_DESIGN_INTERNAL_CORE_HERMITIAN_SYSTEM_H
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_HERMITIAN_SYSTEM_H

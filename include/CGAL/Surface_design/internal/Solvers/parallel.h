@@ -3,8 +3,8 @@
 //
 // Parallel loops over indices: oneTBB when CGAL is linked with it, a plain loop otherwise.
 
-#ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_PARALLEL_H
-#define CGAL_SURFACE_DESIGN_INTERNAL_CORE_PARALLEL_H
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_PARALLEL_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_PARALLEL_H
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
@@ -42,4 +42,4 @@ void for_each_index(std::size_t n, bool parallel, const Function& f)
 } // namespace Surface_design
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_DESIGN_INTERNAL_CORE_PARALLEL_H
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_PARALLEL_H

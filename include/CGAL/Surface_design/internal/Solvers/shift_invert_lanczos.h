@@ -4,8 +4,8 @@
 // The smallest eigenpair of a generalized problem A u = lambda M u (M diagonal) per block of a
 // block-diagonal matrix, by shift-invert Lanczos on one factorization.
 
-#ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_SHIFT_INVERT_LANCZOS_H
-#define CGAL_SURFACE_DESIGN_INTERNAL_CORE_SHIFT_INVERT_LANCZOS_H
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_SHIFT_INVERT_LANCZOS_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_SHIFT_INVERT_LANCZOS_H
 
 #include <Eigen/Dense>
 
@@ -156,4 +156,4 @@ Lanczos_result largest_eigenvectors_by_group(Solve&& solve, const Eigen::VectorX
 } // namespace Surface_design
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_DESIGN_INTERNAL_CORE_SHIFT_INVERT_LANCZOS_H
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_SHIFT_INVERT_LANCZOS_H

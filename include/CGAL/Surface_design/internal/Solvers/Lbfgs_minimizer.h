@@ -4,8 +4,8 @@
 // A first-order minimizer for nonsmooth, locally Lipschitz energies: L-BFGS with the weak-Wolfe
 // bracketing line search of Lewis & Overton (2013), or gradient descent with Armijo backtracking.
 
-#ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_LBFGS_MINIMIZER_H
-#define CGAL_SURFACE_DESIGN_INTERNAL_CORE_LBFGS_MINIMIZER_H
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_LBFGS_MINIMIZER_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_LBFGS_MINIMIZER_H
 
 #include <CGAL/Surface_design/exceptions.h>
 
@@ -801,4 +801,4 @@ Lbfgs_report minimize(F&& f, Eigen::VectorXd& x, const Lbfgs_options& options = 
 } // namespace Surface_design
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_DESIGN_INTERNAL_CORE_LBFGS_MINIMIZER_H
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_LBFGS_MINIMIZER_H
