@@ -38,6 +38,6 @@ int main(int argc, char** argv)
   // what came out: hinges, seams, distance to the input
   const SD::Developability_metrics m = SD::developability_metrics(mesh, input);
   std::printf("%zu iterations in %.1f s; hinges %.1f%%, %zu seam curves, Hausdorff %.3f\n", result.iterations,
-              result.seconds_total, 100. * m.hinge_share_1e4, m.seam_curves, m.hausdorff_distance);
+              result.total_seconds, 100. * m.hinge_share_1e4, m.seam_curves, m.hausdorff_distance);
   return before > 0. && m.hinge_share_1e4 > 0.8 && m.hausdorff_distance < 0.06 ? 0 : 1;
 }

@@ -23,7 +23,7 @@ int main(int argc, char** argv)
 
   // smoothest cross field (n = 4), aligned to the principal curvature directions
   auto field = mesh.add_property_map<Mesh::Vertex_index, Kernel::Vector_3>("v:field").first;
-  const SD::Smoothest_direction_field_info info =
+  const SD::Smoothest_direction_field_result info =
     SD::smoothest_direction_field(mesh, field, P::symmetry_order(4, P::curvature_alignment_weight(0.1)));
 
   // its singularities: integers k, the index being k / 4

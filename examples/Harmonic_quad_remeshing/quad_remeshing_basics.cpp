@@ -26,7 +26,7 @@ int main(int argc, char** argv)
 
   // one call: default constraints, about 3000 faces
   Mesh quads;
-  const SD::Harmonic_quad_remeshing_report r = SD::harmonic_quad_remeshing(kitten, quads);
+  const SD::Harmonic_quad_remeshing_result r = SD::harmonic_quad_remeshing(kitten, quads);
   const SD::Quad_mesh_quality q = SD::quad_mesh_quality(quads, kitten);
   std::printf("%zu faces, %.1f%% quads, Hausdorff %.2f%% of the diagonal, in %.3f s\n", q.faces,
               100. * q.quad_fraction, 100. * q.relative_hausdorff_distance,

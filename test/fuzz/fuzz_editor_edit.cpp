@@ -1,14 +1,14 @@
 // Copyright (c) 2026 The CGAL Surface Design authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// libFuzzer target: the stripe editor's edit API (examples/Editor/editor_session.h), as the
+// libFuzzer target: the stripe editor's edit API (examples/Programs/Editor/editor_session.h), as the
 // server calls it for POST /api/edit: the body is parsed as JSON and handed to Session::edit on a
 // small mesh with boundary and a closed one. An edit either succeeds or throws Request_error /
 // a JSON type error, and then the state (version, singularities, field, frequency and every corner
 // value) must be exactly as before. A crash, a sanitizer report, another exception type (the
 // server would answer 500) or a refused edit that changed the state is a finding.
 
-#include "../../examples/Editor/editor_session.h"
+#include "../../examples/Programs/Editor/editor_session.h"
 
 #include <CGAL/Surface_design/mesh_generators.h>
 

@@ -1,12 +1,12 @@
 // Copyright (c) 2026 The CGAL Surface Design authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// libFuzzer target: the programs' mesh reader (examples/common/example_support.h, read_mesh) and
+// libFuzzer target: the programs' mesh reader (examples/Programs/common/program_support.h, read_mesh) and
 // the library's validation on whatever it accepts. The first byte picks the format (OFF, OBJ,
 // PLY), the rest is the file. A refusal is an exception of the documented kinds; anything else
 // (a crash, a sanitizer report, another exception type) is a finding.
 
-#include "../../examples/common/example_support.h"
+#include "../../examples/Programs/common/program_support.h"
 
 #include <CGAL/Surface_design/exceptions.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
@@ -33,8 +33,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try
   {
     namespace SDI = CGAL::Surface_design::internal;
-    const example::Mesh mesh = example::read_mesh(file);
-    const SDI::Mesh_indices<example::Mesh> idx(mesh);
+    const program::Mesh mesh = program::read_mesh(file);
+    const SDI::Mesh_indices<program::Mesh> idx(mesh);
     SDI::validate_mesh(idx, get(CGAL::vertex_point, mesh));
   }
   catch(const std::runtime_error&) // unreadable or not a polygon mesh

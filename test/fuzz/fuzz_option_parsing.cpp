@@ -2,13 +2,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // libFuzzer target: the option parsing shared by every command-line program
-// (examples/common/example_support.h). The input is split at NUL bytes into an argument vector;
+// (examples/Programs/common/program_support.h). The input is split at NUL bytes into an argument vector;
 // each argument goes through the parsers the programs use (numbers, integers in a range, pairs
-// F:K, choices, repeated options, output paths). A parser either returns a value that honours
+// F:K, choices, output paths), and the whole vector through an Option_parser declaring every
+// kind of option (values, repeated values, flags, an input file, outputs, a solver, a picture). A parser either returns a value that honours
 // its promise (finite, within the range, a listed word) or throws Usage_error; anything else is a
 // finding.
 
-#include "../../examples/common/example_support.h"
+#include "../../examples/Programs/common/option_parser.h"
+#include "../../examples/Programs/common/program_support.h"
 
 #include <cmath>
 #include <cstdint>
@@ -47,66 +49,85 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   argv.push_back(nullptr);
   const int argc = int(arguments.size());
 
-  example::Once once;
+  try
+  {
+    std::string input, output, picture, up, solver;
+    std::size_t repeats = 0, flags = 0;
+    double x = 0.;
+    program::Option_parser p;
+    p.input(input)
+      .value("--x", [&](const std::string& v) { x = program::parse_double(v, "--x", -10., 1e6); })
+      .repeated("--again", [&](const std::string&) { ++repeats; })
+      .flag("--flag", [&] { ++flags; })
+      .output("--output", output, {".off", ".ply"})
+      .solver(solver)
+      .picture(picture, up)
+      .parse(argc, argv.data());
+    expect(!input.empty() && flags <= 1 && std::isfinite(x) && x >= -10. && x <= 1e6);
+    expect(!p.given("--output") || output.size() > 4);
+    expect(!p.given("--solver") || !solver.empty());
+  }
+  catch(const program::Usage_error&)
+  {
+  }
   for(int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[std::size_t(i)];
     try
     {
-      once.check(arg);
-      const double x = example::parse_double(arg, "--x", -10., 1e6);
+      const double x = program::parse_double(arg, "--x", -10., 1e6);
       expect(std::isfinite(x) && x >= -10. && x <= 1e6);
     }
-    catch(const example::Usage_error&)
+    catch(const program::Usage_error&)
     {
     }
     try
     {
-      const double x = example::parse_positive(arg, "--scale");
+      const double x = program::parse_positive(arg, "--scale");
       expect(std::isfinite(x) && x > 0.);
     }
-    catch(const example::Usage_error&)
+    catch(const program::Usage_error&)
     {
     }
     try
     {
-      const long n = example::parse_integer(arg, "--n", -5, 1000);
+      const long n = program::parse_integer(arg, "--n", -5, 1000);
       expect(n >= -5 && n <= 1000);
     }
-    catch(const example::Usage_error&)
+    catch(const program::Usage_error&)
     {
     }
     try
     {
-      const auto [f, k] = example::parse_pair(arg, "FACE:INDEX");
+      const auto [f, k] = program::parse_pair(arg, "FACE:INDEX");
       expect(std::abs(f) <= 2147483647L && std::abs(k) <= 2147483647L);
     }
-    catch(const example::Usage_error&)
+    catch(const program::Usage_error&)
     {
     }
     try
     {
-      const std::string word = example::parse_choice(arg, "--solver", example::solver_names());
+      const std::string word = program::parse_choice(arg, "--solver", program::solver_names());
       expect(!word.empty());
     }
-    catch(const example::Usage_error&)
+    catch(const program::Usage_error&)
     {
     }
     try
     {
-      example::check_output_path(arg, "--output", {".off", ".ply"});
+      program::check_output_path(arg, "--output", {".off", ".ply"});
       expect(arg.size() > 4);
     }
-    catch(const example::Usage_error&)
+    catch(const program::Usage_error&)
     {
     }
     try
     {
       int at = i;
-      const std::string value = example::option_value(argc, argv.data(), at);
+      const std::string value = program::option_value(argc, argv.data(), at);
       expect(at == i + 1 && value == arguments[std::size_t(i + 1)]);
     }
-    catch(const example::Usage_error&)
+    catch(const program::Usage_error&)
     {
     }
   }

@@ -4,7 +4,8 @@
 // quad_remesh: quad remeshing from the isolines and gradient lines of a harmonic
 // function (Dong, Kircher & Garland 2005; Nagano & Imai). Run without arguments for the usage.
 
-#include "../common/example_support.h"
+#include "common/option_parser.h"
+#include "common/program_support.h"
 
 #include <CGAL/Surface_design/Harmonic_quad_remesher.h>
 #include <CGAL/Surface_design/quad_mesh_quality.h>
@@ -20,8 +21,8 @@
 
 namespace SD = CGAL::Surface_design;
 namespace P = CGAL::Surface_design::parameters;
-using example::Mesh;
-using example::Point;
+using program::Mesh;
+using program::Point;
 
 namespace {
 
@@ -72,58 +73,34 @@ struct Options
 Options parse(int argc, char** argv)
 {
   Options o;
-  example::Once once;
-  for(int i = 1; i < argc; ++i)
-  {
-    const std::string a = argv[i];
-    auto next = [&]() { return example::option_value(argc, argv, i); };
-    if(a != "--min" && a != "--max")
-      once.check(a);
-    if(a == "--min")
-      o.minima.push_back(example::parse_integer(next(), a, 0, 1L << 40));
-    else if(a == "--max")
-      o.maxima.push_back(example::parse_integer(next(), a, 0, 1L << 40));
-    else if(a == "--no-protrusions")
-      o.protrusions = false;
-    else if(a == "--edge-length")
-      o.edge_length = example::parse_positive(next(), a);
-    else if(a == "--curvature-adaptation")
-      o.curvature_adaptation = example::parse_double(next(), a, 0., 1000.);
-    else if(a == "--intrinsic-delaunay")
-      o.intrinsic_delaunay = true;
-    else if(a == "--triangle-poles")
-      o.quad_poles = false;
-    else if(a == "--no-spectacles")
-      o.spectacles = false;
-    else if(a == "--quad-dominant")
-      o.all_quads = false;
-    else if(a == "--no-feature-snapping")
-      o.feature_snapping = false;
-    else if(a == "--solver")
-      o.solver = example::parse_choice(next(), a, example::solver_names());
-    else if(a == "--output")
-      example::check_output_path(o.output = next(), a, {".off", ".obj", ".ply"});
-    else if(a == "--picture")
-      example::check_output_path(o.picture = next(), a, {".png"});
-    else if(a == "--up")
-      o.up = example::parse_choice(next(), a, {"+X", "-X", "+Y", "-Y", "+Z", "-Z"});
-    else if(!a.empty() && a[0] == '-')
-      throw example::Usage_error("unknown option " + a);
-    else if(!o.input.empty())
-      throw example::Usage_error("more than one input file");
-    else
-      o.input = a;
-  }
-  if(o.input.empty())
-    throw example::Usage_error("no input mesh");
+  auto vertex = [](std::vector<long>& into, const char* name) {
+    return [&into, name](const std::string& v) { into.push_back(program::parse_integer(v, name, 0, 1L << 40)); };
+  };
+  program::Option_parser p;
+  p.input(o.input)
+    .repeated("--min", vertex(o.minima, "--min"))
+    .repeated("--max", vertex(o.maxima, "--max"))
+    .flag("--no-protrusions", [&] { o.protrusions = false; })
+    .value("--edge-length", [&](const std::string& v) { o.edge_length = program::parse_positive(v, "--edge-length"); })
+    .value("--curvature-adaptation",
+           [&](const std::string& v) { o.curvature_adaptation = program::parse_double(v, "--curvature-adaptation", 0., 1000.); })
+    .flag("--intrinsic-delaunay", [&] { o.intrinsic_delaunay = true; })
+    .flag("--triangle-poles", [&] { o.quad_poles = false; })
+    .flag("--no-spectacles", [&] { o.spectacles = false; })
+    .flag("--quad-dominant", [&] { o.all_quads = false; })
+    .flag("--no-feature-snapping", [&] { o.feature_snapping = false; })
+    .solver(o.solver)
+    .output("--output", o.output, {".off", ".obj", ".ply"})
+    .picture(o.picture, o.up)
+    .parse(argc, argv);
   if(o.output.empty())
-    throw example::Usage_error("--output OUT.off is required");
+    throw program::Usage_error("--output OUT.off is required");
   if(o.minima.empty() != o.maxima.empty())
-    throw example::Usage_error("give both --min and --max vertices (constraints on one value only leave the "
+    throw program::Usage_error("give both --min and --max vertices (constraints on one value only leave the "
                                "function constant), or neither for the default constraints");
   if(!o.minima.empty() && !o.protrusions)
-    throw example::Usage_error("--no-protrusions applies to the default constraints, not to --min/--max");
-  example::check_paths_and_picture({{"INPUT", o.input}, {"--output", o.output}}, o.picture, once.contains("--up"));
+    throw program::Usage_error("--no-protrusions applies to the default constraints, not to --min/--max");
+  program::check_paths_and_picture({{"INPUT", o.input}, {"--output", o.output}}, o.picture, p.given("--up"));
   return o;
 }
 
@@ -131,9 +108,9 @@ Eigen::Vector3d eigen(const Point& p) { return Eigen::Vector3d(p.x(), p.y(), p.z
 
 // The input flat-shaded in grey, the new mesh's faces other than quads in orange just above it,
 // and its edges as dark ribbons.
-void write_picture(const Mesh& input, const Mesh& quads, const Options& o, example::Output_files& outputs)
+void write_picture(const Mesh& input, const Mesh& quads, const Options& o, program::Output_files& outputs)
 {
-  example::Vtk_surface vtk;
+  program::Vtk_surface vtk;
   vtk.scalar_name = "shade";
   const Eigen::Vector3d light = Eigen::Vector3d(0.3, 0.6, 0.75).normalized();
   for(auto f : faces(input))
@@ -189,14 +166,14 @@ void write_picture(const Mesh& input, const Mesh& quads, const Options& o, examp
   // 0 edges dark blue, 1 non-quads orange, 2..3 grey shading
   const std::string colormap =
     "0,0.05,0.1,0.35,0.3,0.05,0.1,0.35,0.32,0.95,0.55,0.1,0.62,0.95,0.55,0.1,0.6667,0.55,0.56,0.58,1,0.97,0.97,0.96";
-  example::render_png(vtk_path, outputs.stage(o.picture), "shade", 0., 3., o.up, colormap);
+  program::render_png(vtk_path, outputs.stage(o.picture), "shade", 0., 3., o.up, colormap);
 }
 
 template <class Traits>
 int run(const Options& o, Traits traits)
 {
-  example::Stopwatch clock;
-  const Mesh input = example::read_mesh(o.input);
+  program::Stopwatch clock;
+  const Mesh input = program::read_mesh(o.input);
   const long chi = long(num_vertices(input)) - long(num_edges(input)) + long(num_faces(input));
   std::cout << "read " << o.input << ": " << num_vertices(input) << " vertices, " << num_faces(input)
             << " faces, Euler characteristic " << chi << '\n';
@@ -211,7 +188,7 @@ int run(const Options& o, Traits traits)
       for(long v : *list)
       {
         if(std::size_t(v) >= num_vertices(input)) // checked before the index is narrowed
-          throw example::Usage_error((value == 0. ? "--min " : "--max ") + std::to_string(v) + ": the mesh has " +
+          throw program::Usage_error((value == 0. ? "--min " : "--max ") + std::to_string(v) + ": the mesh has " +
                                      std::to_string(num_vertices(input)) + " vertices");
         c.emplace_back(Mesh::Vertex_index(Mesh::size_type(v)), value);
       }
@@ -235,7 +212,7 @@ int run(const Options& o, Traits traits)
     P::spectacles(o.spectacles,
                   P::all_quads(o.all_quads, P::curvature_adaptation(o.curvature_adaptation,
                                                                     P::feature_snapping(o.feature_snapping)))));
-  const SD::Harmonic_quad_remeshing_report r = o.edge_length > 0.
+  const SD::Harmonic_quad_remeshing_result r = o.edge_length > 0.
                                                  ? remesher.remesh(quads, P::target_edge_length(o.edge_length, options))
                                                  : remesher.remesh(quads, options);
   if(o.spectacles)
@@ -282,7 +259,7 @@ int run(const Options& o, Traits traits)
   if(!q.valid || !q.same_topology) // (the remesher checks this: a second look before writing)
     throw std::runtime_error("the quad mesh is not a valid mesh with the input's topology (a bug: please report it "
                              "with the input mesh); nothing written");
-  example::Output_files outputs;
+  program::Output_files outputs;
   if(!CGAL::IO::write_polygon_mesh(outputs.stage(o.output), quads, CGAL::parameters::stream_precision(17)))
     throw std::runtime_error("cannot write " + o.output);
   if(!o.picture.empty())
@@ -296,8 +273,8 @@ int run(const Options& o, Traits traits)
 
 int main(int argc, char** argv)
 {
-  return example::run_main("quad_remesh", usage, argc, [&] {
+  return program::run_main("quad_remesh", usage, argc, [&] {
     const Options o = parse(argc, argv);
-    return example::with_solver(o.solver, [&](auto traits) { return run(o, traits); });
+    return program::with_solver(o.solver, [&](auto traits) { return run(o, traits); });
   });
 }

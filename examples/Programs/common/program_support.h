@@ -1,12 +1,13 @@
 // Copyright (c) 2026 The CGAL Surface Design authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Helpers shared by the example programs: strict option parsing, reading a mesh in input order,
+// Helpers shared by the command-line programs: strict parsing of option values (the options
+// themselves: option_parser.h), reading a mesh in input order,
 // writing PLY with extra properties and legacy VTK, rendering to PNG with f3d (no shell), and
 // all-or-nothing outputs (written under temporary names, renamed when everything succeeded).
 
-#ifndef CGAL_SURFACE_DESIGN_EXAMPLE_SUPPORT_H
-#define CGAL_SURFACE_DESIGN_EXAMPLE_SUPPORT_H
+#ifndef CGAL_SURFACE_DESIGN_PROGRAMS_PROGRAM_SUPPORT_H
+#define CGAL_SURFACE_DESIGN_PROGRAMS_PROGRAM_SUPPORT_H
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
@@ -30,7 +31,6 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
-#include <set>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -45,7 +45,7 @@
 #include <utility>
 #include <vector>
 
-namespace example {
+namespace program {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
@@ -387,12 +387,14 @@ decltype(auto) with_solver(const std::string& name, F&& f)
 template <class Traits>
 Traits solver_sharing_analysis(Traits& traits)
 {
+  Traits fresh;
   if constexpr(std::is_same<Traits, CGAL::Surface_design::Default_solver_traits>::value)
   {
     if(!traits.solver().analysis_cache())
       traits.solver().set_analysis_cache(std::make_shared<CGAL::Surface_design::Symbolic_analysis_cache>());
+    fresh.solver().use_settings_of(traits.solver());
   }
-  return CGAL::Surface_design::internal::new_solver_like(traits);
+  return fresh;
 }
 
 /// `x` with 4 significant digits (for messages).
@@ -476,21 +478,6 @@ inline std::string parse_choice(const std::string& text, const std::string& opti
     list += (list.empty() ? "" : ", ") + w;
   throw Usage_error(option + " is one of " + list + ", not \"" + text + "\"");
 }
-
-/// Options that may be given once: `check(option)` throws when one comes again.
-class Once
-{
-public:
-  void check(const std::string& option)
-  {
-    if(!m_seen.insert(option).second)
-      throw Usage_error(option + " is given more than once");
-  }
-  bool contains(const std::string& option) const { return m_seen.count(option) > 0; }
-
-private:
-  std::set<std::string> m_seen;
-};
 
 /// Throws unless `path` can be created: a non-empty file name whose folder exists and is
 /// writable, with one of `extensions` (if given). Checked before any computation, so that a run
@@ -794,6 +781,6 @@ inline void render_png(const std::string& vtk, const std::string& png, const std
     throw std::runtime_error("f3d could not render " + png);
 }
 
-} // namespace example
+} // namespace program
 
-#endif // CGAL_SURFACE_DESIGN_EXAMPLE_SUPPORT_H
+#endif // CGAL_SURFACE_DESIGN_PROGRAMS_PROGRAM_SUPPORT_H

@@ -5,7 +5,8 @@
 // the vertices listed in a file) stay fixed; every other vertex moves to the weighted barycentre
 // of its neighbours. Run without arguments for the usage.
 
-#include "embedding_support.h"
+#include "common/embedding_support.h"
+#include "common/option_parser.h"
 
 #include <CGAL/Surface_design/Barycentric_embedder.h>
 #include <CGAL/Surface_design/barycentric_embedding.h>
@@ -20,7 +21,7 @@
 
 namespace SD = CGAL::Surface_design;
 namespace P = CGAL::Surface_design::parameters;
-using example::Mesh;
+using program::Mesh;
 
 namespace {
 
@@ -44,7 +45,7 @@ std::vector<Mesh::Vertex_index> read_fixed(const std::string& path, const Mesh& 
   std::error_code ec;
   std::ifstream in(path);
   if(!in || std::filesystem::is_directory(path, ec))
-    throw example::Usage_error("--fixed: cannot read " + path);
+    throw program::Usage_error("--fixed: cannot read " + path);
   std::vector<Mesh::Vertex_index> fixed;
   std::string line;
   for(std::size_t number = 1; std::getline(in, line); ++number)
@@ -61,7 +62,7 @@ std::vector<Mesh::Vertex_index> read_fixed(const std::string& path, const Mesh& 
         std::string shown; // printable characters only
         for(char c : word.substr(0, 40))
           shown += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
-        throw example::Usage_error(path + ":" + std::to_string(number) + ": \"" + shown +
+        throw program::Usage_error(path + ":" + std::to_string(number) + ": \"" + shown +
                                    "\" is not a vertex index (the mesh has " + std::to_string(num_vertices(mesh)) +
                                    " vertices)");
       }
@@ -94,46 +95,27 @@ int main(int argc, char** argv)
   {
     std::string input, fixed_file, output, png, up = "+Y", solver = "default";
     SD::Edge_weighting weighting = SD::Edge_weighting::uniform;
-    example::Once once;
-    for(int i = 1; i < argc; ++i)
-    {
-      const std::string a = argv[i];
-      auto value = [&] { return example::option_value(argc, argv, i); };
-      if(!a.empty() && a[0] == '-')
-        once.check(a);
-      if(a == "--fixed")
-      {
-        fixed_file = value();
-        if(fixed_file.empty())
-          throw example::Usage_error("--fixed needs a file name");
-      }
-      else if(a == "--output")
-        example::check_output_path(output = value(), a, {".off", ".obj", ".ply", ".stl"});
-      else if(a == "--picture")
-        example::check_output_path(png = value(), a, {".png"});
-      else if(a == "--up")
-        up = example::parse_choice(value(), a, {"+X", "-X", "+Y", "-Y", "+Z", "-Z"});
-      else if(a == "--solver")
-        solver = example::parse_choice(value(), a, example::solver_names());
-      else if(a == "--weights")
-      {
-        const std::string w = example::parse_choice(value(), a, {"uniform", "cotangent", "mean-value"});
-        weighting = w == "uniform" ? SD::Edge_weighting::uniform
-                    : w == "cotangent" ? SD::Edge_weighting::cotangent
-                                       : SD::Edge_weighting::mean_value;
-      }
-      else if(!a.empty() && a[0] == '-')
-        throw example::Usage_error("unknown option " + a);
-      else if(input.empty())
-        input = a;
-      else
-        throw example::Usage_error("more than one input file: " + input + " and " + a);
-    }
-    if(input.empty())
-      throw example::Usage_error("no input mesh");
-    example::check_paths_and_picture({{"INPUT", input}, {"--fixed", fixed_file}, {"--output", output}}, png, once.contains("--up"));
+    program::Option_parser p;
+    p.input(input)
+      .value("--fixed",
+             [&](const std::string& v) {
+               if((fixed_file = v).empty())
+                 throw program::Usage_error("--fixed needs a file name");
+             })
+      .output("--output", output, {".off", ".obj", ".ply", ".stl"})
+      .picture(png, up)
+      .solver(solver)
+      .value("--weights",
+             [&](const std::string& v) {
+               const std::string w = program::parse_choice(v, "--weights", {"uniform", "cotangent", "mean-value"});
+               weighting = w == "uniform" ? SD::Edge_weighting::uniform
+                           : w == "cotangent" ? SD::Edge_weighting::cotangent
+                                              : SD::Edge_weighting::mean_value;
+             })
+      .parse(argc, argv);
+    program::check_paths_and_picture({{"INPUT", input}, {"--fixed", fixed_file}, {"--output", output}}, png, p.given("--up"));
 
-    Mesh mesh = example::read_mesh(input);
+    Mesh mesh = program::read_mesh(input);
     const Mesh original = mesh;
     std::vector<Mesh::Vertex_index> fixed;
     if(!fixed_file.empty())
@@ -144,22 +126,22 @@ int main(int argc, char** argv)
         if(is_border(h, mesh))
           fixed.push_back(target(h, mesh));
       if(fixed.empty())
-        throw example::Usage_error(input + " has no boundary: give the fixed vertices with --fixed");
+        throw program::Usage_error(input + " has no boundary: give the fixed vertices with --fixed");
     }
 
-    example::Stopwatch clock;
-    const std::size_t moved = example::with_solver(
+    program::Stopwatch clock;
+    const std::size_t moved = program::with_solver(
       solver, [&](auto traits) { return embed(mesh, fixed, weighting, traits); });
-    const double area_before = example::surface_area(original), area_after = example::surface_area(mesh);
+    const double area_before = program::surface_area(original), area_after = program::surface_area(mesh);
     if(!std::isfinite(area_before) || !std::isfinite(area_after))
       throw std::runtime_error("the surface area overflows (coordinates too large for double precision)");
     std::cout << input << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh) << " faces; " << moved
               << " free vertices moved to the barycentre of their neighbours (" << SD::to_string(weighting)
               << " weights) in " << clock.lap() << " ms; area " << area_before << " -> " << area_after << "\n";
 
-    example::Output_files outputs;
+    program::Output_files outputs;
     if(!output.empty())
-      example::write_mesh(output, mesh, outputs);
+      program::write_mesh(output, mesh, outputs);
     if(!png.empty())
     {
       std::vector<double> moved_by;
@@ -169,12 +151,12 @@ int main(int argc, char** argv)
         moved_by.push_back(std::sqrt(CGAL::squared_distance(mesh.point(v), original.point(v))));
         largest = (std::max)(largest, moved_by.back());
       }
-      example::picture(mesh, moved_by, "displacement", 0., largest > 0. ? largest : 1., png, outputs, up);
+      program::picture(mesh, moved_by, "displacement", 0., largest > 0. ? largest : 1., png, outputs, up);
     }
     outputs.commit();
     return 0;
   }
-  catch(const example::Usage_error& e)
+  catch(const program::Usage_error& e)
   {
     std::cerr << "barycentric_embed: " << e.what() << "\n(run without arguments for the usage)\n";
     return 1;

@@ -4,7 +4,8 @@
 // developable: drives a triangle mesh towards a piecewise-developable shape (Stein, Grinspun &
 // Crane 2018) and prints the figures of the result. Run without arguments for the usage.
 
-#include "../common/example_support.h"
+#include "common/option_parser.h"
+#include "common/program_support.h"
 
 #include <CGAL/Surface_design/developability.h>
 
@@ -19,8 +20,8 @@
 
 namespace SD = CGAL::Surface_design;
 namespace P = CGAL::Surface_design::parameters;
-using example::Mesh;
-using example::Point;
+using program::Mesh;
+using program::Point;
 
 namespace {
 
@@ -58,7 +59,6 @@ struct Options
 Options parse(int argc, char** argv)
 {
   Options o;
-  example::Once once;
   const std::map<std::string, SD::Developability_energy> energies{
     {"intrinsic", SD::Developability_energy::intrinsic},
     {"covariance", SD::Developability_energy::covariance},
@@ -67,51 +67,36 @@ Options parse(int argc, char** argv)
     {"combinatorial", SD::Developability_energy::combinatorial},
     {"combinatorial-max", SD::Developability_energy::combinatorial_max},
     {"angle-defect", SD::Developability_energy::squared_angle_defect}};
-  for(int i = 1; i < argc; ++i)
-  {
-    const std::string a = argv[i];
-    auto next = [&]() { return example::option_value(argc, argv, i); };
-    if(!a.empty() && a[0] == '-')
-      once.check(a);
-    if(a == "--energy")
-    {
-      std::vector<std::string> names;
-      for(const auto& [name, e] : energies)
-        names.push_back(name);
-      o.energy = energies.at(example::parse_choice(next(), a, names));
-    }
-    else if(a == "--subdivisions")
-      o.subdivisions = std::size_t(example::parse_integer(next(), a, 0, 4));
-    else if(a == "--iterations")
-      o.iterations = std::size_t(example::parse_integer(next(), a, 0, 10000000));
-    else if(a == "--descent")
-      o.descent = example::parse_choice(next(), a, {"lbfgs", "gradient"}) == "lbfgs"
-                    ? SD::Developability_descent::lbfgs
-                    : SD::Developability_descent::gradient_descent;
-    else if(a == "--minimum-angle")
-      o.minimum_angle = example::parse_double(next(), a, 0., 30.) * CGAL_PI / 180.;
-    else if(a == "--keep-valence-3")
-      o.keep_valence_3 = true;
-    else if(a == "--progress")
-      o.progress = std::size_t(example::parse_integer(next(), a, 0, 100000000));
-    else if(a == "--output")
-      example::check_output_path(o.output = next(), a, {".off", ".obj", ".ply", ".stl"});
-    else if(a == "--picture")
-      example::check_output_path(o.picture = next(), a, {".png"});
-    else if(a == "--up")
-      o.up = example::parse_choice(next(), a, {"+X", "-X", "+Y", "-Y", "+Z", "-Z"});
-    else if(!a.empty() && a[0] == '-')
-      throw example::Usage_error("unknown option " + a);
-    else if(o.input.empty())
-      o.input = a;
-    else
-      throw example::Usage_error("more than one input file");
-  }
-  if(o.input.empty())
-    throw example::Usage_error("no input mesh");
+  program::Option_parser p;
+  p.input(o.input)
+    .value("--energy",
+           [&](const std::string& v) {
+             std::vector<std::string> names;
+             for(const auto& [name, e] : energies)
+               names.push_back(name);
+             o.energy = energies.at(program::parse_choice(v, "--energy", names));
+           })
+    .value("--subdivisions",
+           [&](const std::string& v) { o.subdivisions = std::size_t(program::parse_integer(v, "--subdivisions", 0, 4)); })
+    .value("--iterations",
+           [&](const std::string& v) { o.iterations = std::size_t(program::parse_integer(v, "--iterations", 0, 10000000)); })
+    .value("--descent",
+           [&](const std::string& v) {
+             o.descent = program::parse_choice(v, "--descent", {"lbfgs", "gradient"}) == "lbfgs"
+                           ? SD::Developability_descent::lbfgs
+                           : SD::Developability_descent::gradient_descent;
+           })
+    .value("--minimum-angle",
+           [&](const std::string& v) { o.minimum_angle = program::parse_double(v, "--minimum-angle", 0., 30.) * CGAL_PI / 180.; })
+    .flag("--keep-valence-3", [&] { o.keep_valence_3 = true; })
+    .value("--progress",
+           [&](const std::string& v) { o.progress = std::size_t(program::parse_integer(v, "--progress", 0, 100000000)); })
+    .output("--output", o.output, {".off", ".obj", ".ply", ".stl"})
+    .picture(o.picture, o.up)
+    .parse(argc, argv);
   if(o.output.empty())
-    throw example::Usage_error("--output OUT.off is required");
-  example::check_paths_and_picture({{"INPUT", o.input}, {"--output", o.output}}, o.picture, once.contains("--up"));
+    throw program::Usage_error("--output OUT.off is required");
+  program::check_paths_and_picture({{"INPUT", o.input}, {"--output", o.output}}, o.picture, p.given("--up"));
   return o;
 }
 
@@ -121,9 +106,9 @@ Eigen::Vector3d eigen(const Point& p) { return Eigen::Vector3d(p.x(), p.y(), p.z
 // smoothly, seams show as jumps), every edge a thin dark ribbon whose darkness grows with its
 // dihedral angle (scalar 1..2: rulings faint, seams dark, as in the paper's Fig. 26), seam
 // vertices as small red triangles (scalar 3).
-void write_picture(const Mesh& mesh, const std::vector<double>& lambda, const Options& o, example::Output_files& outputs)
+void write_picture(const Mesh& mesh, const std::vector<double>& lambda, const Options& o, program::Output_files& outputs)
 {
-  example::Vtk_surface vtk;
+  program::Vtk_surface vtk;
   vtk.scalar_name = "shade";
   const Eigen::Vector3d light = Eigen::Vector3d(0.3, 0.6, 0.75).normalized();
   std::map<Mesh::Face_index, Eigen::Vector3d> normal;
@@ -178,7 +163,7 @@ void write_picture(const Mesh& mesh, const std::vector<double>& lambda, const Op
   vtk.write(vtk_path);
   // 0..1 grey to white (faces), 1..2 light to dark grey (edges), 3 red (vertices far from hinges)
   const std::string colormap = "0,0.55,0.58,0.62,0.333,0.97,0.97,0.96,0.334,0.72,0.72,0.72,0.666,0.08,0.08,0.1,1,0.85,0.1,0.1";
-  example::render_png(vtk_path, outputs.stage(o.picture), "shade", 0., 3., o.up, colormap);
+  program::render_png(vtk_path, outputs.stage(o.picture), "shade", 0., 3., o.up, colormap);
 }
 
 void print_metrics(const SD::Developability_metrics& m)
@@ -198,8 +183,8 @@ void print_metrics(const SD::Developability_metrics& m)
 
 int run(const Options& o)
 {
-  example::Stopwatch clock;
-  Mesh mesh = example::read_mesh(o.input);
+  program::Stopwatch clock;
+  Mesh mesh = program::read_mesh(o.input);
   const Mesh input = mesh;
   std::cout << "read " << o.input << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh) << " faces\n";
   const long euler = long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh));
@@ -224,15 +209,15 @@ int run(const Options& o)
                 r.levels[l].initial_energy, r.levels[l].final_energy, r.levels[l].faces, r.levels[l].end.c_str());
   std::printf("%zu iterations, %zu evaluations, %zu flips, %zu collapses, %zu subdivisions; %.2f s (evaluation %.2f, "
               "small angles %.2f, subdivision %.2f)\n",
-              r.iterations, r.evaluations, r.flips, r.collapses, r.subdivisions, r.seconds_total, r.seconds_evaluation,
-              r.seconds_remeshing, r.seconds_subdivision);
+              r.iterations, r.evaluations, r.flips, r.collapses, r.subdivisions, r.total_seconds, r.evaluation_seconds,
+              r.remeshing_seconds, r.subdivision_seconds);
   const long euler_after = long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh));
   if(euler_after != euler)
     throw std::logic_error("the Euler characteristic changed from " + std::to_string(euler) + " to " +
                            std::to_string(euler_after));
 
   print_metrics(SD::developability_metrics(mesh, input, P::developability_energy(o.energy)));
-  example::Output_files outputs;
+  program::Output_files outputs;
   if(!CGAL::IO::write_polygon_mesh(outputs.stage(o.output), mesh, CGAL::parameters::stream_precision(17)))
     throw std::runtime_error("cannot write " + o.output);
   if(!o.picture.empty())
@@ -255,7 +240,7 @@ int run(const Options& o)
 
 int main(int argc, char** argv)
 {
-  return example::run_main("developable", usage, argc, [&] {
+  return program::run_main("developable", usage, argc, [&] {
     return run(parse(argc, argv));
   });
 }

@@ -4,7 +4,8 @@
 // direction_field: smoothest or prescribed-singularity n-direction fields on any triangle mesh.
 // Run without arguments for the usage.
 
-#include "../common/example_support.h"
+#include "common/option_parser.h"
+#include "common/program_support.h"
 
 #include <CGAL/Surface_design/direction_fields.h>
 #include <CGAL/Surface_design/Trivial_connection.h>
@@ -20,9 +21,9 @@
 #include <vector>
 
 namespace SD = CGAL::Surface_design;
-using example::Mesh;
-using example::Point;
-using example::Vector;
+using program::Mesh;
+using program::Point;
+using program::Vector;
 
 namespace {
 
@@ -59,64 +60,37 @@ struct Options
 Options parse(int argc, char** argv)
 {
   Options o;
-  example::Once once;
-  bool method_given = false, up_given = false;
-  for(int i = 1; i < argc; ++i)
-  {
-    const std::string a = argv[i];
-    auto next = [&]() { return example::option_value(argc, argv, i); };
-    if(a != "--singularity" && !a.empty() && a[0] == '-')
-      once.check(a);
-    if(a == "--method")
-    {
-      o.method = example::parse_choice(next(), a, {"smoothest", "trivial"});
-      method_given = true;
-    }
-    else if(a == "--n")
-      o.n = int(example::parse_integer(next(), a, 1, 64));
-    else if(a == "--singularity")
-    {
-      const auto [f, k] = example::parse_pair(next(), "--singularity FACE:INDEX");
-      if(f < 0)
-        throw example::Usage_error("face numbers start at 0");
-      if(k == 0)
-        throw example::Usage_error("--singularity " + std::to_string(f) + ":0 prescribes nothing");
-      if(!o.singularities.emplace(std::size_t(f), int(k)).second)
-        throw example::Usage_error("--singularity: face " + std::to_string(f) + " is given more than once");
-    }
-    else if(a == "--curvature-weight")
-      o.curvature_weight = example::parse_double(next(), a, 0., 1e12);
-    else if(a == "--boundary")
-      o.boundary = example::parse_choice(next(), a, {"free", "tangent", "normal"});
-    else if(a == "--solver")
-      o.solver = example::parse_choice(next(), a, example::solver_names());
-    else if(a == "--output")
-      example::check_output_path(o.output = next(), a, {".ply"});
-    else if(a == "--picture")
-      example::check_output_path(o.picture = next(), a, {".png"});
-    else if(a == "--up")
-    {
-      o.up = example::parse_choice(next(), a, {"+X", "-X", "+Y", "-Y", "+Z", "-Z"});
-      up_given = true;
-    }
-    else if(!a.empty() && a[0] == '-')
-      throw example::Usage_error("unknown option " + a);
-    else if(o.input.empty())
-      o.input = a;
-    else
-      throw example::Usage_error("more than one input file");
-  }
-  if(o.input.empty())
-    throw example::Usage_error("no input mesh");
-  if(!method_given)
-    throw example::Usage_error("--method smoothest|trivial is required");
+  program::Option_parser p;
+  p.input(o.input)
+    .value("--method", [&](const std::string& v) { o.method = program::parse_choice(v, "--method", {"smoothest", "trivial"}); })
+    .value("--n", [&](const std::string& v) { o.n = int(program::parse_integer(v, "--n", 1, 64)); })
+    .repeated("--singularity",
+              [&](const std::string& v) {
+                const auto [f, k] = program::parse_pair(v, "--singularity FACE:INDEX");
+                if(f < 0)
+                  throw program::Usage_error("face numbers start at 0");
+                if(k == 0)
+                  throw program::Usage_error("--singularity " + std::to_string(f) + ":0 prescribes nothing");
+                if(!o.singularities.emplace(std::size_t(f), int(k)).second)
+                  throw program::Usage_error("--singularity: face " + std::to_string(f) + " is given more than once");
+              })
+    .value("--curvature-weight",
+           [&](const std::string& v) { o.curvature_weight = program::parse_double(v, "--curvature-weight", 0., 1e12); })
+    .value("--boundary",
+           [&](const std::string& v) { o.boundary = program::parse_choice(v, "--boundary", {"free", "tangent", "normal"}); })
+    .solver(o.solver)
+    .output("--output", o.output, {".ply"})
+    .picture(o.picture, o.up)
+    .parse(argc, argv);
+  if(!p.given("--method"))
+    throw program::Usage_error("--method smoothest|trivial is required");
   if(o.output.empty())
-    throw example::Usage_error("--output OUT.ply is required");
+    throw program::Usage_error("--output OUT.ply is required");
   if(o.method == "smoothest" && !o.singularities.empty())
-    throw example::Usage_error("--singularity needs --method trivial (smoothest fields place their own)");
+    throw program::Usage_error("--singularity needs --method trivial (smoothest fields place their own)");
   if(o.method == "trivial" && (o.curvature_weight != 0. || o.boundary != "free"))
-    throw example::Usage_error("--curvature-weight and --boundary apply to --method smoothest");
-  example::check_paths_and_picture({{"INPUT", o.input}, {"--output", o.output}}, o.picture, up_given);
+    throw program::Usage_error("--curvature-weight and --boundary apply to --method smoothest");
+  program::check_paths_and_picture({{"INPUT", o.input}, {"--output", o.output}}, o.picture, p.given("--up"));
   return o;
 }
 
@@ -130,7 +104,7 @@ SD::Direction_field_boundary boundary_condition(const std::string& b)
 // Glyphs of an n-direction field, one per face (every stride-th face on big meshes), over the
 // surface; scalar 0 surface, 1 glyphs, 2 / 3 faces of positive / negative index.
 void write_picture(const Mesh& mesh, const std::vector<Vector>& field, const std::vector<int>& index, int n,
-                   const Options& o, example::Output_files& outputs)
+                   const Options& o, program::Output_files& outputs)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   auto eigen = [](const Vector& x) { return Eigen::Vector3d(x.x(), x.y(), x.z()); };
@@ -143,7 +117,7 @@ void write_picture(const Mesh& mesh, const std::vector<Vector>& field, const std
     face_normal.push_back(eigen(PMP::compute_face_normal(f, mesh)));
     area.push_back(PMP::face_area(f, mesh));
   }
-  example::Vtk_surface vtk;
+  program::Vtk_surface vtk;
   vtk.scalar_name = "field";
   double mean_area = 0.;
   for(double a : area)
@@ -213,14 +187,14 @@ void write_picture(const Mesh& mesh, const std::vector<Vector>& field, const std
   vtk.write(vtk_path);
   // colours: light surface, dark glyphs, red / blue singular faces
   const std::string colormap = "0,0.93,0.9,0.84,0.333,0.12,0.16,0.3,0.667,0.85,0.15,0.1,1,0.15,0.35,0.85";
-  example::render_png(vtk_path, outputs.stage(o.picture), "field", 0., 3., o.up, colormap);
+  program::render_png(vtk_path, outputs.stage(o.picture), "field", 0., 3., o.up, colormap);
 }
 
 template <class Solver>
 int run(const Options& o, const Solver& solver)
 {
-  example::Stopwatch clock, total;
-  Mesh mesh = example::read_mesh(o.input);
+  program::Stopwatch clock, total;
+  Mesh mesh = program::read_mesh(o.input);
   std::cout << "read " << o.input << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh)
             << " faces (" << clock.lap() << " ms)\n";
   std::vector<Vector> field(num_vertices(mesh));
@@ -274,21 +248,21 @@ int run(const Options& o, const Solver& solver)
   std::cout << "\nindex sum " << text(sum) << " (Euler characteristic "
             << long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh)) << ")\n";
 
-  example::Ply_property fx{"field_x", "double", {}}, fy{"field_y", "double", {}}, fz{"field_z", "double", {}};
+  program::Ply_property fx{"field_x", "double", {}}, fy{"field_y", "double", {}}, fz{"field_z", "double", {}};
   for(const Vector& x : field)
   {
     fx.values.push_back(x.x());
     fy.values.push_back(x.y());
     fz.values.push_back(x.z());
   }
-  example::Ply_property numerator{"field_index_numerator", "int", {}}, value{"field_index", "double", {}};
+  program::Ply_property numerator{"field_index_numerator", "int", {}}, value{"field_index", "double", {}};
   for(int k : index)
   {
     numerator.values.push_back(k);
     value.values.push_back(double(k) / o.n);
   }
-  example::Output_files outputs;
-  example::write_ply(outputs.stage(o.output), mesh, {fx, fy, fz}, {value, numerator});
+  program::Output_files outputs;
+  program::write_ply(outputs.stage(o.output), mesh, {fx, fy, fz}, {value, numerator});
   if(!o.picture.empty())
     write_picture(mesh, field, index, o.n, o, outputs);
   outputs.commit();
@@ -300,8 +274,8 @@ int run(const Options& o, const Solver& solver)
 
 int main(int argc, char** argv)
 {
-  return example::run_main("direction_field", usage, argc, [&] {
+  return program::run_main("direction_field", usage, argc, [&] {
     const Options o = parse(argc, argv);
-    return example::with_solver(o.solver, [&o](auto traits) { return run(o, traits); });
+    return program::with_solver(o.solver, [&o](auto traits) { return run(o, traits); });
   });
 }

@@ -4,8 +4,9 @@
 // stripes: field-aligned stripe patterns with prescribed singularities on any triangle mesh.
 // Run without arguments for the usage.
 
-#include "../common/example_support.h"
-#include "../common/stripe_fields.h"
+#include "common/option_parser.h"
+#include "common/program_support.h"
+#include "common/stripe_fields.h"
 
 #include <CGAL/Surface_design/direction_fields.h>
 #include <CGAL/Surface_design/field_aligned_parameterization.h>
@@ -23,9 +24,9 @@
 #include <vector>
 
 namespace SD = CGAL::Surface_design;
-using example::Mesh;
-using example::Point;
-using example::Vector;
+using program::Mesh;
+using program::Point;
+using program::Vector;
 
 namespace {
 
@@ -65,69 +66,47 @@ struct Options
   SD::One_form_convention convention = SD::One_form_convention::projected;
 };
 
-using example::parse_pair;
+using program::parse_pair;
 
 Options parse(int argc, char** argv)
 {
   Options o;
-  example::Once once;
-  bool up_given = false;
-  for(int i = 1; i < argc; ++i)
-  {
-    const std::string a = argv[i];
-    auto next = [&]() { return example::option_value(argc, argv, i); };
-    if(a != "--singularity" && a != "--winding" && !a.empty() && a[0] == '-')
-      once.check(a);
-    if(a == "--field")
-      o.field = next();
-    else if(a == "--scale")
-      o.scale = example::parse_positive(next(), a);
-    else if(a == "--singularity")
-    {
-      const auto [f, k] = parse_pair(next(), "--singularity FACE:INDEX");
-      if(f < 0)
-        throw example::Usage_error("face numbers start at 0");
-      if(k == 0)
-        throw example::Usage_error("--singularity " + std::to_string(f) + ":0 prescribes nothing");
-      for(const auto& [g, l] : o.singularities)
-        if(g == std::size_t(f))
-          throw example::Usage_error("--singularity: face " + std::to_string(f) + " is given more than once");
-      o.singularities.emplace_back(std::size_t(f), int(k));
-    }
-    else if(a == "--winding")
-    {
-      const auto [l, n] = parse_pair(next(), "--winding LOOP:N");
-      if(l < 0)
-        throw example::Usage_error("loop numbers start at 0");
-      if(o.windings.count(std::size_t(l)))
-        throw example::Usage_error("--winding: loop " + std::to_string(l) + " is given more than once");
-      o.windings[std::size_t(l)] = int(n);
-    }
-    else if(a == "--solver")
-      o.solver = example::parse_choice(next(), a, example::solver_names());
-    else if(a == "--convention")
-      o.convention = example::parse_choice(next(), a, {"projected", "angle_rescaled"}) == "projected"
-                       ? SD::One_form_convention::projected
-                       : SD::One_form_convention::angle_rescaled;
-    else if(a == "--output")
-      example::check_output_path(o.output = next(), a, {".ply"});
-    else if(a == "--picture")
-      example::check_output_path(o.picture = next(), a, {".png"});
-    else if(a == "--up")
-    {
-      o.up = example::parse_choice(next(), a, {"+X", "-X", "+Y", "-Y", "+Z", "-Z"});
-      up_given = true;
-    }
-    else if(!a.empty() && a[0] == '-')
-      throw example::Usage_error("unknown option " + a);
-    else if(o.input.empty())
-      o.input = a;
-    else
-      throw example::Usage_error("more than one input file");
-  }
-  if(o.input.empty())
-    throw example::Usage_error("no input mesh");
-  example::check_paths_and_picture({{"INPUT", o.input}, {"--output", o.output}}, o.picture, up_given);
+  program::Option_parser p;
+  p.input(o.input)
+    .value("--field", [&](const std::string& v) { o.field = v; })
+    .value("--scale", [&](const std::string& v) { o.scale = program::parse_positive(v, "--scale"); })
+    .repeated("--singularity",
+              [&](const std::string& v) {
+                const auto [f, k] = parse_pair(v, "--singularity FACE:INDEX");
+                if(f < 0)
+                  throw program::Usage_error("face numbers start at 0");
+                if(k == 0)
+                  throw program::Usage_error("--singularity " + std::to_string(f) + ":0 prescribes nothing");
+                for(const auto& [g, l] : o.singularities)
+                  if(g == std::size_t(f))
+                    throw program::Usage_error("--singularity: face " + std::to_string(f) + " is given more than once");
+                o.singularities.emplace_back(std::size_t(f), int(k));
+              })
+    .repeated("--winding",
+              [&](const std::string& v) {
+                const auto [l, n] = parse_pair(v, "--winding LOOP:N");
+                if(l < 0)
+                  throw program::Usage_error("loop numbers start at 0");
+                if(o.windings.count(std::size_t(l)))
+                  throw program::Usage_error("--winding: loop " + std::to_string(l) + " is given more than once");
+                o.windings[std::size_t(l)] = int(n);
+              })
+    .solver(o.solver)
+    .value("--convention",
+           [&](const std::string& v) {
+             o.convention = program::parse_choice(v, "--convention", {"projected", "angle_rescaled"}) == "projected"
+                              ? SD::One_form_convention::projected
+                              : SD::One_form_convention::angle_rescaled;
+           })
+    .output("--output", o.output, {".ply"})
+    .picture(o.picture, o.up)
+    .parse(argc, argv);
+  program::check_paths_and_picture({{"INPUT", o.input}, {"--output", o.output}}, o.picture, p.given("--up"));
   return o;
 }
 
@@ -141,15 +120,15 @@ std::vector<std::string> split_list(const std::string& list, const std::string& 
     const std::size_t comma = list.find(',', start);
     items.push_back(list.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
     if(items.back().empty())
-      throw example::Usage_error("expected " + what + " (no empty item), got '" + list + "'");
+      throw program::Usage_error("expected " + what + " (no empty item), got '" + list + "'");
     if(comma == std::string::npos)
       return items;
     start = comma + 1;
   }
 }
 
-using example::eigen;
-using example::vertex_normals;
+using program::eigen;
+using program::vertex_normals;
 
 // The vector field the stripes follow, one vector per vertex; `solver` for the fields that solve.
 template <class Solver>
@@ -159,12 +138,12 @@ std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec, const 
   {
     std::vector<double> xyz;
     for(const std::string& item : split_list(spec.substr(5), "--field axis:X,Y,Z"))
-      xyz.push_back(example::parse_double(item, "--field axis:X,Y,Z"));
+      xyz.push_back(program::parse_double(item, "--field axis:X,Y,Z"));
     if(xyz.size() != 3)
-      throw example::Usage_error("expected --field axis:X,Y,Z, got " + spec);
+      throw program::Usage_error("expected --field axis:X,Y,Z, got " + spec);
     const double largest = (std::max)({std::abs(xyz[0]), std::abs(xyz[1]), std::abs(xyz[2])});
     if(largest == 0.)
-      throw example::Usage_error("--field axis:0,0,0 has no direction");
+      throw program::Usage_error("--field axis:0,0,0 has no direction");
     // only the direction matters: scaled to a largest coordinate of 1, so that no square overflows
     return std::vector<Vector>(num_vertices(mesh), Vector(xyz[0] / largest, xyz[1] / largest, xyz[2] / largest));
   }
@@ -172,15 +151,15 @@ std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec, const 
   {
     const std::string rest = spec.substr(5);
     const auto colon = rest.find(':');
-    const long v = example::parse_integer(rest.substr(0, colon), "--field heat:VERTEX[:DEGREES] (VERTEX)", 0,
+    const long v = program::parse_integer(rest.substr(0, colon), "--field heat:VERTEX[:DEGREES] (VERTEX)", 0,
                                           long(num_vertices(mesh)) - 1);
     const double degrees = colon == std::string::npos
                              ? 0.
-                             : example::parse_double(rest.substr(colon + 1), "--field heat:VERTEX:DEGREES (DEGREES)",
+                             : program::parse_double(rest.substr(colon + 1), "--field heat:VERTEX:DEGREES (DEGREES)",
                                                      -360., 360.);
     std::map<Mesh::Face_index, std::size_t> component;
     if(CGAL::Polygon_mesh_processing::connected_components(mesh, boost::make_assoc_property_map(component)) > 1)
-      throw example::Usage_error("--field heat:V covers only the connected component of vertex V, and this mesh has "
+      throw program::Usage_error("--field heat:V covers only the connected component of vertex V, and this mesh has "
                                  "several: use --field axis, smoothest or trivial");
     const Mesh::Vertex_index source_vertex(static_cast<std::uint32_t>(v));
     // the faces where a singularity centres the rings, spokes or spiral
@@ -201,7 +180,7 @@ std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec, const 
     if(!on_boundary.empty())
       std::cout << " (with an edge on the boundary, cannot hold a singularity:" << on_boundary << ")";
     std::cout << '\n';
-    return example::heat_field(mesh, source_vertex, degrees);
+    return program::heat_field(mesh, source_vertex, degrees);
   }
   std::vector<Vector> field(num_vertices(mesh));
   if(spec == "smoothest")
@@ -221,11 +200,11 @@ std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec, const 
     {
       const auto [f, k] = parse_pair(item, "--field trivial:FACE:INDEX,FACE:INDEX,...");
       if(f < 0)
-        throw example::Usage_error("face numbers start at 0");
+        throw program::Usage_error("face numbers start at 0");
       if(k == 0)
-        throw example::Usage_error("--field trivial: index 0 at face " + std::to_string(f) + " prescribes nothing");
+        throw program::Usage_error("--field trivial: index 0 at face " + std::to_string(f) + " prescribes nothing");
       if(!indices.emplace(std::size_t(f), int(k)).second)
-        throw example::Usage_error("--field trivial: face " + std::to_string(f) + " is given more than once");
+        throw program::Usage_error("--field trivial: face " + std::to_string(f) + " is given more than once");
     }
     for(const auto& [f, k] : indices)
       tc.set_index(f, k);
@@ -234,21 +213,21 @@ std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec, const 
     std::cout << "trivial-connection vector field: largest adjustment " << tc.largest_adjustment() << " rad\n";
     return field;
   }
-  throw example::Usage_error("unknown field " + spec + " (axis:X,Y,Z, heat:V[:DEGREES], smoothest or trivial:...)");
+  throw program::Usage_error("unknown field " + spec + " (axis:X,Y,Z, heat:V[:DEGREES], smoothest or trivial:...)");
 }
 
 template <class Solver>
 int run(const Options& o, const Solver& solver)
 {
-  example::Stopwatch clock, total;
-  Mesh mesh = example::read_mesh(o.input);
+  program::Stopwatch clock, total;
+  Mesh mesh = program::read_mesh(o.input);
   std::cout << "read " << o.input << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh)
             << " faces (" << clock.lap() << " ms)\n";
 
   // the field's system (smoothest or trivial connection) has the pattern of the stripes' one: with
   // the default solver, one ordering and analysis serves both on large meshes
   Solver stripe_solver = solver;
-  const Solver field_solver = example::solver_sharing_analysis(stripe_solver);
+  const Solver field_solver = program::solver_sharing_analysis(stripe_solver);
   SD::Field_aligned_parameterizer fap(mesh, SD::parameters::sparse_linear_solver(stripe_solver));
   std::cout << "validate, topology, weights, factorization: " << clock.lap() << " ms\n";
   std::cout << "  " << fap.number_of_connected_components() << " component(s), genus";
@@ -273,13 +252,13 @@ int run(const Options& o, const Solver& solver)
   const double resolved = 0.5 / mean_edge; // one stripe per two average edges: the Nyquist limit
   const double scale = o.scale ? *o.scale : (std::min)(10. / diagonal, 0.1 / mean_edge);
   if(scale >= resolved)
-    throw example::Usage_error("--scale " + example::text(scale) + ": the mesh cannot resolve that many stripes (its "
-                               "average edge would carry " + example::text(scale * mean_edge) +
-                               " stripes; the limit is 0.5; keep below " + example::text(0.15 / mean_edge) +
+    throw program::Usage_error("--scale " + program::text(scale) + ": the mesh cannot resolve that many stripes (its "
+                               "average edge would carry " + program::text(scale * mean_edge) +
+                               " stripes; the limit is 0.5; keep below " + program::text(0.15 / mean_edge) +
                                " for clean stripes)");
   if(scale * diagonal < 1e-6)
-    throw example::Usage_error("--scale " + example::text(scale) + " gives no visible stripe on a mesh of diagonal " +
-                               example::text(diagonal));
+    throw program::Usage_error("--scale " + program::text(scale) + " gives no visible stripe on a mesh of diagonal " +
+                               program::text(diagonal));
   fap.set_field(CGAL::make_property_map(field), scale, o.convention);
   std::cout << "field " << o.field << ", " << scale << " stripes per unit length: " << clock.lap() << " ms\n";
 
@@ -290,7 +269,7 @@ int run(const Options& o, const Solver& solver)
     fap.set_loop_winding(l, n); // checks that the loop exists
     const std::size_t length = fap.loop(l).size();
     if(2 * std::size_t(std::abs(n)) >= length)
-      throw example::Usage_error("--winding " + std::to_string(l) + ":" + std::to_string(n) + ": loop " + std::to_string(l) +
+      throw program::Usage_error("--winding " + std::to_string(l) + ":" + std::to_string(n) + ": loop " + std::to_string(l) +
                                  " has " + std::to_string(length) + " edges, which can carry at most " +
                                  std::to_string((length - 1) / 2) + " turns of alpha (less than pi per edge)");
   }
@@ -322,11 +301,11 @@ int run(const Options& o, const Solver& solver)
       break;
     }
 
-  example::Output_files outputs;
+  program::Output_files outputs;
   if(!o.output.empty())
   {
     std::vector<std::array<std::size_t, 2>> edge_vertices;
-    example::Ply_property omega{"omega", "double", {}}, dalpha{"dalpha", "double", {}};
+    program::Ply_property omega{"omega", "double", {}}, dalpha{"dalpha", "double", {}};
     for(auto e : edges(mesh))
     {
       const auto h = halfedge(e, mesh); // omega and dalpha along h: from vertex1 to vertex2
@@ -334,12 +313,12 @@ int run(const Options& o, const Solver& solver)
       omega.values.push_back(fap.omega(h));
       dalpha.values.push_back(fap.dalpha(h));
     }
-    example::Ply_property alpha_prop{"alpha", "double", {}}, index_prop{"index", "int", {}};
+    program::Ply_property alpha_prop{"alpha", "double", {}}, index_prop{"index", "int", {}};
     for(auto v : vertices(mesh))
       alpha_prop.values.push_back(alpha[v]);
     for(auto f : faces(mesh))
       index_prop.values.push_back(detected[f]);
-    example::write_ply(outputs.stage(o.output), mesh, {alpha_prop}, {index_prop}, edge_vertices, {omega, dalpha});
+    program::write_ply(outputs.stage(o.output), mesh, {alpha_prop}, {index_prop}, edge_vertices, {omega, dalpha});
   }
 
   if(!o.picture.empty())
@@ -355,7 +334,7 @@ int run(const Options& o, const Solver& solver)
     const std::size_t budget = 3000000 / (std::max<std::size_t>)(num_faces(mesh), 1);
     std::size_t n = std::size_t(std::ceil(largest / 0.6));
     n = (std::max<std::size_t>)(1, (std::min)(n, (std::min<std::size_t>)(8, std::size_t(std::sqrt(double(budget))))));
-    example::Vtk_surface vtk;
+    program::Vtk_surface vtk;
     vtk.scalar_name = "stripes";
     for(auto f : faces(mesh))
     {
@@ -392,7 +371,7 @@ int run(const Options& o, const Solver& solver)
     }
     const std::string vtk_path = outputs.stage(o.picture + ".vtk");
     vtk.write(vtk_path);
-    example::render_png(vtk_path, outputs.stage(o.picture), "stripes", -1., 1., o.up);
+    program::render_png(vtk_path, outputs.stage(o.picture), "stripes", -1., 1., o.up);
   }
   outputs.commit();
   std::cout << "total " << total.lap() << " ms\n";
@@ -403,8 +382,8 @@ int run(const Options& o, const Solver& solver)
 
 int main(int argc, char** argv)
 {
-  return example::run_main("stripes", usage, argc, [&] {
+  return program::run_main("stripes", usage, argc, [&] {
     const Options o = parse(argc, argv);
-    return example::with_solver(o.solver, [&o](auto traits) { return run(o, traits); });
+    return program::with_solver(o.solver, [&o](auto traits) { return run(o, traits); });
   });
 }

@@ -15,6 +15,7 @@
 
 #include "editor_session.h"
 #include "../common/configured_paths.h"
+#include "../common/option_parser.h"
 
 #include <httplib.h>
 
@@ -42,7 +43,7 @@ const char* const usage =
   "  --port P            TCP port, 0 to 65535 (default 8080; 0: any free port)\n"
   "  --host ADDRESS      address to listen on (default 127.0.0.1, this machine only)\n"
   "  --data DIR          folder of meshes the page can load (default: the project's data/)\n"
-  "  --web DIR           folder of the page (default: the sources' examples/Editor/web; both\n"
+  "  --web DIR           folder of the page (default: the sources' examples/Programs/Editor/web; both\n"
   "                      defaults come from configured_paths.txt beside the program)\n"
   "  --three DIR         three.js r111 or later as Debian's libjs-three installs it\n"
   "                      (default /usr/share/javascript/three)\n"
@@ -51,8 +52,8 @@ const char* const usage =
 
 struct Options
 {
-  std::string mesh, host = "127.0.0.1", data = example::configured_path("CGAL_SURFACE_DESIGN_DATA_DIR"),
-                    web = example::configured_path("CGAL_SURFACE_DESIGN_EDITOR_WEB_DIR"),
+  std::string mesh, host = "127.0.0.1", data = program::configured_path("CGAL_SURFACE_DESIGN_DATA_DIR"),
+                    web = program::configured_path("CGAL_SURFACE_DESIGN_EDITOR_WEB_DIR"),
                     three = "/usr/share/javascript/three", frames;
   int port = 8080;
 };
@@ -60,36 +61,22 @@ struct Options
 Options parse(int argc, char** argv)
 {
   Options o;
-  for(int i = 1; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    if(arg == "--port")
-      o.port = int(example::parse_integer(example::option_value(argc, argv, i), "--port", 0, 65535));
-    else if(arg == "--host")
-      o.host = example::option_value(argc, argv, i);
-    else if(arg == "--data")
-      o.data = example::option_value(argc, argv, i);
-    else if(arg == "--web")
-      o.web = example::option_value(argc, argv, i);
-    else if(arg == "--three")
-      o.three = example::option_value(argc, argv, i);
-    else if(arg == "--save-frames")
-      o.frames = example::option_value(argc, argv, i);
-    else if(!arg.empty() && arg[0] == '-')
-      throw example::Usage_error("unknown option " + arg);
-    else if(o.mesh.empty())
-      o.mesh = arg;
-    else
-      throw example::Usage_error("more than one mesh given (" + o.mesh + ", " + arg + ")");
-  }
-  if(o.mesh.empty())
-    throw example::Usage_error("no mesh given");
+  auto text = [](std::string& into) { return [&into](const std::string& v) { into = v; }; };
+  program::Option_parser()
+    .input(o.mesh, "no mesh given")
+    .value("--port", [&](const std::string& v) { o.port = int(program::parse_integer(v, "--port", 0, 65535)); })
+    .value("--host", text(o.host))
+    .value("--data", text(o.data))
+    .value("--web", text(o.web))
+    .value("--three", text(o.three))
+    .value("--save-frames", text(o.frames))
+    .parse(argc, argv);
   if(o.host.empty())
-    throw example::Usage_error("--host needs an address");
+    throw program::Usage_error("--host needs an address");
   if(!o.frames.empty() && !std::filesystem::is_directory(o.frames))
-    throw example::Usage_error("--save-frames " + o.frames + ": not a folder");
+    throw program::Usage_error("--save-frames " + o.frames + ": not a folder");
   if(!o.data.empty() && !std::filesystem::is_directory(o.data))
-    throw example::Usage_error("--data " + o.data + ": not a folder");
+    throw program::Usage_error("--data " + o.data + ": not a folder");
   return o;
 }
 
@@ -97,7 +84,7 @@ std::string read_file(const std::string& path, const std::string& what)
 {
   std::ifstream in(path, std::ios::binary);
   if(!in)
-    throw example::Usage_error("cannot read " + path + " (" + what + ")");
+    throw program::Usage_error("cannot read " + path + " (" + what + ")");
   std::ostringstream content;
   content << in.rdbuf();
   return content.str();
@@ -174,7 +161,7 @@ struct Own_address
 
 int main(int argc, char** argv)
 {
-  return example::run_main("surface_design_editor", usage, argc, [&] {
+  return program::run_main("surface_design_editor", usage, argc, [&] {
     const Options o = parse(argc, argv);
     // the page and three.js, read once (a missing file is an error now, not a blank page later)
     const std::map<std::string, std::pair<std::string, const char*>> files{
@@ -192,7 +179,7 @@ int main(int argc, char** argv)
     if(!o.data.empty())
       catalog.add_folder(o.data);
     const std::string first = catalog.add_file(o.mesh);
-    example::Stopwatch clock;
+    program::Stopwatch clock;
     std::mutex mutex; // one edit at a time
     long mesh_version = 0;
     auto session = std::make_unique<editor::Session>(o.mesh, first, mesh_version);

@@ -12,7 +12,7 @@
 #ifndef CGAL_SURFACE_DESIGN_EDITOR_SESSION_H
 #define CGAL_SURFACE_DESIGN_EDITOR_SESSION_H
 
-#include "../common/example_support.h"
+#include "../common/program_support.h"
 #include "../common/stripe_fields.h"
 
 #include <CGAL/Surface_design/direction_fields.h>
@@ -43,9 +43,9 @@
 namespace editor {
 
 namespace SD = CGAL::Surface_design;
-using example::Mesh;
-using example::Point;
-using example::Vector;
+using program::Mesh;
+using program::Point;
+using program::Vector;
 using Json = nlohmann::json;
 using Clock = std::chrono::steady_clock;
 
@@ -115,7 +115,7 @@ public:
   /// `mesh_version` tells the page that the mesh changed. Throws std::runtime_error (unreadable
   /// file) or the library's exceptions (invalid mesh).
   Session(const std::string& path, const std::string& name, long mesh_version = 0)
-    : Session(example::read_mesh(path), name, mesh_version)
+    : Session(program::read_mesh(path), name, mesh_version)
   {}
 
   /// The same for a mesh in memory.
@@ -125,7 +125,7 @@ public:
     const Mesh& mesh = *m_mesh;
     if(num_faces(mesh) == 0)
       throw std::runtime_error(name + " has no face");
-    m_field_solver = example::solver_sharing_analysis(m_stripe_solver);
+    m_field_solver = program::solver_sharing_analysis(m_stripe_solver);
     m_fap = std::make_unique<Parameterizer>(mesh, SD::parameters::sparse_linear_solver(m_stripe_solver));
     m_corner = m_mesh->add_property_map<Mesh::Halfedge_index, double>("h:editor_corner", 0.).first;
     geometry();
@@ -287,14 +287,14 @@ public:
   /// The stripes as an ASCII PLY: alpha per vertex, the prescribed index per face.
   std::string export_ply() const
   {
-    example::Ply_property alpha{"alpha", "double", {}}, index{"index", "int", {}};
+    program::Ply_property alpha{"alpha", "double", {}}, index{"index", "int", {}};
     for(auto v : vertices(*m_mesh))
       alpha.values.push_back(m_fap->alpha(v));
     for(auto f : faces(*m_mesh))
       index.values.push_back(m_fap->index(f));
     const auto file = std::filesystem::temp_directory_path() /
                       ("surface_design_editor_" + std::to_string(::getpid()) + "_" + std::to_string(m_version) + ".ply");
-    example::write_ply(file.string(), *m_mesh, {alpha}, {index});
+    program::write_ply(file.string(), *m_mesh, {alpha}, {index});
     std::ifstream in(file, std::ios::binary);
     std::ostringstream content;
     content << in.rdbuf();
@@ -399,8 +399,8 @@ private:
   void set_stripes(double stripes)
   {
     if(!(stripes > 0.) || stripes > max_stripes())
-      throw Request_error("\"stripes\" = " + example::text(stripes) + ": choose a count in (0, " +
-                          example::text(max_stripes()) + "] (the mesh's average edge must carry less than half a stripe)");
+      throw Request_error("\"stripes\" = " + program::text(stripes) + ": choose a count in (0, " +
+                          program::text(max_stripes()) + "] (the mesh's average edge must carry less than half a stripe)");
     const double before = m_stripes;
     m_stripes = stripes;
     try
@@ -459,7 +459,7 @@ private:
       if(m_components > 1)
         throw Request_error("the heat field covers only the connected component of its source, and " + m_name +
                             " has " + std::to_string(m_components) + " components: use axis, smoothest or trivial");
-      field = example::heat_field(*m_mesh, Mesh::Vertex_index(static_cast<std::uint32_t>(v)), degrees);
+      field = program::heat_field(*m_mesh, Mesh::Vertex_index(static_cast<std::uint32_t>(v)), degrees);
       spec["vertex"] = v;
       spec["degrees"] = degrees;
     }
@@ -621,7 +621,7 @@ private:
     {
       Eigen::Vector3d c = Eigen::Vector3d::Zero();
       for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
-        c += example::eigen(mesh.point(v)) / 3.;
+        c += program::eigen(mesh.point(v)) / 3.;
       m_centroid.push_back(c);
     }
     m_face_component.assign(num_faces(mesh), 0);

@@ -5,7 +5,8 @@
 // Flattening and lays them out as a cutting pattern (Stein, Grinspun & Crane 2018, sec. 4.4).
 // Run without arguments for the usage.
 
-#include "../common/example_support.h"
+#include "common/option_parser.h"
+#include "common/program_support.h"
 
 #include <CGAL/Surface_design/Boundary_first_flattener.h>
 #include <CGAL/Surface_design/developable_cutting.h>
@@ -23,8 +24,8 @@
 
 namespace SD = CGAL::Surface_design;
 namespace P = CGAL::Surface_design::parameters;
-using example::Mesh;
-using example::Point;
+using program::Mesh;
+using program::Point;
 
 namespace {
 
@@ -67,66 +68,39 @@ struct Options
 Options parse(int argc, char** argv)
 {
   Options o;
-  example::Once once;
-  for(int i = 1; i < argc; ++i)
-  {
-    const std::string a = argv[i];
-    auto next = [&]() { return example::option_value(argc, argv, i); };
-    if(!a.empty() && a[0] == '-')
-      once.check(a);
-    if(a == "--epsilon")
-      o.epsilon = example::parse_double(next(), a, 0., 10.);
-    else if(a == "--alignment")
-      o.alignment = example::parse_double(next(), a, 0., 1e3);
-    else if(a == "--no-cut")
-      o.cut = false;
-    else if(a == "--no-split")
-      o.split = false;
-    else if(a == "--sheet")
-    {
-      const std::string value = next();
-      const std::size_t x = value.find('x');
-      if(x == std::string::npos)
-        throw example::Usage_error("--sheet takes WIDTHxHEIGHT in mm, e.g. 210x297 (got \"" + value + "\")");
-      o.sheet_width = example::parse_double(value.substr(0, x), "--sheet (width)", 10., 1e5);
-      o.sheet_height = example::parse_double(value.substr(x + 1), "--sheet (height)", 10., 1e5);
-    }
-    else if(a == "--scale")
-      o.scale = example::parse_double(next(), a, 1e-9, 1e9);
-    else if(a == "--margin")
-      o.margin = example::parse_double(next(), a, 0., 1e4);
-    else if(a == "--fold-angle")
-      o.fold_angle = example::parse_double(next(), a, 0., 180.);
-    else if(a == "--solver")
-      o.solver = example::parse_choice(next(), a, example::solver_names());
-    else if(a == "--output")
-      example::check_output_path(o.output = next(), a, {".obj"});
-    else if(a == "--pattern")
-      example::check_output_path(o.pattern = next(), a, {".svg"});
-    else if(a == "--picture")
-      example::check_output_path(o.picture = next(), a, {".png"});
-    else if(a == "--up")
-      o.up = example::parse_choice(next(), a, {"+X", "-X", "+Y", "-Y", "+Z", "-Z"});
-    else if(!a.empty() && a[0] == '-')
-      throw example::Usage_error("unknown option " + a);
-    else if(o.input.empty())
-      o.input = a;
-    else
-      throw example::Usage_error("more than one input file");
-  }
-  if(o.input.empty())
-    throw example::Usage_error("no input mesh");
+  program::Option_parser p;
+  p.input(o.input)
+    .value("--epsilon", [&](const std::string& v) { o.epsilon = program::parse_double(v, "--epsilon", 0., 10.); })
+    .value("--alignment", [&](const std::string& v) { o.alignment = program::parse_double(v, "--alignment", 0., 1e3); })
+    .flag("--no-cut", [&] { o.cut = false; })
+    .flag("--no-split", [&] { o.split = false; })
+    .value("--sheet",
+           [&](const std::string& v) {
+             const std::size_t x = v.find('x');
+             if(x == std::string::npos)
+               throw program::Usage_error("--sheet takes WIDTHxHEIGHT in mm, e.g. 210x297 (got \"" + v + "\")");
+             o.sheet_width = program::parse_double(v.substr(0, x), "--sheet (width)", 10., 1e5);
+             o.sheet_height = program::parse_double(v.substr(x + 1), "--sheet (height)", 10., 1e5);
+           })
+    .value("--scale", [&](const std::string& v) { o.scale = program::parse_double(v, "--scale", 1e-9, 1e9); })
+    .value("--margin", [&](const std::string& v) { o.margin = program::parse_double(v, "--margin", 0., 1e4); })
+    .value("--fold-angle", [&](const std::string& v) { o.fold_angle = program::parse_double(v, "--fold-angle", 0., 180.); })
+    .solver(o.solver)
+    .output("--output", o.output, {".obj"})
+    .output("--pattern", o.pattern, {".svg"})
+    .picture(o.picture, o.up)
+    .parse(argc, argv);
   if(o.output.empty())
-    throw example::Usage_error("--output PIECES.obj is required");
+    throw program::Usage_error("--output PIECES.obj is required");
   if(o.pattern.empty())
-    throw example::Usage_error("--pattern PATTERN.svg is required");
-  if(!o.cut && (once.contains("--epsilon") || once.contains("--alignment") || once.contains("--no-split")))
-    throw example::Usage_error("--epsilon, --alignment and --no-split apply to the cut, not to --no-cut");
+    throw program::Usage_error("--pattern PATTERN.svg is required");
+  if(!o.cut && (p.given("--epsilon") || p.given("--alignment") || p.given("--no-split")))
+    throw program::Usage_error("--epsilon, --alignment and --no-split apply to the cut, not to --no-cut");
   if(!(2. * o.margin < std::min(o.sheet_width, o.sheet_height)))
-    throw example::Usage_error("--margin " + example::text(o.margin) + " leaves no room on a " +
-                               example::text(o.sheet_width) + " x " + example::text(o.sheet_height) + " mm sheet");
-  example::check_paths_and_picture({{"INPUT", o.input}, {"--output", o.output}, {"--pattern", o.pattern}}, o.picture,
-                                   once.contains("--up"));
+    throw program::Usage_error("--margin " + program::text(o.margin) + " leaves no room on a " +
+                               program::text(o.sheet_width) + " x " + program::text(o.sheet_height) + " mm sheet");
+  program::check_paths_and_picture({{"INPUT", o.input}, {"--output", o.output}, {"--pattern", o.pattern}}, o.picture,
+                                   p.given("--up"));
   return o;
 }
 
@@ -163,9 +137,9 @@ void write_obj(const std::string& path, const Mesh& input, const Mesh& pieces,
 // z = min z, the laid-out pattern coloured by the log of the area scale.
 void write_picture(const Mesh& input, const std::vector<bool>& cut_edge, const Mesh& pieces,
                    const Mesh::Property_map<Mesh::Vertex_index, Uv>& uv, const std::vector<double>& face_log_area,
-                   const Options& o, example::Output_files& outputs)
+                   const Options& o, program::Output_files& outputs)
 {
-  example::Vtk_surface vtk;
+  program::Vtk_surface vtk;
   vtk.scalar_name = "shade";
   // the design, turned so that `up` is +Y and the view is along -Z
   Eigen::Matrix3d turn = Eigen::Matrix3d::Identity();
@@ -242,14 +216,14 @@ void write_picture(const Mesh& input, const std::vector<bool>& cut_edge, const M
   // 0..1 distortion blue - white - red, 1.5 cut ribbons dark red, 2..3 grey shading
   const std::string colormap =
     "0,0.15,0.3,0.75,0.1667,1,1,1,0.3333,0.75,0.1,0.1,0.34,0.45,0.05,0.05,0.6,0.45,0.05,0.05,0.6667,0.5,0.52,0.56,1,0.97,0.97,0.96";
-  example::render_png(vtk_path, outputs.stage(o.picture), "shade", 0., 3., "+Y", colormap);
+  program::render_png(vtk_path, outputs.stage(o.picture), "shade", 0., 3., "+Y", colormap);
 }
 
 template <class Traits>
 int run(const Options& o, Traits traits)
 {
-  example::Stopwatch clock, total;
-  const Mesh input = example::read_mesh(o.input);
+  program::Stopwatch clock, total;
+  const Mesh input = program::read_mesh(o.input);
   std::cout << "read " << o.input << ": " << num_vertices(input) << " vertices, " << num_faces(input) << " faces\n";
 
   Mesh pieces;
@@ -258,7 +232,7 @@ int run(const Options& o, Traits traits)
   if(o.cut)
   {
     std::vector<Mesh::Edge_index> cut;
-    const SD::Developable_cut_report r = SD::compute_developable_cut(
+    const SD::Developable_cut_result r = SD::compute_developable_cut(
       input, std::back_inserter(cut), P::cut_tolerance(o.epsilon, P::ruling_alignment_weight(o.alignment)));
     for(auto e : cut)
       cut_edge[std::size_t(e)] = true;
@@ -298,7 +272,7 @@ int run(const Options& o, Traits traits)
     if(!o.split)
       break;
     std::vector<Mesh::Edge_index> split_cut;
-    const SD::Overlap_splitting_report r = SD::compute_overlap_splitting_cut(pieces, uv, std::back_inserter(split_cut));
+    const SD::Overlap_splitting_result r = SD::compute_overlap_splitting_cut(pieces, uv, std::back_inserter(split_cut));
     if(r.overlapping_pieces == 0)
       break;
     if(r.split_pieces == 0 || round == max_split_rounds)
@@ -349,7 +323,7 @@ int run(const Options& o, Traits traits)
   std::printf("pattern: %zu sheet(s) of %g x %g mm at %g mm per model unit\n", layout.sheets, layout.sheet_width,
               layout.sheet_height, layout.scale);
 
-  example::Output_files outputs;
+  program::Output_files outputs;
   write_obj(outputs.stage(o.output), input, pieces, original, uv);
   {
     std::ofstream svg(outputs.stage(o.pattern));
@@ -372,8 +346,8 @@ int run(const Options& o, Traits traits)
 
 int main(int argc, char** argv)
 {
-  return example::run_main("flatten", usage, argc, [&] {
+  return program::run_main("flatten", usage, argc, [&] {
     const Options o = parse(argc, argv);
-    return example::with_solver(o.solver, [&](auto traits) { return run(o, traits); });
+    return program::with_solver(o.solver, [&](auto traits) { return run(o, traits); });
   });
 }

@@ -6,7 +6,8 @@
 // are hexagons triangulated with m segments per side; the loops are fixed, every other vertex goes
 // to the barycentre of its neighbours in one sparse solve.
 
-#include "embedding_support.h"
+#include "common/embedding_support.h"
+#include "common/option_parser.h"
 
 #include <CGAL/Surface_design/barycentric_embedding.h>
 #include <CGAL/Surface_design/mesh_generators.h>
@@ -18,7 +19,7 @@
 #include <vector>
 
 namespace SD = CGAL::Surface_design;
-using example::Mesh;
+using program::Mesh;
 
 namespace {
 
@@ -53,42 +54,32 @@ int main(int argc, char** argv)
     bool iterative = false;
     std::string output, png;
     SD::Octahedron_loop_placement placement = SD::Octahedron_loop_placement::equal_angles;
-    example::Once once;
-    for(int i = 1; i < argc; ++i)
-    {
-      const std::string a = argv[i];
-      once.check(a);
-      auto value = [&] { return example::option_value(argc, argv, i); };
-      if(a == "--m")
-        m = example::parse_count(value(), a, 100);
-      else if(a == "--radius")
-        radius = example::parse_double(value(), a);
-      else if(a == "--output")
-        example::check_output_path(output = value(), a, {".off", ".obj", ".ply", ".stl"});
-      else if(a == "--picture")
-        example::check_output_path(png = value(), a, {".png"});
-      else if(a == "--iterative")
-        iterative = true;
-      else if(a == "--placement")
-        placement = example::parse_choice(value(), a, {"equal", "radial"}) == "equal"
-                      ? SD::Octahedron_loop_placement::equal_angles
-                      : SD::Octahedron_loop_placement::radial_projection;
-      else
-        throw example::Usage_error("unknown option " + a);
-    }
+    program::Option_parser p;
+    p.value("--m", [&](const std::string& v) { m = program::parse_count(v, "--m", 100); })
+      .value("--radius", [&](const std::string& v) { radius = program::parse_double(v, "--radius"); })
+      .output("--output", output, {".off", ".obj", ".ply", ".stl"})
+      .output("--picture", png, {".png"})
+      .flag("--iterative", [&] { iterative = true; })
+      .value("--placement",
+             [&](const std::string& v) {
+               placement = program::parse_choice(v, "--placement", {"equal", "radial"}) == "equal"
+                             ? SD::Octahedron_loop_placement::equal_angles
+                             : SD::Octahedron_loop_placement::radial_projection;
+             })
+      .parse(argc, argv);
     if(m == 0)
-      throw example::Usage_error("--m M (segments per hexagon side, 1..100) is required");
-    if(!once.contains("--radius"))
-      throw example::Usage_error("--radius R is required");
+      throw program::Usage_error("--m M (segments per hexagon side, 1..100) is required");
+    if(!p.given("--radius"))
+      throw program::Usage_error("--radius R is required");
     // the loops lie in the planes at distance 3: two of them meet when R >= 3 (a loop leaves its
     // face of the cube [-3, 3]^3 and cuts its neighbours), and below 1e-6 the triangles at the
     // loops are numerically degenerate
     if(!(radius >= 3e-6 && radius < 3.))
-      throw example::Usage_error("--radius must lie in [3e-6, 3): the loops lie in the planes at distance 3 and "
-                                 "would meet at R >= 3; got " + example::text(radius));
+      throw program::Usage_error("--radius must lie in [3e-6, 3): the loops lie in the planes at distance 3 and "
+                                 "would meet at R >= 3; got " + program::text(radius));
     if(iterative && m > 30)
-      throw example::Usage_error("--iterative needs m <= 30 (its steps grow like m^4); got " + std::to_string(m));
-    example::check_paths_and_picture({{"--output", output}}, png, false);
+      throw program::Usage_error("--iterative needs m <= 30 (its steps grow like m^4); got " + std::to_string(m));
+    program::check_paths_and_picture({{"--output", output}}, png, false);
 
     Mesh mesh;
     const auto loops = SD::make_octahedron_membrane(mesh, m, radius, 3., placement);
@@ -97,11 +88,11 @@ int main(int argc, char** argv)
       fixed.insert(fixed.end(), loop.begin(), loop.end());
     Mesh flat = mesh; // the starting positions of the iterative method
 
-    example::Stopwatch clock;
+    program::Stopwatch clock;
     SD::barycentric_embedding(mesh, fixed);
     const double direct_ms = clock.lap();
     std::printf("vertices %zu triangles %zu area %.6f\n", std::size_t(num_vertices(mesh)),
-                std::size_t(num_faces(mesh)), example::surface_area(mesh));
+                std::size_t(num_faces(mesh)), program::surface_area(mesh));
     std::fprintf(stderr, "direct solve: %.3f ms\n", direct_ms);
 
     if(iterative)
@@ -119,20 +110,20 @@ int main(int argc, char** argv)
                                : gap > 1e-3 * radius ? " (stopped by the area criterion far from the limit)" : "");
       std::fprintf(stderr, "iterative: %.3f ms (%.1f x the direct solve)\n", ms, ms / direct_ms);
     }
-    example::Output_files outputs;
+    program::Output_files outputs;
     if(!output.empty())
-      example::write_mesh(output, mesh, outputs);
+      program::write_mesh(output, mesh, outputs);
     if(!png.empty())
     {
       std::vector<double> height;
       for(auto v : vertices(mesh))
         height.push_back(mesh.point(v).z());
-      example::picture(mesh, height, "z", -3., 3., png, outputs);
+      program::picture(mesh, height, "z", -3., 3., png, outputs);
     }
     outputs.commit();
     return 0;
   }
-  catch(const example::Usage_error& e)
+  catch(const program::Usage_error& e)
   {
     std::cerr << "octahedron_membrane: " << e.what() << "\n(run without arguments for the usage)\n";
     return 1;

@@ -7,7 +7,7 @@
 #ifndef CGAL_SURFACE_DESIGN_EXAMPLES_EMBEDDING_SUPPORT_H
 #define CGAL_SURFACE_DESIGN_EXAMPLES_EMBEDDING_SUPPORT_H
 
-#include "../common/example_support.h"
+#include "program_support.h"
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-namespace example {
+namespace program {
 
 /// Writes `png` + ".vtk" (faces fanned into triangles, vertex normals, the scalar `values`) and
 /// renders it to `png` with f3d, coloured over [lo, hi], both through `outputs` (renamed when the
@@ -77,6 +77,6 @@ inline std::size_t parse_count(const std::string& text, const std::string& optio
   return std::size_t(parse_integer(text, option, 1, largest));
 }
 
-} // namespace example
+} // namespace program
 
 #endif // CGAL_SURFACE_DESIGN_EXAMPLES_EMBEDDING_SUPPORT_H

@@ -6,7 +6,8 @@
 // system is factored once; every step is one update() (three back-substitutions). Writes every
 // frame and a picture of frames 0, 5 and 10, and compares with the paper's iterative method.
 
-#include "embedding_support.h"
+#include "common/embedding_support.h"
+#include "common/option_parser.h"
 
 #include <CGAL/Surface_design/Barycentric_embedder.h>
 #include <CGAL/Surface_design/barycentric_embedding.h>
@@ -22,8 +23,8 @@
 #include <vector>
 
 namespace SD = CGAL::Surface_design;
-using example::Mesh;
-using example::Point;
+using program::Mesh;
+using program::Point;
 
 namespace {
 
@@ -45,43 +46,30 @@ int main(int argc, char** argv)
     double radius = 1., step = 0.3;
     std::string dir;
     bool iterative = true;
-    example::Once once;
-    for(int i = 1; i < argc; ++i)
-    {
-      const std::string a = argv[i];
-      once.check(a);
-      auto value = [&] { return example::option_value(argc, argv, i); };
-      if(a == "--m")
-        m = example::parse_count(value(), a, 100);
-      else if(a == "--radius")
-        radius = example::parse_double(value(), a);
-      else if(a == "--steps")
-        steps = example::parse_count(value(), a, 1000);
-      else if(a == "--step")
-        step = example::parse_positive(value(), a);
-      else if(a == "--out-dir")
-        dir = value();
-      else if(a == "--no-iterative")
-        iterative = false;
-      else
-        throw example::Usage_error("unknown option " + a);
-    }
+    program::Option_parser()
+      .value("--m", [&](const std::string& v) { m = program::parse_count(v, "--m", 100); })
+      .value("--radius", [&](const std::string& v) { radius = program::parse_double(v, "--radius"); })
+      .value("--steps", [&](const std::string& v) { steps = program::parse_count(v, "--steps", 1000); })
+      .value("--step", [&](const std::string& v) { step = program::parse_positive(v, "--step"); })
+      .value("--out-dir", [&](const std::string& v) { dir = v; })
+      .flag("--no-iterative", [&] { iterative = false; })
+      .parse(argc, argv);
     if(dir.empty())
-      throw example::Usage_error("--out-dir DIR (an existing, writable folder for the frames) is required");
+      throw program::Usage_error("--out-dir DIR (an existing, writable folder for the frames) is required");
     namespace fs = std::filesystem;
     std::error_code ec;
     if(!fs::is_directory(dir, ec) || access(dir.c_str(), W_OK) != 0)
-      throw example::Usage_error("--out-dir: \"" + dir + "\" is not an existing, writable folder");
+      throw program::Usage_error("--out-dir: \"" + dir + "\" is not an existing, writable folder");
     // Larger loops fold the surface over a moving loop in the middle frames (first seen at
     // R = 1.6 for m = 8, 12); the loops start at z = +-3 and meet at z = 0.
     if(!(radius >= 3e-6 && radius <= 1.5))
-      throw example::Usage_error("--radius must lie in [3e-6, 1.5] (larger loops fold the surface while they move); got " +
-                                 example::text(radius));
+      throw program::Usage_error("--radius must lie in [3e-6, 1.5] (larger loops fold the surface while they move); got " +
+                                 program::text(radius));
     if(double(steps) * step > 3. + 1e-12)
-      throw example::Usage_error("--steps times --step must be at most 3: L1 and L2 start at z = 3 and -3 and meet at "
-                                 "z = 0; got " + example::text(double(steps) * step));
+      throw program::Usage_error("--steps times --step must be at most 3: L1 and L2 start at z = 3 and -3 and meet at "
+                                 "z = 0; got " + program::text(double(steps) * step));
     if(iterative && m > 30)
-      throw example::Usage_error("the iterative comparison needs m <= 30 (its steps grow like m^4): give --no-iterative");
+      throw program::Usage_error("the iterative comparison needs m <= 30 (its steps grow like m^4): give --no-iterative");
 
     Mesh mesh;
     const auto loops = SD::make_octahedron_membrane(mesh, m, radius);
@@ -90,7 +78,7 @@ int main(int argc, char** argv)
       fixed.insert(fixed.end(), loop.begin(), loop.end());
     Mesh reference = mesh; // for the iterative method, which restarts from the previous frame
 
-    example::Stopwatch clock;
+    program::Stopwatch clock;
     SD::Barycentric_embedder<Mesh> embedder(mesh, fixed); // Table 2, process 1 (factorization)
     const double factor_ms = clock.lap();
     embedder.update();
@@ -104,22 +92,22 @@ int main(int argc, char** argv)
     }
     std::printf("vertices %zu triangles %zu; factor %.3f ms\n", std::size_t(num_vertices(mesh)),
                 std::size_t(num_faces(mesh)), factor_ms);
-    std::printf("frame  0: area %.6f\n", example::surface_area(mesh));
+    std::printf("frame  0: area %.6f\n", program::surface_area(mesh));
 
-    example::Output_files outputs;
-    const bool pictures = example::on_path("f3d") && (std::getenv("DISPLAY") != nullptr || example::on_path("xvfb-run"));
+    program::Output_files outputs;
+    const bool pictures = program::on_path("f3d") && (std::getenv("DISPLAY") != nullptr || program::on_path("xvfb-run"));
     if(!pictures)
       std::cout << "note: no pictures (they need f3d and xvfb: apt-get install f3d xvfb xauth)\n";
     auto write_frame = [&](std::size_t k) {
       char name[64];
       std::snprintf(name, sizeof name, "/frame_%02zu.off", k);
-      example::write_mesh(dir + name, mesh, outputs);
+      program::write_mesh(dir + name, mesh, outputs);
       if(pictures && (k == 0 || 2 * k == steps || k == steps))
       {
         std::vector<double> height;
         for(auto v : vertices(mesh))
           height.push_back(mesh.point(v).z());
-        example::picture(mesh, height, "z", -3., 3., dir + "/deformation_" + std::to_string(k) + ".png", outputs);
+        program::picture(mesh, height, "z", -3., 3., dir + "/deformation_" + std::to_string(k) + ".png", outputs);
       }
     };
     write_frame(0);
@@ -147,7 +135,7 @@ int main(int argc, char** argv)
           worst_gap = (std::max)(worst_gap, std::sqrt(CGAL::squared_distance(mesh.point(v), reference.point(v))));
       }
       std::printf("frame %2zu: L1 at z = %+.1f, L2 at z = %+.1f, area %.6f\n", k,
-                  mesh.point(loops[0][0]).z(), mesh.point(loops[1][0]).z(), example::surface_area(mesh));
+                  mesh.point(loops[0][0]).z(), mesh.point(loops[1][0]).z(), program::surface_area(mesh));
       write_frame(k);
     }
     std::printf("direct: factor %.3f ms + %zu updates %.3f ms = %.3f ms\n", factor_ms, steps + 1,
@@ -159,7 +147,7 @@ int main(int argc, char** argv)
     outputs.commit();
     return 0;
   }
-  catch(const example::Usage_error& e)
+  catch(const program::Usage_error& e)
   {
     std::cerr << "octahedron_deformation: " << e.what() << "\n\n" << usage;
     return 1;

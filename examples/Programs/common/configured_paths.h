@@ -15,7 +15,7 @@
 #include <fstream>
 #include <string>
 
-namespace example {
+namespace program {
 
 /// The value of NAME: the environment variable if set and not empty, else its line in
 /// configured_paths.txt beside the running program, else "".
@@ -34,6 +34,6 @@ inline std::string configured_path(const std::string& name)
   return {};
 }
 
-} // namespace example
+} // namespace program
 
 #endif // CGAL_SURFACE_DESIGN_CONFIGURED_PATHS_H

@@ -10,7 +10,7 @@
 #ifndef CGAL_SURFACE_DESIGN_EXAMPLE_STRIPE_FIELDS_H
 #define CGAL_SURFACE_DESIGN_EXAMPLE_STRIPE_FIELDS_H
 
-#include "example_support.h"
+#include "program_support.h"
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 
@@ -21,7 +21,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace example {
+namespace program {
 
 inline Eigen::Vector3d eigen(const Point& p) { return Eigen::Vector3d(p.x(), p.y(), p.z()); }
 
@@ -177,6 +177,6 @@ inline std::vector<Vector> heat_field(const Mesh& mesh, Mesh::Vertex_index sourc
   return field;
 }
 
-} // namespace example
+} // namespace program
 
 #endif // CGAL_SURFACE_DESIGN_EXAMPLE_STRIPE_FIELDS_H
