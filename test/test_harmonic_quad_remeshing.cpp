@@ -47,6 +47,7 @@
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/curves.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/net_cells.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/odd_faces.h>
+#include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/quad_net.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/spectacles.h>
 #include <CGAL/Surface_design/mesh_generators.h>
 #include <CGAL/Surface_design/quad_mesh_quality.h>
@@ -124,7 +125,7 @@ void check_harmonic(const Mesh& mesh, SD::Harmonic_weights weights, const std::s
   REQUIRE(values.size() == num_vertices(mesh));
   REQUIRE(remesher.constraints().size() >= 2);
   for(const auto& [v, value] : remesher.constraints())
-    CHECK(u[v] == value); // exactly: constrained values are copied, not solved for
+    CHECK(values.at(v) == value); // exactly: constrained values are copied, not solved for
   CHECK(remesher.harmonic_residual() <= 1e-10);
   // the maximum principle, for weights that are all positive
   if(remesher.number_of_negative_weights() == 0)
@@ -215,7 +216,7 @@ std::pair<std::size_t, std::size_t> negative_cotangent_edges(const Mesh& mesh, b
 // same order, the same polygons, the old faces kept in front of the new ones.
 template <class Out, class Mesh>
 void check_appended_remesh(const Mesh& mesh, SD::Harmonic_quad_remesher<Mesh>& remesher, bool all_quads,
-                           const Quad_mesh& reference, const SD::Harmonic_quad_remeshing_report& rr,
+                           const Quad_mesh& reference, const SD::Harmonic_quad_remeshing_result& rr,
                            const SD::Quad_mesh_quality& qr)
 {
   using Out_vertex = typename boost::graph_traits<Out>::vertex_descriptor;
@@ -223,7 +224,7 @@ void check_appended_remesh(const Mesh& mesh, SD::Harmonic_quad_remesher<Mesh>& r
   const test::Mesh_snapshot expected(reference);
   // (the Hausdorff distance is not needed: the points are compared with the reference's)
   const auto no_hausdorff = P::hausdorff_error_bound(1.);
-  auto check_like_reference = [&](const SD::Quad_mesh_quality& q, const SD::Harmonic_quad_remeshing_report& r,
+  auto check_like_reference = [&](const SD::Quad_mesh_quality& q, const SD::Harmonic_quad_remeshing_result& r,
                                   const test::Mesh_snapshot& got) {
     CHECK(q.valid);
     CHECK(q.same_topology);
@@ -242,7 +243,7 @@ void check_appended_remesh(const Mesh& mesh, SD::Harmonic_quad_remesher<Mesh>& r
   };
   {
     Out fresh;
-    const SD::Harmonic_quad_remeshing_report r = remesher.remesh(fresh, P::all_quads(all_quads));
+    const SD::Harmonic_quad_remeshing_result r = remesher.remesh(fresh, P::all_quads(all_quads));
     check_like_reference(SD::quad_mesh_quality(fresh, mesh, CGAL::parameters::default_values(), no_hausdorff), r,
                          test::Mesh_snapshot(fresh));
   }
@@ -263,10 +264,12 @@ void check_appended_remesh(const Mesh& mesh, SD::Harmonic_quad_remesher<Mesh>& r
   const test::Mesh_snapshot before(out);
   const std::size_t old_vertices = num_vertices(out), old_faces = num_faces(out);
   CHECK_THROWS_AS(SD::harmonic_quad_remeshing(mesh, out, P::target_edge_length(-1.)), SD::Invalid_parameter);
+  CHECK_THROWS_AS(SD::harmonic_quad_remeshing(mesh, out, P::harmonic_weights(static_cast<SD::Harmonic_weights>(7))),
+                  SD::Invalid_parameter);
   CHECK(test::Mesh_snapshot(out) == before);
 
   // (the free function: the same remesh, since the constraints are the default ones)
-  const SD::Harmonic_quad_remeshing_report r = SD::harmonic_quad_remeshing(mesh, out, P::all_quads(all_quads));
+  const SD::Harmonic_quad_remeshing_result r = SD::harmonic_quad_remeshing(mesh, out, P::all_quads(all_quads));
   CHECK(CGAL::is_valid_polygon_mesh(out));
   CHECK(num_vertices(out) == old_vertices + r.vertices);
   CHECK(num_faces(out) == old_faces + r.faces);
@@ -320,6 +323,26 @@ TEMPLATE_TEST_CASE("The harmonic function meets its constraints and is harmonic 
 #else
   SD_CHOLMOD_UNAVAILABLE("the LDLT / CHOLMOD cross-check of the harmonic function");
 #endif
+}
+
+TEMPLATE_TEST_CASE("The remesher's types are deduced from the mesh and the named parameters",
+                   "[harmonic_quad][harmonic]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  Mesh torus;
+  SD::make_torus(torus, 24, 10, 1., 0.3);
+  SD::Harmonic_quad_remesher plain(torus);
+  static_assert(std::is_same_v<decltype(plain), SD::Harmonic_quad_remesher<Mesh>>);
+  const auto vpm = get(CGAL::vertex_point, torus); // a writable map: its own type is deduced
+  SD::Harmonic_quad_remesher chosen(torus, P::sparse_linear_solver(SD::Simplicial_ldlt_solver_traits()).vertex_point_map(vpm));
+  static_assert(std::is_same_v<decltype(chosen), SD::Harmonic_quad_remesher<Mesh, std::decay_t<decltype(vpm)>,
+                                                                            SD::Simplicial_ldlt_solver_traits>>);
+  // the same function either way
+  const std::vector<double>& a = plain.harmonic_function();
+  const std::vector<double>& b = chosen.harmonic_function();
+  REQUIRE(a.size() == b.size());
+  for(std::size_t v = 0; v < a.size(); ++v)
+    CHECK(std::abs(a[v] - b[v]) <= 1e-9);
 }
 
 TEMPLATE_TEST_CASE("Linear functions are harmonic on a planar mesh with obtuse triangles, with both weights",
@@ -560,7 +583,7 @@ TEST_CASE("Odd faces: a line that ends on an isoline is continued to the next T-
   H::Polygon_soup soup;
   auto add = [&](double x, double y) {
     soup.points.emplace_back(x, y, 0.);
-    soup.kind.push_back(0);
+    soup.kind.push_back(H::Net_point_kind::crossing);
     return soup.points.size() - 1;
   };
   std::size_t v[3][5];
@@ -603,7 +626,7 @@ TEST_CASE("Odd faces: a single pentagon is led to the boundary; a triangle is me
   // the lowest band of the previous case only: one pentagon above two quads
   H::Polygon_soup soup;
   soup.points = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}, {0, 2, 0}, {2, 2, 0}};
-  soup.kind.assign(soup.points.size(), 0);
+  soup.kind.assign(soup.points.size(), H::Net_point_kind::crossing);
   soup.faces = {{0, 1, 4, 3}, {1, 2, 5, 4}, {3, 4, 5, 7, 6}};
   H::Odd_face_statistics s = H::Odd_face_pairing(soup).run();
   CHECK(s.odd_faces == 1);
@@ -622,7 +645,7 @@ TEST_CASE("Odd faces: a single pentagon is led to the boundary; a triangle is me
   // across their edge instead of getting a vertex there (which would leave two flat corners)
   H::Polygon_soup tri;
   tri.points = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}, {3, 1, 0}};
-  tri.kind.assign(tri.points.size(), 0);
+  tri.kind.assign(tri.points.size(), H::Net_point_kind::crossing);
   tri.faces = {{0, 1, 5, 4}, {1, 2, 6}, {1, 6, 5}, {2, 3, 7, 6}};
   s = H::Odd_face_pairing(tri).run();
   CHECK(s.odd_faces == 2);
@@ -643,7 +666,7 @@ TEST_CASE("Even polygons split into quads: diagonals across, a centre where a pa
   // right (6) side
   H::Polygon_soup soup;
   soup.points = {{0, 0, 0}, {0.5, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0.5, 1, 0}, {0, 1, 0}, {1, 0.5, 0}};
-  soup.kind.assign(soup.points.size(), 0);
+  soup.kind.assign(soup.points.size(), H::Net_point_kind::crossing);
   std::set<std::pair<std::size_t, std::size_t>> edges;
   H::Even_polygon_splitter splitter(soup, edges);
   auto worst_corner = [&](const std::vector<std::array<std::size_t, 4>>& quads) {
@@ -702,7 +725,7 @@ TEMPLATE_TEST_CASE("A cylinder with its rims as minimum and maximum becomes quad
   }
   REQUIRE(rims.size() == 96);
   Quad_mesh out;
-  const SD::Harmonic_quad_remeshing_report r =
+  const SD::Harmonic_quad_remeshing_result r =
     SD::harmonic_quad_remeshing(mesh, out, P::harmonic_constraints(rims, P::target_edge_length(0.25)));
   const SD::Quad_mesh_quality q = SD::quad_mesh_quality(out, mesh);
   INFO("faces " << q.faces << " quads " << q.faces_by_sides[1] << "; lines " << r.gradient_lines << " started "
@@ -729,6 +752,84 @@ TEMPLATE_TEST_CASE("A cylinder with its rims as minimum and maximum becomes quad
   CHECK(qa.valid);
   CHECK(qa.same_topology);
   CHECK(qa.faces_by_sides[1] == qa.faces);
+}
+
+TEST_CASE("The net's four phases on a cylinder: levels, crossings and spacing, tracing, assembly",
+          "[harmonic_quad][net]")
+{
+  // A cylinder of radius 1 and height 4 with its rims at 0 and 1: u = z / 4 (|grad u| = 1/4), so
+  // with h = 0.25 the levels are 1/16 apart, every isoline is a circle of length 2 pi, and
+  // 2 pi / h = 25.1 lines run straight up, each crossing every isoline.
+  using Mesh = CGAL::Surface_mesh<test::Point>;
+  Soup_points points;
+  Soup_triangles triangles;
+  test::ruled_soup(48, 40, false, false, points, triangles, 4.);
+  const Mesh mesh = from_soup<Mesh>(points, triangles);
+  std::vector<std::pair<Mesh::Vertex_index, double>> rims;
+  for(auto v : vertices(mesh))
+  {
+    const double z = mesh.point(v).z();
+    if(z < 1e-9 || z > 4. - 1e-9)
+      rims.emplace_back(v, z < 1e-9 ? 0. : 1.);
+  }
+  SD::Harmonic_quad_remesher<Mesh> remesher(mesh, P::harmonic_constraints(rims));
+  const std::vector<double>& u = remesher.harmonic_function();
+  const SDI::Mesh_indices<Mesh> idx(mesh);
+  const H::Trace_mesh m = H::make_trace_mesh(idx, get(CGAL::vertex_point, mesh));
+  for(auto v : vertices(mesh))
+    REQUIRE(std::abs(u[idx.index(v)] - mesh.point(v).z() / 4.) <= 1e-9); // the function is z / 4
+  H::Net_options options;
+  options.edge_length = 0.25;
+
+  // levels: h times the gradient norm apart, strictly inside (0, 1)
+  const std::vector<double> levels = H::Quad_net_builder(m, u, options).regular_levels();
+  REQUIRE(levels.size() >= 14);
+  CHECK(levels.size() <= 16);
+  for(std::size_t k = 0; k < levels.size(); ++k)
+  {
+    CHECK(levels[k] > 0.);
+    CHECK(levels[k] < 1.);
+    if(k > 0)
+      CHECK(std::abs(levels[k] - levels[k - 1] - 1. / 16.) <= 1e-6);
+  }
+
+  H::Quad_net_builder builder(m, u, options);
+  const H::Polygon_soup soup = builder.build();
+  const H::Net_statistics& stats = builder.statistics();
+  // one closed isoline of length 2 pi (to the chords' error) per level
+  CHECK(stats.levels == levels.size());
+  REQUIRE(builder.isolines().size() == levels.size());
+  for(const H::Isoline& iso : builder.isolines())
+  {
+    CHECK(iso.closed);
+    CHECK(iso.role == H::Curve_role::level_set);
+    CHECK(std::abs(iso.length() - 2. * SDI::pi) <= 0.01);
+  }
+  // crossings and spacing: the lines keep their spacing, none stops or merges, and none starts
+  // but those that leave the lower rim
+  INFO("lines: " << stats.gradient_lines << " traced, " << stats.started_lines << " started, " << stats.stopped_lines
+                 << " stopped; levels " << levels.size());
+  CHECK(stats.stopped_lines == 0);
+  CHECK(stats.merged_lines == 0);
+  // tracing: every line lands on the next isoline or the rim, none is lost
+  CHECK(stats.lost_lines == 0);
+  // assembly: only quads, one per line and band, a crossing at every inner corner
+  const std::size_t lines_around = stats.gradient_lines / (levels.size() + 1);
+  CHECK(lines_around * (levels.size() + 1) == stats.gradient_lines); // the same lines in every band
+  CHECK(lines_around >= 24);
+  CHECK(lines_around <= 26);
+  CHECK(stats.started_lines == lines_around);
+  CHECK(soup.faces.size() == lines_around * (levels.size() + 1));
+  for(const auto& f : soup.faces)
+    CHECK(f.size() == 4);
+  std::size_t crossings = 0, boundary = 0;
+  for(H::Net_point_kind k : soup.kind)
+  {
+    crossings += k == H::Net_point_kind::crossing;
+    boundary += k == H::Net_point_kind::boundary;
+  }
+  CHECK(crossings == lines_around * levels.size());
+  CHECK(boundary == 2 * lines_around);
 }
 
 TEMPLATE_TEST_CASE("Curvature-adapted spacing refines where the surface bends, and only there",
@@ -850,8 +951,8 @@ TEMPLATE_TEST_CASE("A serrated boundary is followed and a narrow spike is reache
   REQUIRE(sides.size() == 2 * n);
   SD::Harmonic_quad_remesher<Mesh> remesher(mesh, P::harmonic_constraints(sides));
   Quad_mesh snapped, plain;
-  const SD::Harmonic_quad_remeshing_report r = remesher.remesh(snapped, P::target_edge_length(h));
-  const SD::Harmonic_quad_remeshing_report r0 =
+  const SD::Harmonic_quad_remeshing_result r = remesher.remesh(snapped, P::target_edge_length(h));
+  const SD::Harmonic_quad_remeshing_result r0 =
     remesher.remesh(plain, P::target_edge_length(h, P::feature_snapping(false)));
   INFO("boundary detail vertices " << r.boundary_detail_vertices << ", far input vertices " << r.far_input_vertices
                                    << ", snapped " << r.snapped_vertices);
@@ -932,7 +1033,7 @@ TEMPLATE_TEST_CASE("Remeshing keeps the topology and makes mostly quads", "[harm
     const test::Mesh_snapshot before(mesh);
     // the net as it is (quad-dominant), then quads only (the default)
     Quad_mesh net;
-    const SD::Harmonic_quad_remeshing_report rn = SD::harmonic_quad_remeshing(mesh, net, P::all_quads(false));
+    const SD::Harmonic_quad_remeshing_result rn = SD::harmonic_quad_remeshing(mesh, net, P::all_quads(false));
     const SD::Quad_mesh_quality qn = SD::quad_mesh_quality(net, mesh);
     INFO("net: faces " << qn.faces << ", quads " << qn.quad_fraction << ", Hausdorff " << qn.relative_hausdorff_distance
                        << ", T-junctions " << qn.t_junctions << ", irregular " << qn.irregular_vertices);
@@ -950,7 +1051,7 @@ TEMPLATE_TEST_CASE("Remeshing keeps the topology and makes mostly quads", "[harm
     CHECK(rn.faces == qn.faces);
     CHECK(rn.split_edges == 0);
     Quad_mesh out;
-    const SD::Harmonic_quad_remeshing_report r = SD::harmonic_quad_remeshing(mesh, out);
+    const SD::Harmonic_quad_remeshing_result r = SD::harmonic_quad_remeshing(mesh, out);
     CHECK(test::Mesh_snapshot(mesh) == before);
     const SD::Quad_mesh_quality q = SD::quad_mesh_quality(out, mesh);
     INFO("quads only: faces " << q.faces << ", quads " << q.quad_fraction << ", Hausdorff "
@@ -1097,7 +1198,7 @@ TEMPLATE_TEST_CASE("Spectacles: every saddle accounted for, a valid output, fewe
       INFO("spectacles " << spectacles);
       Quad_mesh out;
       // (on the net as it is: quads only would hide the cells the spectacles change)
-      const SD::Harmonic_quad_remeshing_report r = remesher.remesh(out, P::spectacles(spectacles, P::all_quads(false)));
+      const SD::Harmonic_quad_remeshing_result r = remesher.remesh(out, P::spectacles(spectacles, P::all_quads(false)));
       CHECK(r.saddles == saddles.size());
       if(spectacles)
       {
@@ -1137,8 +1238,8 @@ TEST_CASE("Spectacles re-solve with either solver: the same saddles, nets of the
   SD::Harmonic_quad_remesher<Mesh, test::Vpm<Mesh>, SD::Default_solver_traits> ldlt(eight);
   SD::Harmonic_quad_remesher<Mesh, test::Vpm<Mesh>, SD::Cholmod_solver_traits> cholmod(eight);
   Quad_mesh a, b;
-  const SD::Harmonic_quad_remeshing_report ra = ldlt.remesh(a, P::all_quads(false));
-  const SD::Harmonic_quad_remeshing_report rb = cholmod.remesh(b, P::all_quads(false));
+  const SD::Harmonic_quad_remeshing_result ra = ldlt.remesh(a, P::all_quads(false));
+  const SD::Harmonic_quad_remeshing_result rb = cholmod.remesh(b, P::all_quads(false));
   INFO("faces " << ra.faces << " / " << rb.faces);
   // 4 = #min + #max - chi = 1 + 1 - (-2) simple saddles on the closed genus-2 eight (its default
   // constraints are one minimum and one maximum, no tip), and every one of them given spectacles:
@@ -1225,7 +1326,7 @@ TEMPLATE_TEST_CASE("Spectacles on a sheet with three holes: at an interior saddl
   {
     INFO((all_quads ? "quads only" : "the net"));
     Quad_mesh out;
-    const SD::Harmonic_quad_remeshing_report r = remesher.remesh(out, P::all_quads(all_quads));
+    const SD::Harmonic_quad_remeshing_result r = remesher.remesh(out, P::all_quads(all_quads));
     const SD::Quad_mesh_quality q = SD::quad_mesh_quality(out, mesh);
     INFO("spectacles " << r.spectacles << ", skipped " << r.skipped_saddles.size() << ", faces " << q.faces
                        << ", quads " << q.quad_fraction);
@@ -1310,7 +1411,7 @@ TEST_CASE("Remeshing into a Polyhedron_3 or into a mesh with faces appends the r
       // the reference: into an empty Surface_mesh (the case every other test checks)
       SD::Harmonic_quad_remesher<test::Surface_mesh> remesher(mesh);
       Quad_mesh reference;
-      const SD::Harmonic_quad_remeshing_report rr = remesher.remesh(reference, P::all_quads(all_quads));
+      const SD::Harmonic_quad_remeshing_result rr = remesher.remesh(reference, P::all_quads(all_quads));
       const SD::Quad_mesh_quality qr = SD::quad_mesh_quality(reference, mesh);
       REQUIRE(qr.valid);
       REQUIRE(qr.same_topology);
@@ -1340,13 +1441,14 @@ TEMPLATE_TEST_CASE("One factorization serves new values and every remesh", "[har
   std::vector<std::pair<typename boost::graph_traits<Mesh>::vertex_descriptor, double>> c;
   SDI::Mesh_indices<Mesh> idx(mesh);
   for(const auto& [v, value] : remesher.constraints())
-    c.emplace_back(idx.vertex(v), 2. * value - 1.);
+    c.emplace_back(v, 2. * value - 1.);
   remesher.set_constraints(c);
+  CHECK(remesher.constraints() == c); // in the representation they were given in
   const std::vector<double>& u = remesher.harmonic_function();
   CHECK(traits.counts().factorizations == 1);
   CHECK(traits.counts().solves == 2);
   for(const auto& [v, value] : remesher.constraints())
-    CHECK(u[v] == value);
+    CHECK(u[idx.index(v)] == value);
   // another vertex set: a new factorization
   c.pop_back();
   c.emplace_back(idx.vertex(0), 0.5);
@@ -1536,7 +1638,7 @@ TEMPLATE_TEST_CASE("Generated surfaces keep their topology: genus 2 coarse, genu
       CHECK(largest_angle_degrees(mesh) > 140.); // (every triangle has an angle of about 145 degrees)
     const test::Mesh_snapshot before(mesh);
     Quad_mesh out;
-    SD::Harmonic_quad_remeshing_report r;
+    SD::Harmonic_quad_remeshing_result r;
     if(c.faces_per_area > 0.)
       r = SD::harmonic_quad_remeshing(
         mesh, out, P::target_edge_length(std::sqrt(CGAL::Polygon_mesh_processing::area(mesh) / c.faces_per_area)));
@@ -1577,7 +1679,7 @@ TEMPLATE_TEST_CASE("Saddles in one band: the coarse genus-2 slab at h = sqrt(are
   // Hausdorff distance is 2.9% of the diagonal and not checked)
   const Mesh mesh = generated_surface<Mesh>("genus 2, coarse");
   Quad_mesh out;
-  const SD::Harmonic_quad_remeshing_report r = SD::harmonic_quad_remeshing(
+  const SD::Harmonic_quad_remeshing_result r = SD::harmonic_quad_remeshing(
     mesh, out, P::target_edge_length(std::sqrt(CGAL::Polygon_mesh_processing::area(mesh) / 800.)));
   const SD::Quad_mesh_quality q = SD::quad_mesh_quality(out, mesh);
   REQUIRE(r.fallbacks.size() == 2);
@@ -1601,7 +1703,7 @@ TEST_CASE("Handles missed at coarse spacing: the straight-walled genus-100 slab 
   SD::make_slab(mesh, 42, 42, 1. / 42., [](std::size_t i, std::size_t j) { return (i / 2) % 2 == 1 && (j / 2) % 2 == 1; });
   const double area = CGAL::Polygon_mesh_processing::area(mesh);
   Quad_mesh out;
-  const SD::Harmonic_quad_remeshing_report r =
+  const SD::Harmonic_quad_remeshing_result r =
     SD::harmonic_quad_remeshing(mesh, out, P::spectacles(false, P::target_edge_length(std::sqrt(area / 250.))));
   INFO(r.fallbacks.front() << " / " << r.fallbacks.back());
   REQUIRE(r.fallbacks.size() == 4);
@@ -1627,7 +1729,7 @@ TEST_CASE("A net of another topology is never returned: triceratops at 5000 face
   // net with spectacles had Euler characteristic 0 and was written as the result
   const test::Surface_mesh mesh = test::load_mesh<test::Surface_mesh>("triceratops.off");
   Quad_mesh out;
-  const SD::Harmonic_quad_remeshing_report r = SD::harmonic_quad_remeshing(
+  const SD::Harmonic_quad_remeshing_result r = SD::harmonic_quad_remeshing(
     mesh, out, P::target_edge_length(std::sqrt(CGAL::Polygon_mesh_processing::area(mesh) / 5000.)));
   const SD::Quad_mesh_quality q = SD::quad_mesh_quality(out, mesh);
   REQUIRE(!r.fallbacks.empty());
@@ -1682,7 +1784,7 @@ TEST_CASE("Topology of a soup, and a slit cell cut by a chord", "[harmonic_quad]
   // an annulus: outer square 0..3 (side 4), inner square 4..7 (side 2), both counter-clockwise
   for(const auto& p : std::vector<std::array<double, 2>>{{-2, -2}, {2, -2}, {2, 2}, {-2, 2}, {-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
     soup.points.emplace_back(p[0], p[1], 0.);
-  soup.kind.assign(8, 0);
+  soup.kind.assign(8, H::Net_point_kind::crossing);
   const std::vector<std::vector<std::size_t>> annulus{{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
   H::Soup_topology t = H::soup_topology(annulus, 8);
   CHECK(t.euler_characteristic == 0);

@@ -21,6 +21,10 @@ namespace Surface_design {
 namespace internal {
 namespace harmonic_quad {
 
+/// What a curve of the net is: a piece of a level set, or a frame or the bridge of spectacles
+/// (curves along mesh edges at the value of a saddle, see spectacles.h).
+enum class Curve_role { level_set, spectacles_frame, spectacles_bridge };
+
 /// One connected piece of the level set u = value: a closed loop, or an open path from boundary
 /// to boundary. Segment k lies in face faces[k] and runs from point[k] to point[k + 1] (index
 /// taken mod the number of segments on a loop), in the direction n x grad u (higher values on
@@ -34,7 +38,7 @@ struct Isoline
   std::vector<std::size_t> point_edge; ///< mesh edge of each point
   std::vector<double> arc;             ///< arc length at each point (and the total at the end for loops)
 
-  int role = 0; ///< 0 a level set piece; 1 a frame of spectacles; 2 a bridge of spectacles
+  Curve_role role = Curve_role::level_set;
 
   std::size_t segments() const { return faces.size(); }
   double length() const { return arc.back(); }

@@ -7,7 +7,7 @@
 #define CGAL_SURFACE_DESIGN_INTERNAL_HARMONIC_QUAD_REMESHING_HARMONIC_FUNCTION_H
 
 #include <CGAL/Surface_design/exceptions.h>
-#include <CGAL/Surface_design/internal/Core/Factored_system.h>
+#include <CGAL/Surface_design/internal/Solvers/Factored_system.h>
 #include <CGAL/Surface_design/internal/Core/intrinsic_delaunay.h>
 #include <CGAL/Surface_design/internal/Core/named_parameters.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/trace_mesh.h>

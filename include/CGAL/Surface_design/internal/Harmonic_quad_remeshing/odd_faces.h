@@ -124,7 +124,7 @@ public:
       if(star.worst + star_penalty < r.worst)
       {
         m_points[x] = star_centre;
-        m_soup.kind.push_back(0);
+        m_soup.kind.push_back(Net_point_kind::crossing);
         return star.quads;
       }
       m_points.pop_back();
@@ -479,7 +479,7 @@ private:
       {
         new_vertex[e] = m_soup.points.size();
         m_soup.points.push_back(m_mid[e]);
-        m_soup.kind.push_back(m_edge_slots[e][1] == npos ? 2 : 0);
+        m_soup.kind.push_back(m_edge_slots[e][1] == npos ? Net_point_kind::boundary : Net_point_kind::crossing);
         ++stats.split_edges;
       }
     std::set<std::pair<std::size_t, std::size_t>> edges;

@@ -6,7 +6,7 @@
 #ifndef CGAL_SURFACE_DESIGN_INTERNAL_HARMONIC_QUAD_REMESHING_SNAP_H
 #define CGAL_SURFACE_DESIGN_INTERNAL_HARMONIC_QUAD_REMESHING_SNAP_H
 
-#include <CGAL/Surface_design/internal/Core/parallel.h>
+#include <CGAL/Surface_design/internal/Solvers/parallel.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/quad_net.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/trace_mesh.h>
 
