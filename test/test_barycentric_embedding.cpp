@@ -566,7 +566,7 @@ TEMPLATE_TEST_CASE("the octahedron of the paper: counts of Table 1, loops, topol
     volume += point(mesh, source(h, mesh)).dot(point(mesh, target(h, mesh)).cross(point(mesh, target(next(h, mesh), mesh)))) / 6.;
   }
   CHECK(volume > 0.);
-  CHECK_THROWS_AS(SD::make_octahedron_membrane(mesh, 0), std::invalid_argument);
+  CHECK_THROWS_AS(SD::make_octahedron_membrane(mesh, 0), SD::Invalid_parameter);
 }
 
 TEMPLATE_TEST_CASE("bad input throws and leaves the mesh untouched; an all-fixed mesh is a no-op",

@@ -182,7 +182,7 @@ TEMPLATE_TEST_CASE("Smoothest fields: tangent, unit, and Poincaré-Hopf", "[dire
     {
       const TestType mesh = make_case<TestType>(name);
       Vector_map<TestType> field;
-      const SD::Smoothest_direction_field_info info = SD::smoothest_direction_field(
+      const SD::Smoothest_direction_field_result info = SD::smoothest_direction_field(
         mesh, boost::make_assoc_property_map(field), SD::parameters::symmetry_order(n));
       INFO(name << ", n = " << n);
       REQUIRE(info.converged);

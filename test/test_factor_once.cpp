@@ -108,7 +108,7 @@ TEMPLATE_TEST_CASE("Smoothest field: one factorization, one back-substitution pe
   SD::make_sphere(mesh, 5);
   Counting_solver_traits solver;
   Vector_map<TestType> field;
-  const SD::Smoothest_direction_field_info info =
+  const SD::Smoothest_direction_field_result info =
     SD::smoothest_direction_field(mesh, boost::make_assoc_property_map(field), P::sparse_linear_solver(solver));
   REQUIRE(info.converged);
   REQUIRE(info.iterations > 0);

@@ -773,6 +773,10 @@ TEMPLATE_TEST_CASE("Out-of-range parameters are refused with Invalid_parameter; 
                                                      boost::make_assoc_property_map(alpha),
                                                      P::stripes_per_unit_length(-1.)),
                   SD::Invalid_parameter);
+  CHECK_THROWS_AS(SD::field_aligned_parameterization(mesh, axis_field(mesh), boost::make_assoc_property_map(k),
+                                                     boost::make_assoc_property_map(alpha),
+                                                     P::one_form_convention(static_cast<SD::One_form_convention>(7))),
+                  SD::Invalid_parameter);
   CHECK(alpha.empty());
 }
 

@@ -157,7 +157,7 @@ double rigid_fit_error(const std::vector<Eigen::Vector2d>& a, const std::vector<
 
 template <class Mesh>
 std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> developable_cut(const Mesh& mesh, double epsilon,
-                                                                                  SD::Developable_cut_report& report)
+                                                                                  SD::Developable_cut_result& report)
 {
   std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> cut;
   report = SD::compute_developable_cut(mesh, std::back_inserter(cut), P::cut_tolerance(epsilon));
@@ -166,7 +166,7 @@ std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> developable_cut
 
 // Cuts, flattens and measures; checks that every piece is a disk.
 template <class Mesh>
-SD::Flattening_distortion cut_and_flatten(const Mesh& mesh, double epsilon, SD::Developable_cut_report& report,
+SD::Flattening_distortion cut_and_flatten(const Mesh& mesh, double epsilon, SD::Developable_cut_result& report,
                                           Mesh& pieces, std::map<Vertex<Mesh>, Vertex<Mesh>>& original,
                                           Uv_map<Mesh>& uv)
 {
@@ -391,7 +391,7 @@ TEMPLATE_TEST_CASE("The developable cut opens a closed cylinder along a ruling",
   Soup_triangles triangles;
   ruled_soup(24, 8, false, false, points, triangles);
   const Mesh mesh = from_soup<Mesh>(points, triangles);
-  SD::Developable_cut_report report;
+  SD::Developable_cut_result report;
   const auto cut = developable_cut(mesh, 1e-3, report);
   CHECK(report.terminals == 0);
   CHECK(report.boundary_loops == 2);
@@ -456,7 +456,7 @@ TEMPLATE_TEST_CASE("The developable cut opens spheres, tori and holed sheets int
     for(double epsilon : {1e-3, 1e9})
     {
       INFO("epsilon " << epsilon);
-      SD::Developable_cut_report report;
+      SD::Developable_cut_result report;
       Mesh pieces;
       std::map<Vertex<Mesh>, Vertex<Mesh>> original;
       Uv_map<Mesh> uv;
@@ -499,7 +499,7 @@ TEMPLATE_TEST_CASE("A design of the developability flow, cut at epsilon = 1e-3, 
   for(double epsilon : {1e-2, 5e-3, 2e-3, 1e-3})
   {
     INFO("epsilon " << epsilon);
-    SD::Developable_cut_report report;
+    SD::Developable_cut_result report;
     Mesh pieces;
     std::map<Vertex<Mesh>, Vertex<Mesh>> original;
     Uv_map<Mesh> uv;
@@ -568,7 +568,7 @@ TEMPLATE_TEST_CASE("A developable cone of more than one turn is split into two p
   CHECK(d.self_overlapping_pieces == 1);
 
   std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> cut;
-  const SD::Overlap_splitting_report r =
+  const SD::Overlap_splitting_result r =
     SD::compute_overlap_splitting_cut(cone, boost::make_assoc_property_map(uv), std::back_inserter(cut));
   CHECK(r.overlapping_pieces == 1);
   CHECK(r.split_pieces == 1);
@@ -619,7 +619,7 @@ TEMPLATE_TEST_CASE("A developable cone of more than one turn is split into two p
     CHECK(a / total < 1. / turn);
   // nothing more to split
   cut.clear();
-  const SD::Overlap_splitting_report again =
+  const SD::Overlap_splitting_result again =
     SD::compute_overlap_splitting_cut(pieces, boost::make_assoc_property_map(uv), std::back_inserter(cut));
   CHECK(again.overlapping_pieces == 0);
   CHECK(cut.empty());
@@ -630,7 +630,7 @@ TEMPLATE_TEST_CASE("The design's pieces that overlap themselves are split until 
 {
   using Mesh = TestType;
   const Mesh design = test::load_mesh<Mesh>("pebble_design.off");
-  SD::Developable_cut_report report;
+  SD::Developable_cut_result report;
   auto pieces = std::make_unique<Mesh>();
   std::map<Vertex<Mesh>, Vertex<Mesh>> original;
   Uv_map<Mesh> uv;
@@ -643,7 +643,7 @@ TEMPLATE_TEST_CASE("The design's pieces that overlap themselves are split until 
   {
     std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> cut;
     const std::size_t before = d.pieces;
-    const SD::Overlap_splitting_report r =
+    const SD::Overlap_splitting_result r =
       SD::compute_overlap_splitting_cut(*pieces, boost::make_assoc_property_map(uv), std::back_inserter(cut));
     CHECK(r.overlapping_pieces == d.self_overlapping_pieces);
     REQUIRE(r.split_pieces == r.overlapping_pieces);
@@ -693,7 +693,7 @@ TEMPLATE_TEST_CASE("The cutting pattern: pieces inside their sheets and apart, s
   using Mesh = TestType;
   Mesh mesh;
   SD::make_torus(mesh, 24, 12, 1., 0.4);
-  SD::Developable_cut_report report;
+  SD::Developable_cut_result report;
   // a small epsilon: many pieces
   std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> cut;
   report = SD::compute_developable_cut(mesh, std::back_inserter(cut), P::cut_tolerance(0.));

@@ -263,6 +263,20 @@ TEMPLATE_TEST_CASE("Bad input is rejected with a clear exception", "[validation]
   }
 }
 
+TEMPLATE_TEST_CASE("The mesh generators refuse bad sizes with Invalid_parameter", "[validation][generators]", SD_MESH_TYPES)
+{
+  TestType mesh;
+  CHECK_THROWS_AS(SD::make_torus(mesh, 2, 8), SD::Invalid_parameter);
+  CHECK_THROWS_AS(SD::make_torus(mesh, 8, 8, 0.3, 0.4), SD::Invalid_parameter);
+  CHECK_THROWS_AS(SD::make_sphere(mesh, 0), SD::Invalid_parameter);
+  CHECK_THROWS_AS(SD::make_grid(mesh, 0, 4), SD::Invalid_parameter);
+  CHECK_THROWS_AS(SD::make_grid(mesh, 4, 4, 0.5), SD::Invalid_parameter);
+  CHECK_THROWS_AS(SD::make_slab(mesh, 4, 4, 0.), SD::Invalid_parameter);
+  CHECK(num_vertices(mesh) == 0); // nothing was built
+  SD::make_sphere(mesh, 1);
+  CHECK(num_faces(mesh) == 12);
+}
+
 TEMPLATE_TEST_CASE("Error messages name the offending element", "[validation]", SD_MESH_TYPES)
 {
   const TestType mesh = test::load_mesh<TestType>("degtri_four.off");

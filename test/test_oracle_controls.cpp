@@ -32,7 +32,7 @@
 #include <CGAL/Surface_design/internal/Core/cut_mesh.h>
 #include <CGAL/Surface_design/internal/Core/hausdorff_distance.h>
 #include <CGAL/Surface_design/internal/Core/topology.h>
-#include <CGAL/Surface_design/internal/Flattening/bff.h>
+#include <CGAL/Surface_design/internal/Developability/bff.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/harmonic_function.h>
 #include <CGAL/Surface_design/internal/Harmonic_quad_remeshing/trace_mesh.h>
 #include <CGAL/Surface_design/mesh_generators.h>
@@ -313,7 +313,7 @@ TEMPLATE_TEST_CASE("Control: a piece whose boundary crosses itself is one self-o
   // the detector of the splitting cut agrees; the only interior edge of the piece is its
   // diagonal, which splits it into two triangles
   std::vector<Edge<Mesh>> cut;
-  const SD::Overlap_splitting_report r =
+  const SD::Overlap_splitting_result r =
     SD::compute_overlap_splitting_cut(mesh, boost::make_assoc_property_map(uv), std::back_inserter(cut));
   CHECK(r.overlapping_pieces == 1);
   CHECK(r.split_pieces == 1);
@@ -615,7 +615,7 @@ TEMPLATE_TEST_CASE("Control: the developability metrics of a cube with pyramid-s
   CHECK(m.minimum_angle == Approx(pi / 4.).epsilon(tight));
   // the developable cut: the corners are its terminals; a sphere opens into one disk
   std::vector<Edge<Mesh>> cut;
-  const SD::Developable_cut_report r = SD::compute_developable_cut(cube, std::back_inserter(cut));
+  const SD::Developable_cut_result r = SD::compute_developable_cut(cube, std::back_inserter(cut));
   CHECK(r.terminals == 8);
   CHECK(r.lambda_max == Approx(pi / 2.).epsilon(tight));
   CHECK(r.generator_loops == 0);
@@ -799,7 +799,7 @@ TEMPLATE_TEST_CASE("Control: components, boundary loops, Euler characteristic, g
     }
     // the developable cut joins the annulus' two loops: two disks
     std::vector<Edge<Mesh>> cut;
-    const SD::Developable_cut_report r = SD::compute_developable_cut(mesh, std::back_inserter(cut));
+    const SD::Developable_cut_result r = SD::compute_developable_cut(mesh, std::back_inserter(cut));
     CHECK(r.boundary_loops == 3);
     CHECK(r.terminals == 0); // every vertex is on the boundary
     CHECK(r.pieces == 2);
@@ -859,7 +859,7 @@ TEMPLATE_TEST_CASE("Control: disk-ness of the pieces of a cut torus and of a cut
     CHECK(num_vertices(open) == 45);
     // the developable cut finds the two generator loops and leaves one disk
     std::vector<Edge<Mesh>> cut;
-    const SD::Developable_cut_report r =
+    const SD::Developable_cut_result r =
       SD::compute_developable_cut(torus, std::back_inserter(cut), P::cut_tolerance(10.)); // no terminal
     CHECK(r.terminals == 0);
     CHECK(r.boundary_loops == 0);

@@ -12,7 +12,7 @@
 #include <CGAL/Surface_design/exceptions.h>
 #include <CGAL/Surface_design/internal/Barycentric_embedding/barycentric_stencil.h>
 #include <CGAL/Surface_design/internal/Core/dec.h>
-#include <CGAL/Surface_design/internal/Core/Factored_system.h>
+#include <CGAL/Surface_design/internal/Solvers/Factored_system.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/Core/named_parameters.h>
@@ -95,18 +95,91 @@ public:
   /// \param pm the mesh
   /// \param fixed_vertices either a readable vertex -> bool property map (true: fixed) or a
   ///        range of the fixed vertex descriptors
-  /// \param np optional named parameters among:
-  /// - `vertex_point_map`: where positions are read and written; default
-  ///   `get(CGAL::vertex_point, pm)`
-  /// - `weighting` (`Edge_weighting`): default `uniform` (the paper's)
-  /// - `reference_point_map`: readable vertex -> `Point_3` map of the geometry the cotangent or
-  ///   mean-value weights are computed from; default: `vertex_point_map`
-  /// - `sparse_linear_solver`: a `SolverTraits` object; default `SolverTraits()`
+  /// \param np an optional sequence of named parameters among the ones listed below
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{vertex_point_map}
+  ///     \cgalParamDescription{a property map associating points to the vertices of `pm`: the positions of the
+  ///                           fixed vertices are read from it, those of the free vertices written to it by
+  ///                           `update()`}
+  ///     \cgalParamType{a class model of `ReadWritePropertyMap` with
+  ///                    `boost::graph_traits<PolygonMesh>::%vertex_descriptor` as key type and `%Point_3` as
+  ///                    value type, convertible to `VertexPointMap`}
+  ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, pm)`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{weighting}
+  ///     \cgalParamDescription{the weights w_ij of the barycentres}
+  ///     \cgalParamType{`Edge_weighting`: `uniform`, `cotangent` (triangle meshes only) or `mean_value`}
+  ///     \cgalParamDefault{`Edge_weighting::uniform` (the paper's)}
+  ///     \cgalParamExtra{throws `Invalid_parameter` if it is not an enumerator of `Edge_weighting`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{reference_point_map}
+  ///     \cgalParamDescription{the geometry the cotangent or mean-value weights are computed from}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<PolygonMesh>::%vertex_descriptor` as key type and `%Point_3` as
+  ///                    value type}
+  ///     \cgalParamDefault{the vertex point map, read once, in the constructor: moving the fixed vertices later
+  ///                       does not change the weights}
+  ///     \cgalParamExtra{read only with `cotangent` or `mean_value` weights, and validated like the vertex
+  ///                     point map: throws `Invalid_mesh` if a coordinate is not finite, or, there, a triangle
+  ///                     (cotangent weights) or an edge (mean-value weights) is degenerate}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{sparse_linear_solver}
+  ///     \cgalParamDescription{the sparse solver that factors the symmetric system of the free vertices
+  ///                           (uniform and cotangent weights)}
+  ///     \cgalParamType{`SolverTraits`, a model of `SparseLinearAlgebraWithFactorTraits_d` (class template
+  ///                    argument deduction takes the class's `SolverTraits` from this parameter)}
+  ///     \cgalParamDefault{`SolverTraits()`}
+  ///     \cgalParamExtra{not used with mean-value weights: that system is not symmetric and is always factored
+  ///                     by `Sparse_lu_solver_traits`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{vertex_index_map}
+  ///     \cgalParamDescription{a property map associating to each vertex of `pm` a unique index in
+  ///                           `[0, num_vertices(pm))`: the numbering of the elements in error messages}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<PolygonMesh>::%vertex_descriptor` as key type and an integer as
+  ///                    value type}
+  ///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_vertex_index_map(pm)`)}
+  ///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+  ///                     `[0, num_vertices(pm))`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{halfedge_index_map}
+  ///     \cgalParamDescription{a property map associating to each halfedge of `pm` a unique index in
+  ///                           `[0, num_halfedges(pm))`: the numbering of the elements in error messages}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<PolygonMesh>::%halfedge_descriptor` as key type and an integer as
+  ///                    value type}
+  ///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_halfedge_index_map(pm)`)}
+  ///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+  ///                     `[0, num_halfedges(pm))`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{edge_index_map}
+  ///     \cgalParamDescription{a property map associating to each edge of `pm` a unique index in
+  ///                           `[0, num_edges(pm))`: the numbering of the elements in error messages}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<PolygonMesh>::%edge_descriptor` as key type and an integer as
+  ///                    value type}
+  ///     \cgalParamDefault{the order of `edges(pm)`}
+  ///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+  ///                     `[0, num_edges(pm))`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{face_index_map}
+  ///     \cgalParamDescription{a property map associating to each face of `pm` a unique index in
+  ///                           `[0, num_faces(pm))`: the numbering of the elements in error messages}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<PolygonMesh>::%face_descriptor` as key type and an integer as
+  ///                    value type}
+  ///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_face_index_map(pm)`)}
+  ///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+  ///                     `[0, num_faces(pm))`}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
   ///
   /// \throws Invalid_mesh the mesh is empty, not manifold, has non-finite coordinates, or (for
   ///         weights of a reference geometry) degenerate faces or edges there; cotangent weights
   ///         also need triangles
   /// \throws Invalid_constraints a connected component with free vertices has no fixed vertex
+  /// \throws Invalid_parameter `weighting` is not an `Edge_weighting` enumerator
   ///         (the system would be singular), or a vertex of the range is not in the mesh
   /// \throws Linear_solver_failure the factorization fails
   /// Nothing is written on failure (nor on success: positions are written by `update()`).

@@ -7,12 +7,12 @@
 #define CGAL_SURFACE_DESIGN_BOUNDARY_FIRST_FLATTENER_H
 
 #include <CGAL/Surface_design/exceptions.h>
-#include <CGAL/Surface_design/internal/Core/Factored_system.h>
+#include <CGAL/Surface_design/internal/Solvers/Factored_system.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/Core/named_parameters.h>
 #include <CGAL/Surface_design/internal/Core/topology.h>
 #include <CGAL/Surface_design/internal/Core/validation.h>
-#include <CGAL/Surface_design/internal/Flattening/bff.h>
+#include <CGAL/Surface_design/internal/Developability/bff.h>
 #include <CGAL/Surface_design/parameters.h>
 #include <CGAL/Surface_design/solver_traits.h>
 
@@ -80,10 +80,65 @@ public:
   /// and factors its interior block.
   ///
   /// \param tm the mesh; its connectivity and positions must not change while the object is used
-  /// \param np optional named parameters among:
-  /// - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
-  /// - `sparse_linear_solver`: a `SolverTraits` object; default `SolverTraits()`
-  /// - `vertex_index_map`, `halfedge_index_map`, `face_index_map`, `edge_index_map`
+  /// \param np an optional sequence of named parameters among the ones listed below
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{vertex_point_map}
+  ///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as
+  ///                    value type, convertible to `VertexPointMap`}
+  ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{sparse_linear_solver}
+  ///     \cgalParamDescription{the sparse solver that factors the cotangent Laplacian of the interior vertices
+  ///                           (on the first `flatten_with_turning_angles()`, a new object of the same type
+  ///                           factors the shifted Laplacian of all vertices)}
+  ///     \cgalParamType{`SolverTraits`, a model of `SparseLinearAlgebraWithFactorTraits_d` (class template
+  ///                    argument deduction takes the class's `SolverTraits` from this parameter)}
+  ///     \cgalParamDefault{`SolverTraits()`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{vertex_index_map}
+  ///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in
+  ///                           `[0, num_vertices(tm))`: the numbering of the elements in error messages}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and an integer as
+  ///                    value type}
+  ///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_vertex_index_map(tm)`)}
+  ///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+  ///                     `[0, num_vertices(tm))`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{halfedge_index_map}
+  ///     \cgalParamDescription{a property map associating to each halfedge of `tm` a unique index in
+  ///                           `[0, num_halfedges(tm))`: the numbering of the elements in error messages}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and an integer as
+  ///                    value type}
+  ///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_halfedge_index_map(tm)`)}
+  ///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+  ///                     `[0, num_halfedges(tm))`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{edge_index_map}
+  ///     \cgalParamDescription{a property map associating to each edge of `tm` a unique index in
+  ///                           `[0, num_edges(tm))`: the numbering of the elements in error messages}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and an integer as
+  ///                    value type}
+  ///     \cgalParamDefault{the order of `edges(tm)`}
+  ///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+  ///                     `[0, num_edges(tm))`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{face_index_map}
+  ///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in
+  ///                           `[0, num_faces(tm))`: the numbering of the elements in error messages}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and an integer as
+  ///                    value type}
+  ///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_face_index_map(tm)`)}
+  ///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+  ///                     `[0, num_faces(tm))`}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
   ///
   /// \throws Invalid_mesh the mesh is empty, not a triangle mesh, not manifold, has degenerate
   ///         faces or non-finite coordinates, or a component is not a disk (`not_a_disk`)

@@ -133,13 +133,75 @@ public:
   /// The mesh must not change while this object is used.
   ///
   /// \param tm a triangle mesh (any number of connected components, with or without boundary)
-  /// \param np optional named parameters among:
-  /// - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
-  /// - `sparse_linear_solver`: a `SolverTraits` object; default `SolverTraits()`
-  /// - `weighting` (`Edge_weighting`): `cotangent` (default, the paper's) or `uniform`
-  /// - `vertex_index_map`, `halfedge_index_map`, `edge_index_map`, `face_index_map`: the
-  ///   numbering of the elements (faces addressed by index, loops, error messages); default the
-  ///   mesh's own, edges in the order of `edges(tm)`
+  /// \param np an optional sequence of named parameters among the ones listed below
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{vertex_point_map}
+  ///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as
+  ///                    value type, convertible to `VertexPointMap`}
+  ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{sparse_linear_solver}
+  ///     \cgalParamDescription{the sparse solver that factors the weighted Laplacian with one vertex pinned per
+  ///                           connected component}
+  ///     \cgalParamType{`SolverTraits`, a model of `SparseLinearAlgebraWithFactorTraits_d` (class template
+  ///                    argument deduction takes the class's `SolverTraits` from this parameter)}
+  ///     \cgalParamDefault{`SolverTraits()`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{weighting}
+  ///     \cgalParamDescription{the edge weights w_e of the least-squares energy}
+  ///     \cgalParamType{`Edge_weighting`: `cotangent` or `uniform`}
+  ///     \cgalParamDefault{`Edge_weighting::cotangent` (the paper's)}
+  ///     \cgalParamExtra{throws `Invalid_parameter` for any other value (`mean_value`: the energy needs
+  ///                     symmetric weights)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{vertex_index_map}
+  ///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in
+  ///                           `[0, num_vertices(tm))`: the numbering of the elements (faces addressed by
+  ///                           index, loops, error messages)}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and an integer as
+  ///                    value type}
+  ///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_vertex_index_map(tm)`)}
+  ///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+  ///                     `[0, num_vertices(tm))`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{halfedge_index_map}
+  ///     \cgalParamDescription{a property map associating to each halfedge of `tm` a unique index in
+  ///                           `[0, num_halfedges(tm))`: the numbering of the elements (faces addressed by
+  ///                           index, loops, error messages)}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and an integer as
+  ///                    value type}
+  ///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_halfedge_index_map(tm)`)}
+  ///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+  ///                     `[0, num_halfedges(tm))`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{edge_index_map}
+  ///     \cgalParamDescription{a property map associating to each edge of `tm` a unique index in
+  ///                           `[0, num_edges(tm))`: the numbering of the elements (faces addressed by index,
+  ///                           loops, error messages)}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and an integer as
+  ///                    value type}
+  ///     \cgalParamDefault{the order of `edges(tm)`}
+  ///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+  ///                     `[0, num_edges(tm))`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{face_index_map}
+  ///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in
+  ///                           `[0, num_faces(tm))`: the numbering of the elements (faces addressed by index,
+  ///                           loops, error messages)}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and an integer as
+  ///                    value type}
+  ///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_face_index_map(tm)`)}
+  ///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+  ///                     `[0, num_faces(tm))`}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
   ///
   /// \throws Invalid_mesh (empty, non-triangle, non-manifold, degenerate face, non-finite point)
   /// \throws Invalid_parameter if `weighting` is `mean_value` (the energy needs symmetric weights)
@@ -174,12 +236,15 @@ public:
   /// per unit length).
   /// \throws Invalid_parameter if `stripes_per_unit_length` is negative or not finite, if a field
   ///         vector is not finite, or if the field is to be normalized and has no tangential
-  ///         component anywhere on a connected component. Nothing changes then.
+  ///         component anywhere on a connected component, or if `convention` is not a
+  ///         `One_form_convention` enumerator. Nothing changes then.
   template <class VertexVectorMap>
   void set_field(const VertexVectorMap& field, double stripes_per_unit_length = 0.,
                  One_form_convention convention = One_form_convention::projected)
   {
     internal::require_nonnegative("stripes_per_unit_length", stripes_per_unit_length);
+    if(convention != One_form_convention::projected && convention != One_form_convention::angle_rescaled)
+      throw Invalid_parameter("one_form_convention", "not a One_form_convention enumerator");
     const auto x = internal::tangent_field(indices(), m_vpm, field, internal::two_pi * stripes_per_unit_length,
                                            topology().components);
     m_omega = convention == One_form_convention::projected

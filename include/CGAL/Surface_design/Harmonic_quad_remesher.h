@@ -84,7 +84,7 @@ struct Harmonic_critical_points
 
 /// \ingroup PkgHarmonicQuadRemeshingRef
 /// What `Harmonic_quad_remesher::remesh()` did.
-struct Harmonic_quad_remeshing_report
+struct Harmonic_quad_remeshing_result
 {
   double target_edge_length = 0.;
   /// the spacing h of the net that was used: `target_edge_length`, or finer after a fall-back
@@ -193,17 +193,97 @@ public:
   /// Validates the mesh and builds the Laplacian.
   ///
   /// \param tm the mesh; it must not change while the object is used
-  /// \param np optional named parameters among:
-  /// - `vertex_point_map`, `sparse_linear_solver`, index maps
-  /// - `harmonic_weights`: a `Harmonic_weights`; default `Harmonic_weights::cotangent`
-  /// - `harmonic_constraints`: a range of (vertex_descriptor, double) pairs; default: the
-  ///   default constraints (`set_default_constraints()`)
-  /// - `protrusion_maxima` (bool, default true): with the default constraints, also a maximum at
-  ///   every tip of the shape
+  /// \param np an optional sequence of named parameters among the ones listed below
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{vertex_point_map}
+  ///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as
+  ///                    value type, convertible to `VertexPointMap`}
+  ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{sparse_linear_solver}
+  ///     \cgalParamDescription{the sparse solver that factors the Laplacian (of `harmonic_weights`) restricted
+  ///                           to the unconstrained vertices (the Laplacians of the mesh refined along
+  ///                           spectacles and of the intrinsic Delaunay fall-back of `remesh()` are factored by
+  ///                           new objects of the same type)}
+  ///     \cgalParamType{`SolverTraits`, a model of `SparseLinearAlgebraWithFactorTraits_d` (class template
+  ///                    argument deduction takes the class's `SolverTraits` from this parameter)}
+  ///     \cgalParamDefault{`SolverTraits()`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{harmonic_weights}
+  ///     \cgalParamDescription{the weights of the Laplacian whose harmonic function drives the remeshing}
+  ///     \cgalParamType{`Harmonic_weights`}
+  ///     \cgalParamDefault{`Harmonic_weights::cotangent`}
+  ///     \cgalParamExtra{not validated: a value other than the two enumerators is not rejected}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{harmonic_constraints}
+  ///     \cgalParamDescription{the constrained vertices and their values, u(c) = value (see
+  ///                           `set_constraints()`)}
+  ///     \cgalParamType{a range of (`vertex_descriptor`, value convertible to `double`) pairs}
+  ///     \cgalParamDefault{the default constraints (`set_default_constraints()`)}
+  ///     \cgalParamExtra{throws `Invalid_constraints` if a vertex is not a vertex of `tm` or is constrained
+  ///                     twice, if a value is not finite, or if a connected component does not get at least two
+  ///                     different values}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{protrusion_maxima}
+  ///     \cgalParamDescription{with the default constraints, whether there is also a maximum at every tip of
+  ///                           the shape (see `set_default_constraints()`)}
+  ///     \cgalParamType{`bool`}
+  ///     \cgalParamDefault{`true`}
+  ///     \cgalParamExtra{ignored when `harmonic_constraints` is given}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{vertex_index_map}
+  ///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in
+  ///                           `[0, num_vertices(tm))`: the numbering of the elements (vertex indices in the
+  ///                           results and in error messages)}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and an integer as
+  ///                    value type}
+  ///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_vertex_index_map(tm)`)}
+  ///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+  ///                     `[0, num_vertices(tm))`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{halfedge_index_map}
+  ///     \cgalParamDescription{a property map associating to each halfedge of `tm` a unique index in
+  ///                           `[0, num_halfedges(tm))`: the numbering of the elements (vertex indices in the
+  ///                           results and in error messages)}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and an integer as
+  ///                    value type}
+  ///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_halfedge_index_map(tm)`)}
+  ///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+  ///                     `[0, num_halfedges(tm))`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{edge_index_map}
+  ///     \cgalParamDescription{a property map associating to each edge of `tm` a unique index in
+  ///                           `[0, num_edges(tm))`: the numbering of the elements (vertex indices in the
+  ///                           results and in error messages)}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and an integer as
+  ///                    value type}
+  ///     \cgalParamDefault{the order of `edges(tm)`}
+  ///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+  ///                     `[0, num_edges(tm))`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{face_index_map}
+  ///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in
+  ///                           `[0, num_faces(tm))`: the numbering of the elements (vertex indices in the
+  ///                           results and in error messages)}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and an integer as
+  ///                    value type}
+  ///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_face_index_map(tm)`)}
+  ///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+  ///                     `[0, num_faces(tm))`}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
   ///
   /// \throws Invalid_mesh the mesh is empty, not triangles, not manifold, has degenerate faces or
   ///         non-finite coordinates
   /// \throws Invalid_constraints the constraints are invalid (see `set_constraints()`)
+  /// \throws Invalid_parameter `harmonic_weights` is not a `Harmonic_weights` enumerator
   template <class NamedParameters = CGAL::parameters::Default_named_parameters>
   explicit Harmonic_quad_remesher(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
     : m_idx(tm, np),
@@ -215,6 +295,8 @@ public:
     m_mesh = internal::harmonic_quad::make_trace_mesh(m_idx, m_vpm);
     m_topology = internal::harmonic_quad::soup_topology(m_mesh.tri, m_mesh.number_of_vertices());
     m_weights_kind = choose_parameter(get_parameter(np, internal_np::harmonic_weights), Harmonic_weights::cotangent);
+    if(m_weights_kind != Harmonic_weights::cotangent && m_weights_kind != Harmonic_weights::intrinsic_delaunay)
+      throw Invalid_parameter("harmonic_weights", "not a Harmonic_weights enumerator");
     const auto start = Clock::now();
     internal::Intrinsic_triangulation intrinsic(m_idx, m_vpm);
     if(m_weights_kind == Harmonic_weights::intrinsic_delaunay)
@@ -258,8 +340,15 @@ public:
     m_solved = false;
   }
 
-  /// The constraints as (vertex index, value) pairs.
-  const std::vector<std::pair<std::size_t, double>>& constraints() const { return m_constraints; }
+  /// The constraints as (vertex_descriptor, value) pairs, as `set_constraints()` takes them.
+  std::vector<std::pair<vertex_descriptor, double>> constraints() const
+  {
+    std::vector<std::pair<vertex_descriptor, double>> c;
+    c.reserve(m_constraints.size());
+    for(const auto& [i, value] : m_constraints)
+      c.emplace_back(m_idx.vertex(i), value);
+    return c;
+  }
 
   /// Number of intrinsic edge flips made (`Harmonic_weights::intrinsic_delaunay`).
   std::size_t number_of_flips() const { return m_flips; }
@@ -340,55 +429,94 @@ public:
   /// `all_quads(false)`: the quad-dominant net) with the input's topology (Euler characteristic,
   /// boundary loops and connected components, checked), consistently oriented like the input.
   /// When the net of the requested settings comes out wrong, the method falls back to what the
-  /// package has (see `Harmonic_quad_remeshing_report::fallbacks`) and otherwise throws.
+  /// package has (see `Harmonic_quad_remeshing_result::fallbacks`) and otherwise throws.
   ///
-  /// \tparam PolygonMesh a model of `MutableFaceGraph` with an internal point property map
-  /// \param np optional named parameters among:
-  /// - `target_edge_length` (double > 0): the spacing h of both families of curves; default
-  ///   sqrt(area / 3000), i.e. about 3000 faces
-  /// - `quad_poles` (bool, default true): fans of quads at the extrema (every other line ends
-  ///   there); false: fans of triangles
-  /// - `spectacles` (bool, default true): Nagano & Imai's spectacles around every
-  ///   simple interior saddle (two gradient lines from the saddle down, or up, to the next level
-  ///   of the net and the isolines where they end), inserted into a copy of the mesh, held at one
-  ///   value while the function is re-solved, and built into the net as one isoline graph (lines
-  ///   leave the bridge on both sides and each junction along the bisectors of its two corners).
-  ///   Saddles whose spectacles cannot be built (on the boundary, of multiplicity > 1, both
-  ///   wedges reaching one isoline, crossing other spectacles) are listed in
-  ///   `skipped_saddles` with the reason; when the net with spectacles is not a valid polygon
-  ///   mesh with the input's topology, the net is built without them and all are listed there.
-  /// - `all_quads` (bool, default true): quads only. The net's faces with an odd number of
-  ///   sides (the pentagons where a line ends on an isoline, triangles) are paired by short,
-  ///   straight paths across the net (or led to the boundary); every edge a path crosses gets a
-  ///   vertex at its middle and every face is split into quads by the diagonals that
-  ///   keep its corners closest to 90 degrees. A path continues the line that ended at a
-  ///   T-junction until it meets another one, so T-junctions become regular vertices. False: the
-  ///   quad-dominant net as it is.
-  /// - `curvature_adaptation` (double >= 0, default 0): curvature-adapted spacing. The spacing
-  ///   of both families of curves becomes h / (1 + a h kappa), at least h / 4, with kappa the
-  ///   (smoothed) normal curvature across the input's edges: finer where the surface bends. 0:
-  ///   uniform spacing h.
-  /// - `feature_snapping` (bool, default true): the curves pass over features narrower than
-  ///   their spacing (a pit, a spike, the apex of a cone, a sharp crease). Interior input vertices
-  ///   farther than h / 4 from the result, farthest first, pull the nearest corner of the face
-  ///   closest to them onto them (a corner not on the boundary, at most 2h away, no face around it
-  ///   turned over or moved before). The boundary needs no snapping: where the input's boundary
-  ///   leaves the chord between two vertices of the net by more than h / 4 (a serrated or sharply
-  ///   bent boundary), its vertices become vertices of the net (an even number per edge, see
-  ///   `boundary_detail_vertices`).
-  /// - `vertex_point_map`: of `out`
+  /// \tparam PolygonMesh a model of `MutableFaceGraph`, with an internal point property map or a
+  ///         `vertex_point_map` for it in `np`
+  /// \param np an optional sequence of named parameters among the ones listed below
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{target_edge_length}
+  ///     \cgalParamDescription{the spacing h of both families of curves}
+  ///     \cgalParamType{`double`}
+  ///     \cgalParamDefault{sqrt(area / 3000), with the surface area of the mesh given to the constructor: about
+  ///                       3000 faces}
+  ///     \cgalParamExtra{throws `Invalid_parameter` if it is not finite and positive, or if area / h^2 > 1e7
+  ///                     (about 10 million faces)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{quad_poles}
+  ///     \cgalParamDescription{fans of quads at the extrema (every other line ends there); `false`: fans of
+  ///                           triangles}
+  ///     \cgalParamType{`bool`}
+  ///     \cgalParamDefault{`true`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{spectacles}
+  ///     \cgalParamDescription{Nagano & Imai's spectacles around every simple interior saddle (two gradient
+  ///                           lines from the saddle down, or up, to the next level of the net and the isolines
+  ///                           where they end), inserted into a copy of the mesh, held at one value while the
+  ///                           function is re-solved, and built into the net as one isoline graph (lines leave
+  ///                           the bridge on both sides and each junction along the bisectors of its two
+  ///                           corners). Saddles whose spectacles cannot be built (on the boundary, of
+  ///                           multiplicity > 1, both wedges reaching one isoline, crossing other spectacles)
+  ///                           are listed in `skipped_saddles` with the reason; when the net with spectacles is
+  ///                           not a valid polygon mesh with the input's topology, the net is built without
+  ///                           them and all are listed there}
+  ///     \cgalParamType{`bool`}
+  ///     \cgalParamDefault{`true`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{all_quads}
+  ///     \cgalParamDescription{quads only. The net's faces with an odd number of sides (the pentagons where a
+  ///                           line ends on an isoline, triangles) are paired by short, straight paths across
+  ///                           the net (or led to the boundary); every edge a path crosses gets a vertex at its
+  ///                           middle and every face is split into quads by the diagonals that keep its corners
+  ///                           closest to 90 degrees. A path continues the line that ended at a T-junction
+  ///                           until it meets another one, so T-junctions become regular vertices. `false`: the
+  ///                           quad-dominant net as it is}
+  ///     \cgalParamType{`bool`}
+  ///     \cgalParamDefault{`true`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{curvature_adaptation}
+  ///     \cgalParamDescription{curvature-adapted spacing a: the spacing of both families of curves becomes h /
+  ///                           (1 + a h kappa), at least h / 4, with kappa the (smoothed) normal curvature
+  ///                           across the input's edges: finer where the surface bends. 0: uniform spacing h}
+  ///     \cgalParamType{`double`}
+  ///     \cgalParamDefault{`0`}
+  ///     \cgalParamExtra{throws `Invalid_parameter` if it is negative or not finite}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{feature_snapping}
+  ///     \cgalParamDescription{the curves pass over features narrower than their spacing (a pit, a spike, the
+  ///                           apex of a cone, a sharp crease). Interior input vertices farther than h / 4 from
+  ///                           the result, farthest first, pull the nearest corner of the face closest to them
+  ///                           onto them (a corner not on the boundary, at most 2h away, no face around it
+  ///                           turned over or moved before). The boundary needs no snapping: where the input's
+  ///                           boundary leaves the chord between two vertices of the net by more than h / 4 (a
+  ///                           serrated or sharply bent boundary), its vertices become vertices of the net (an
+  ///                           even number per edge, see `boundary_detail_vertices`)}
+  ///     \cgalParamType{`bool`}
+  ///     \cgalParamDefault{`true`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{vertex_point_map}
+  ///     \cgalParamDescription{a property map through which the points of the new vertices of `out` are
+  ///                           written}
+  ///     \cgalParamType{a class model of `WritablePropertyMap` with
+  ///                    `boost::graph_traits<PolygonMesh>::%vertex_descriptor` as key type and `%Point_3` as
+  ///                    value type}
+  ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, out)`}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
+  ///
   /// \throws Invalid_parameter `target_edge_length` is not finite and positive, or so small that
-  ///         the net would exceed 10 million vertices; `curvature_adaptation` negative or not finite
-  /// \throws Remeshing_failure when no attempt (see `Harmonic_quad_remeshing_report::fallbacks`)
+  ///         area / h^2 exceeds 10^7 (about that many faces); `curvature_adaptation` negative or not finite
+  /// \throws Remeshing_failure when no attempt (see `Harmonic_quad_remeshing_result::fallbacks`)
   ///         makes a net that is a valid polygon mesh with the input's topology; `out` is
   ///         then unchanged. A result with another topology is never returned.
   /// \throws Linear_solver_failure if a factorization fails
   template <class PolygonMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
-  Harmonic_quad_remeshing_report remesh(PolygonMesh& out, const NamedParameters& np = CGAL::parameters::default_values())
+  Harmonic_quad_remeshing_result remesh(PolygonMesh& out, const NamedParameters& np = CGAL::parameters::default_values())
   {
     using CGAL::parameters::choose_parameter;
     using CGAL::parameters::get_parameter;
-    Harmonic_quad_remeshing_report report;
+    Harmonic_quad_remeshing_result report;
     double area = 0.;
     for(double a : m_mesh.area)
       area += a;
@@ -450,7 +578,7 @@ public:
     for(std::size_t k = 0; k < attempts.size() && !made; ++k)
     {
       const Net_attempt& attempt = attempts[k];
-      Harmonic_quad_remeshing_report r = report;
+      Harmonic_quad_remeshing_result r = report;
       std::string why;
       made = make_net(attempt, critical, settings, soup, r, why);
       // the times add up over the attempts
@@ -536,7 +664,7 @@ private:
   // are paired (the pairing is kept only when it keeps the mesh valid and its topology).
   bool make_net(const Net_attempt& attempt,
                 const std::vector<internal::harmonic_quad::Critical_point>& critical, const Net_settings& settings,
-                internal::harmonic_quad::Polygon_soup& soup, Harmonic_quad_remeshing_report& report, std::string& why)
+                internal::harmonic_quad::Polygon_soup& soup, Harmonic_quad_remeshing_result& report, std::string& why)
   {
     namespace hq = internal::harmonic_quad;
     using CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh;
@@ -663,7 +791,7 @@ private:
   bool insert_spectacles(const std::vector<internal::harmonic_quad::Critical_point>& critical,
                          internal::harmonic_quad::Net_options& options, internal::harmonic_quad::Trace_mesh& refined,
                          std::vector<double>& refined_u, std::vector<std::size_t>& placed,
-                         Harmonic_quad_remeshing_report& report)
+                         Harmonic_quad_remeshing_result& report)
   {
     namespace hq = internal::harmonic_quad;
     using internal::npos;
@@ -832,6 +960,14 @@ private:
   bool m_solved = false;
   double m_setup_seconds = 0., m_solve_seconds = 0.;
 };
+
+/// Deduces the point map and solver types from the named parameters.
+template <class TriangleMesh, class NamedParameters>
+Harmonic_quad_remesher(const TriangleMesh&, const NamedParameters&)
+  -> Harmonic_quad_remesher<TriangleMesh, internal::Const_vertex_point_map_t<TriangleMesh, NamedParameters>,
+                            internal::Solver_traits_t<NamedParameters>>;
+template <class TriangleMesh>
+Harmonic_quad_remesher(const TriangleMesh&) -> Harmonic_quad_remesher<TriangleMesh>;
 
 } // namespace Surface_design
 } // namespace CGAL

@@ -17,13 +17,13 @@
 #include <CGAL/Surface_design/internal/Core/Periodic_one_form_solver.h>
 #include <CGAL/Surface_design/internal/Core/validation.h>
 #include <CGAL/Surface_design/internal/Direction_fields/direction_field_operators.h>
+#include <CGAL/Surface_design/internal/Direction_fields/edge_rotation_bound.h>
 #include <CGAL/Surface_design/parameters.h>
 #include <CGAL/Surface_design/solver_traits.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <deque>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -32,103 +32,6 @@
 
 namespace CGAL {
 namespace Surface_design {
-
-namespace internal {
-
-/// Vertex shifts that bound the edge rotations of a vertex field, see bound_edge_rotations().
-struct Edge_rotation_bound
-{
-  std::vector<double> u;          ///< per vertex index: the shift (0 where nothing needs to move)
-  std::vector<std::size_t> cycle; ///< empty if the bound is met; else the vertex indices of a closed
-                                  ///< path of the mesh along which it cannot be
-};
-
-/// Finds vertex shifts u with |x_e + u_j - u_i| <= bound on every edge e = (i, j), i < j, or a
-/// closed path along which no shifts can achieve it. These are difference constraints,
-/// u_j - u_i <= bound - x_e and u_i - u_j <= bound + x_e: with an arc i -> j of length bound - x_e
-/// and an arc j -> i of length bound + x_e, the shortest-path lengths u_v from a virtual source
-/// joined to every vertex by an arc of length 0 satisfy all of them (Bellman-Ford, queue-based).
-/// Only the arcs of edges with |x_e| > bound are negative, so u <= 0 is nonzero only around them.
-/// Shifts exist iff there is no negative cycle: no closed path of L edges along which the oriented
-/// x_e sum to more than L * bound in magnitude. A negative cycle shows as a cycle of the
-/// predecessor graph, searched for after every |V| relaxations (O(|V|) per search).
-template <class Indices>
-Edge_rotation_bound bound_edge_rotations(const Indices& idx, const std::vector<double>& x, double bound)
-{
-  const std::size_t nv = idx.number_of_vertices(), ne = idx.number_of_edges();
-  std::vector<std::size_t> begin(nv + 1, 0); // arcs in compressed rows by tail vertex
-  for(std::size_t e = 0; e < ne; ++e)
-  {
-    const auto ij = idx.edge_vertices(e);
-    ++begin[ij.first + 1];
-    ++begin[ij.second + 1];
-  }
-  for(std::size_t v = 0; v < nv; ++v)
-    begin[v + 1] += begin[v];
-  std::vector<std::pair<std::size_t, double>> arc(2 * ne); // (head, length)
-  std::vector<std::size_t> fill(begin.begin(), begin.end() - 1);
-  for(std::size_t e = 0; e < ne; ++e)
-  {
-    const auto ij = idx.edge_vertices(e);
-    arc[fill[ij.first]++] = {ij.second, bound - x[e]};
-    arc[fill[ij.second]++] = {ij.first, bound + x[e]};
-  }
-  // a cycle of the predecessor graph (walks marked by their start), or nothing
-  std::vector<std::size_t> pred(nv, npos), mark(nv, npos);
-  auto predecessor_cycle = [&]() {
-    std::fill(mark.begin(), mark.end(), npos);
-    for(std::size_t s = 0; s < nv; ++s)
-    {
-      std::size_t v = s;
-      while(v != npos && mark[v] == npos)
-      {
-        mark[v] = s;
-        v = pred[v];
-      }
-      if(v != npos && mark[v] == s) // back on this walk: a cycle through v
-      {
-        std::vector<std::size_t> cycle{v};
-        for(std::size_t w = pred[v]; w != v; w = pred[w])
-          cycle.push_back(w);
-        std::reverse(cycle.begin(), cycle.end()); // in the direction of the arcs
-        return cycle;
-      }
-    }
-    return std::vector<std::size_t>();
-  };
-
-  Edge_rotation_bound r;
-  r.u.assign(nv, 0.);
-  std::deque<std::size_t> queue;
-  std::vector<bool> queued(nv, true);
-  for(std::size_t v = 0; v < nv; ++v)
-    queue.push_back(v);
-  std::size_t relaxations = 0;
-  while(!queue.empty())
-  {
-    const std::size_t v = queue.front();
-    queue.pop_front();
-    queued[v] = false;
-    for(std::size_t a = begin[v]; a < begin[v + 1]; ++a)
-    {
-      const std::size_t w = arc[a].first;
-      if(!(r.u[v] + arc[a].second < r.u[w]))
-        continue;
-      r.u[w] = r.u[v] + arc[a].second;
-      pred[w] = v;
-      if(!queued[w])
-      {
-        queued[w] = true;
-        queue.push_back(w);
-      }
-      if(++relaxations % nv == 0 && !(r.cycle = predecessor_cycle()).empty())
-        return r;
-    }
-  }
-  return r;
-}
-
-} // namespace internal
 
 /// \ingroup PkgDirectionFieldsRef
 ///
@@ -201,12 +104,75 @@ public:
   /// not change while this object is used.
   ///
   /// \param tm a triangle mesh
-  /// \param np optional named parameters among:
-  /// - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
-  /// - `sparse_linear_solver`: a `SolverTraits` object; default `SolverTraits()`
-  /// - `symmetry_order` (int n >= 1): default 1 (vector field)
-  /// - `vertex_index_map`, `halfedge_index_map`, `edge_index_map`, `face_index_map`: the
-  ///   numbering of the elements (faces addressed by index, error messages); default the mesh's own
+  /// \param np an optional sequence of named parameters among the ones listed below
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{vertex_point_map}
+  ///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as
+  ///                    value type, convertible to `VertexPointMap`}
+  ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{sparse_linear_solver}
+  ///     \cgalParamDescription{the sparse solver that factors the graph Laplacian with one vertex pinned per
+  ///                           connected component}
+  ///     \cgalParamType{`SolverTraits`, a model of `SparseLinearAlgebraWithFactorTraits_d` (class template
+  ///                    argument deduction takes the class's `SolverTraits` from this parameter)}
+  ///     \cgalParamDefault{`SolverTraits()`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{symmetry_order}
+  ///     \cgalParamDescription{the symmetry order n of the field: 1 vector field, 2 line field, 4 cross field,
+  ///                           ...}
+  ///     \cgalParamType{`int`}
+  ///     \cgalParamDefault{`1` (vector field)}
+  ///     \cgalParamExtra{throws `Invalid_parameter` if n < 1}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{vertex_index_map}
+  ///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in
+  ///                           `[0, num_vertices(tm))`: the numbering of the elements (faces addressed by
+  ///                           index, error messages)}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and an integer as
+  ///                    value type}
+  ///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_vertex_index_map(tm)`)}
+  ///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+  ///                     `[0, num_vertices(tm))`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{halfedge_index_map}
+  ///     \cgalParamDescription{a property map associating to each halfedge of `tm` a unique index in
+  ///                           `[0, num_halfedges(tm))`: the numbering of the elements (faces addressed by
+  ///                           index, error messages)}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and an integer as
+  ///                    value type}
+  ///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_halfedge_index_map(tm)`)}
+  ///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+  ///                     `[0, num_halfedges(tm))`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{edge_index_map}
+  ///     \cgalParamDescription{a property map associating to each edge of `tm` a unique index in
+  ///                           `[0, num_edges(tm))`: the numbering of the elements (faces addressed by index,
+  ///                           error messages)}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and an integer as
+  ///                    value type}
+  ///     \cgalParamDefault{the order of `edges(tm)`}
+  ///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+  ///                     `[0, num_edges(tm))`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{face_index_map}
+  ///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in
+  ///                           `[0, num_faces(tm))`: the numbering of the elements (faces addressed by index,
+  ///                           error messages)}
+  ///     \cgalParamType{a class model of `ReadablePropertyMap` with
+  ///                    `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and an integer as
+  ///                    value type}
+  ///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_face_index_map(tm)`)}
+  ///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+  ///                     `[0, num_faces(tm))`}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
   ///
   /// \throws Invalid_mesh on bad input, Invalid_parameter if n < 1, Linear_solver_failure
   ///
@@ -550,8 +516,9 @@ Trivial_connection(const TriangleMesh&) -> Trivial_connection<TriangleMesh>;
 /// \param tm a triangle mesh
 /// \param face_indices a readable face -> integer map: the indices in units of 1/n
 /// \param field a writable vertex -> `Vector_3` map (output), written only on success
-/// \param np optional named parameters: those of the `Trivial_connection` constructor
-///        (`vertex_point_map`, `sparse_linear_solver`, `symmetry_order`, index maps)
+/// \param np an optional sequence of named parameters: exactly those of the `Trivial_connection`
+///        constructor (`vertex_point_map`, `sparse_linear_solver`, `symmetry_order` and the four
+///        index maps), with the same types, defaults and checks
 ///
 /// \returns the largest adjustment (see `Trivial_connection::largest_adjustment()`)
 /// \throws Invalid_mesh, Invalid_parameter, Invalid_constraints, Linear_solver_failure as

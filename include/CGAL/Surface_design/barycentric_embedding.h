@@ -36,18 +36,86 @@ namespace Surface_design {
 /// \param pm a polygon mesh (any faces; only its connectivity matters for uniform weights)
 /// \param fixed_vertices a readable vertex -> bool property map (true: fixed), or a range of the
 ///        fixed vertex descriptors
-/// \param np optional named parameters among:
-/// - `vertex_point_map`: read (fixed vertices) and written (free vertices); default
-///   `get(CGAL::vertex_point, pm)`
-/// - `weighting` (`Edge_weighting`): default `uniform` (the paper's graph barycentre)
-/// - `reference_point_map`: geometry of the cotangent or mean-value weights; default: the
-///   vertex point map before the call
-/// - `sparse_linear_solver`: a model of `SparseLinearAlgebraWithFactorTraits_d` for symmetric
-///   positive definite systems; default `Default_solver_traits` (mean-value weights always use
-///   `Sparse_lu_solver_traits`, their system not being symmetric)
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `pm`: read at the fixed
+///                           vertices, written at the free vertices}
+///     \cgalParamType{a class model of `ReadWritePropertyMap` with
+///                    `boost::graph_traits<PolygonMesh>::%vertex_descriptor` as key type and `%Point_3` as
+///                    value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, pm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{weighting}
+///     \cgalParamDescription{the weights w_ij of the barycentres}
+///     \cgalParamType{`Edge_weighting`: `uniform`, `cotangent` (triangle meshes only) or `mean_value`}
+///     \cgalParamDefault{`Edge_weighting::uniform` (the paper's)}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is not an enumerator of `Edge_weighting`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{reference_point_map}
+///     \cgalParamDescription{the geometry the cotangent or mean-value weights are computed from}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<PolygonMesh>::%vertex_descriptor` as key type and `%Point_3` as
+///                    value type}
+///     \cgalParamDefault{the vertex point map before the call}
+///     \cgalParamExtra{read only with `cotangent` or `mean_value` weights, and validated like the vertex
+///                     point map: throws `Invalid_mesh` if a coordinate is not finite, or, there, a triangle
+///                     (cotangent weights) or an edge (mean-value weights) is degenerate}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{sparse_linear_solver}
+///     \cgalParamDescription{the sparse solver that factors the symmetric system of the free vertices
+///                           (uniform and cotangent weights)}
+///     \cgalParamType{a class model of `SparseLinearAlgebraWithFactorTraits_d`}
+///     \cgalParamDefault{`Default_solver_traits` (`Size_switched_cholesky`: the simplicial LDLT below 20000
+///                       unknowns, the supernodal Cholesky from there)}
+///     \cgalParamExtra{not used with mean-value weights: that system is not symmetric and is always factored
+///                     by `Sparse_lu_solver_traits`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `pm` a unique index in
+///                           `[0, num_vertices(pm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<PolygonMesh>::%vertex_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_vertex_index_map(pm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_vertices(pm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{halfedge_index_map}
+///     \cgalParamDescription{a property map associating to each halfedge of `pm` a unique index in
+///                           `[0, num_halfedges(pm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<PolygonMesh>::%halfedge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_halfedge_index_map(pm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_halfedges(pm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_index_map}
+///     \cgalParamDescription{a property map associating to each edge of `pm` a unique index in
+///                           `[0, num_edges(pm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<PolygonMesh>::%edge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the order of `edges(pm)`}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_edges(pm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `pm` a unique index in
+///                           `[0, num_faces(pm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<PolygonMesh>::%face_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_face_index_map(pm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_faces(pm))`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \returns the number of free vertices moved
-/// \throws Invalid_mesh, Invalid_constraints, Linear_solver_failure, as
+/// \throws Invalid_mesh, Invalid_constraints, Invalid_parameter, Linear_solver_failure, as
 ///         `Barycentric_embedder`'s constructor and `update()`; the mesh is unchanged then
 /// Complexity: one sparse factorization of size #free vertices.
 template <class PolygonMesh, class FixedVertices,
@@ -72,11 +140,11 @@ struct Iterative_embedding_result
   bool converged = false;     ///< the area changed by less than the tolerance in the last step
 };
 
-namespace barycentric_detail {
+namespace internal {
 
 // Area of a polygon mesh given its vertex positions: the norm of each face's vector area
 // (1/2 sum p_k x p_{k+1}), exact for planar faces and for triangles.
-inline double surface_area(const std::vector<std::size_t>& face_start,
+inline double polygon_mesh_area(const std::vector<std::size_t>& face_start,
                            const std::vector<std::size_t>& face_vertex,
                            const std::vector<Eigen::Vector3d>& x)
 {
@@ -92,7 +160,7 @@ inline double surface_area(const std::vector<std::size_t>& face_start,
   return area;
 }
 
-} // namespace barycentric_detail
+} // namespace internal
 
 /// \ingroup PkgBarycentricEmbeddingRef
 ///
@@ -106,14 +174,95 @@ inline double surface_area(const std::vector<std::size_t>& face_start,
 /// mean-value weights (positive weights, every free component with a fixed vertex); with
 /// negative cotangent weights it may not.
 ///
-/// Same parameters as `barycentric_embedding()` (but no `sparse_linear_solver`), plus:
-/// - `area_tolerance` (double > 0): absolute change of the area that stops the iteration;
-///   default 1e-6 (the paper's)
-/// - `number_of_iterations` (std::size_t): the largest number of steps; default 1000000
+/// \param np an optional sequence of named parameters among the ones listed below (those of
+///        `barycentric_embedding()` but `sparse_linear_solver`, plus `area_tolerance` and
+///        `number_of_iterations`)
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `pm`: the starting
+///                           positions, and the positions of the free vertices after the last step are
+///                           written to it}
+///     \cgalParamType{a class model of `ReadWritePropertyMap` with
+///                    `boost::graph_traits<PolygonMesh>::%vertex_descriptor` as key type and `%Point_3` as
+///                    value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, pm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{weighting}
+///     \cgalParamDescription{the weights w_ij of the barycentres}
+///     \cgalParamType{`Edge_weighting`: `uniform`, `cotangent` (triangle meshes only) or `mean_value`}
+///     \cgalParamDefault{`Edge_weighting::uniform` (the paper's)}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is not an enumerator of `Edge_weighting`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{reference_point_map}
+///     \cgalParamDescription{the geometry the cotangent or mean-value weights are computed from}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<PolygonMesh>::%vertex_descriptor` as key type and `%Point_3` as
+///                    value type}
+///     \cgalParamDefault{the vertex point map before the call}
+///     \cgalParamExtra{read only with `cotangent` or `mean_value` weights, and validated like the vertex
+///                     point map: throws `Invalid_mesh` if a coordinate is not finite, or, there, a triangle
+///                     (cotangent weights) or an edge (mean-value weights) is degenerate}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{area_tolerance}
+///     \cgalParamDescription{the absolute change of the surface area in one step below which the iteration
+///                           stops}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`1e-6` (the paper's)}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is not finite and positive}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{the largest number of steps C <- F C}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{`1000000`}
+///     \cgalParamExtra{not validated: 0 makes no step (and writes the current positions)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `pm` a unique index in
+///                           `[0, num_vertices(pm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<PolygonMesh>::%vertex_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_vertex_index_map(pm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_vertices(pm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{halfedge_index_map}
+///     \cgalParamDescription{a property map associating to each halfedge of `pm` a unique index in
+///                           `[0, num_halfedges(pm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<PolygonMesh>::%halfedge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_halfedge_index_map(pm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_halfedges(pm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_index_map}
+///     \cgalParamDescription{a property map associating to each edge of `pm` a unique index in
+///                           `[0, num_edges(pm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<PolygonMesh>::%edge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the order of `edges(pm)`}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_edges(pm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `pm` a unique index in
+///                           `[0, num_faces(pm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<PolygonMesh>::%face_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_face_index_map(pm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_faces(pm))`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \returns the number of steps, the final area and whether the tolerance was met. The positions
 ///          of the last step are written in either case.
-/// \throws Invalid_mesh, Invalid_constraints (as `barycentric_embedding()`), Linear_solver_failure
+/// \throws Invalid_mesh, Invalid_constraints (as `barycentric_embedding()`), Invalid_parameter
+///         (`area_tolerance` not finite and positive, `weighting` not an enumerator), Linear_solver_failure
 ///         if the iteration diverges (possible with negative cotangent weights); nothing is
 ///         written then
 /// Complexity: O(|E| + |F|) per step.
@@ -157,7 +306,7 @@ barycentric_embedding_iterative(PolygonMesh& pm, const FixedVertices& fixed_vert
     x[v] = internal::position(vpm, idx.vertex(v));
 
   Iterative_embedding_result result;
-  result.area = barycentric_detail::surface_area(face_start, face_vertex, x);
+  result.area = internal::polygon_mesh_area(face_start, face_vertex, x);
   next = x;
   while(result.iterations < max_iterations && !s.free_vertices.empty())
   {
@@ -175,7 +324,7 @@ barycentric_embedding_iterative(PolygonMesh& pm, const FixedVertices& fixed_vert
     }
     std::swap(x, next);
     ++result.iterations;
-    const double area = barycentric_detail::surface_area(face_start, face_vertex, x);
+    const double area = internal::polygon_mesh_area(face_start, face_vertex, x);
     if(!std::isfinite(area))
       throw Linear_solver_failure("the iteration C <- F C diverged after " +
                                   std::to_string(result.iterations) + " steps (" +

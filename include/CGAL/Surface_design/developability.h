@@ -9,7 +9,7 @@
 
 #include <CGAL/Surface_design/developability_energy.h>
 #include <CGAL/Surface_design/exceptions.h>
-#include <CGAL/Surface_design/internal/Core/Lbfgs_minimizer.h>
+#include <CGAL/Surface_design/internal/Solvers/Lbfgs_minimizer.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/Core/named_parameters.h>
 #include <CGAL/Surface_design/internal/Core/validation.h>
@@ -77,13 +77,14 @@ struct Developability_flow_result
   bool stopped_by_visitor = false;
   /// Wall-clock seconds: energy and gradient evaluations (line searches included), small-angle
   /// handling, subdivisions, and everything together.
-  double seconds_evaluation = 0., seconds_remeshing = 0., seconds_subdivision = 0., seconds_total = 0.;
+  double evaluation_seconds = 0., remeshing_seconds = 0., subdivision_seconds = 0., total_seconds = 0.;
 };
 
-namespace developability_detail {
+namespace internal {
 
+// The options of the flow from the named parameters, validated.
 template <class NamedParameters>
-internal::Developability_flow_options flow_options(const NamedParameters& np)
+Developability_flow_options developability_flow_options(const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -120,7 +121,7 @@ internal::Developability_flow_options flow_options(const NamedParameters& np)
   return o;
 }
 
-} // namespace developability_detail
+} // namespace internal
 
 /// \ingroup PkgDevelopabilityRef
 ///
@@ -129,16 +130,100 @@ internal::Developability_flow_options flow_options(const NamedParameters& np)
 /// request, its value and its (sub)gradient per vertex.
 ///
 /// \param tm a triangle mesh (validated)
-/// \param np optional named parameters among:
-/// - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
-/// - `developability_energy` (`Developability_energy`): default `covariance` (E^lambda, eq. 3-4)
-/// - `omit_valence_three_vertices` (bool): default true (the paper's triple points, sec. 4.1.4)
-/// - `include_boundary_vertices` (bool): default false (as the paper and its reference code)
-/// - `vertex_energy_map` (writable vertex -> double): each star's energy (0 where it carries none)
-/// - `vertex_gradient_map` (writable vertex -> `Vector_3`): the gradient of the total with
-///   respect to each vertex position
-/// - `parallel_evaluation` (bool): default true; with TBB (CGAL_LINKED_WITH_TBB) the stars are
-///   evaluated in parallel, with results bitwise identical to the sequential ones
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as
+///                    value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{developability_energy}
+///     \cgalParamDescription{the measure of non-developability of a vertex star (see
+///                           `Developability_energy`)}
+///     \cgalParamType{`Developability_energy`}
+///     \cgalParamDefault{`Developability_energy::covariance` (E^lambda, eqs. 3-4)}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is not an enumerator of `Developability_energy`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{omit_valence_three_vertices}
+///     \cgalParamDescription{`true`: the stars of valence less than 4 carry no energy (the paper omits its
+///                           valence-3 vertices, the triple points of sec. 4.1.4)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{include_boundary_vertices}
+///     \cgalParamDescription{whether the stars of boundary vertices carry energy}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false` (as the paper and its reference code)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{parallel_evaluation}
+///     \cgalParamDescription{with TBB linked (`CGAL_LINKED_WITH_TBB`), the stars are evaluated in parallel,
+///                           with results bitwise identical to the sequential ones}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_energy_map}
+///     \cgalParamDescription{output: the energy of each vertex's star (0 where it carries none)}
+///     \cgalParamType{a class model of `WritablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `double` as
+///                    value type}
+///     \cgalParamDefault{not written}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_gradient_map}
+///     \cgalParamDescription{output: the (sub)gradient of the total energy with respect to each vertex
+///                           position}
+///     \cgalParamType{a class model of `WritablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Vector_3` as
+///                    value type}
+///     \cgalParamDefault{not written}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in
+///                           `[0, num_vertices(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_vertex_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_vertices(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{halfedge_index_map}
+///     \cgalParamDescription{a property map associating to each halfedge of `tm` a unique index in
+///                           `[0, num_halfedges(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_halfedge_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_halfedges(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_index_map}
+///     \cgalParamDescription{a property map associating to each edge of `tm` a unique index in
+///                           `[0, num_edges(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the order of `edges(tm)`}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_edges(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in
+///                           `[0, num_faces(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_face_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_faces(tm))`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// The parameters of `make_piecewise_developable()` that this function does not use are checked all
+/// the same: `number_of_subdivisions`, `gradient_tolerance`, `energy_tolerance`, `minimum_angle` or
+/// `descent_method` out of its range throws `Invalid_parameter` here too.
 ///
 /// \returns the total energy
 /// \throws Invalid_mesh, Invalid_parameter; nothing is written then
@@ -150,7 +235,7 @@ double developability_energy(const TriangleMesh& tm, const NamedParameters& np =
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const internal::Developability_flow_options o = developability_detail::flow_options(np);
+  const internal::Developability_flow_options o = internal::developability_flow_options(np);
   const auto vpm = internal::const_vertex_point_map(tm, np);
   const internal::Mesh_indices<TriangleMesh> idx(tm, np);
   internal::validate_mesh(idx, vpm);
@@ -182,7 +267,7 @@ double developability_energy(const TriangleMesh& tm, const NamedParameters& np =
 ///
 /// **A level** runs the descent until `number_of_iterations` iterations were made, or the scaled
 /// gradient norm (RMS of the gradient's coordinates times the mean edge length, dimensionless) is
-/// below `gradient_tolerance`, or the energy fell by less than `energy_tolerance` (relative) over
+/// at most `gradient_tolerance`, or the energy fell by at most `energy_tolerance` (relative) over
 /// the last 100 iterations (counted since the last flip or collapse, which may raise it), or the
 /// line search failed twice in a row (at a kink the descent cannot pass). Then the mesh is
 /// subdivided (if subdivisions remain) and the next level starts from a reset optimizer.
@@ -198,23 +283,135 @@ double developability_energy(const TriangleMesh& tm, const NamedParameters& np =
 ///
 /// \param tm a triangle mesh, a model of `MutableFaceGraph` (validated: manifold, no degenerate
 ///        face, finite coordinates)
-/// \param np optional named parameters among:
-/// - `vertex_point_map`: writable; default `get(CGAL::vertex_point, tm)`
-/// - `developability_energy` (`Developability_energy`): default `covariance` (E^lambda)
-/// - `number_of_subdivisions` (std::size_t, at most 6): default 0 (the paper uses 2 or 3 on a
-///   mesh of about 1k faces)
-/// - `number_of_iterations` (std::size_t): the largest number of descent iterations per level;
-///   default 1000
-/// - `gradient_tolerance` (double >= 0): default 1e-6
-/// - `energy_tolerance` (double >= 0): default 1e-5
-/// - `minimum_angle` (double in [0, pi/6], radians): default 0.01 (the reference code's); 0
-///   turns the small-angle handling off
-/// - `omit_valence_three_vertices` (bool): default true; `include_boundary_vertices` (bool):
-///   default false
-/// - `descent_method` (`Developability_descent`): default `lbfgs`
-/// - `parallel_evaluation` (bool): default true (with TBB)
-/// - `visitor`: a callable `bool(const Developability_iteration&)` called after every iteration;
-///   returning false stops the flow (the mesh keeps the current positions)
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`: the positions are
+///                           read from it and the new ones written to it}
+///     \cgalParamType{a class model of `ReadWritePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as
+///                    value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{developability_energy}
+///     \cgalParamDescription{the measure of non-developability of a vertex star (see
+///                           `Developability_energy`)}
+///     \cgalParamType{`Developability_energy`}
+///     \cgalParamDefault{`Developability_energy::covariance` (E^lambda, eqs. 3-4)}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is not an enumerator of `Developability_energy`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_subdivisions}
+///     \cgalParamDescription{the number of regular 4-1 subdivisions, each after a level of descent}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{`0` (the paper uses 2 or 3 on a mesh of about 1k faces)}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is larger than 6 (each multiplies the faces by 4)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{the largest number of descent iterations per level}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{`1000`}
+///     \cgalParamExtra{not validated: 0 makes no iteration}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{gradient_tolerance}
+///     \cgalParamDescription{a level ends when the scaled gradient norm (RMS of the gradient's coordinates
+///                           times the mean edge length) is at most this}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`1e-6`}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is negative or not finite}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{energy_tolerance}
+///     \cgalParamDescription{a level ends when the energy fell by at most this, relative, over the last 100
+///                           iterations (counted since the last flip or collapse)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`1e-5`}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is negative or not finite}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{minimum_angle}
+///     \cgalParamDescription{the corner angle, in radians, below which a triangle is treated by the
+///                           small-angle handling (see **Small angles** above); 0 turns it off}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`0.01` (the reference code's)}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is not in [0, pi/6]}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{omit_valence_three_vertices}
+///     \cgalParamDescription{`true`: the stars of valence less than 4 carry no energy (the paper omits its
+///                           valence-3 vertices, the triple points of sec. 4.1.4)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{include_boundary_vertices}
+///     \cgalParamDescription{whether the stars of boundary vertices carry energy}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false` (as the paper and its reference code)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{descent_method}
+///     \cgalParamDescription{the descent method}
+///     \cgalParamType{`Developability_descent`}
+///     \cgalParamDefault{`Developability_descent::lbfgs`}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is not an enumerator of `Developability_descent`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{parallel_evaluation}
+///     \cgalParamDescription{with TBB linked (`CGAL_LINKED_WITH_TBB`), the stars are evaluated in parallel,
+///                           with results bitwise identical to the sequential ones}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{visitor}
+///     \cgalParamDescription{a callable called after every iteration with its `Developability_iteration`;
+///                           returning `false` stops the flow (the mesh keeps the current positions)}
+///     \cgalParamType{a callable `bool(const Developability_iteration&)`}
+///     \cgalParamDefault{none: the flow runs to its end}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in
+///                           `[0, num_vertices(tm))`: the numbering of the elements in the error messages of
+///                           the validation of the input (the flow then numbers the mesh it modifies by the
+///                           mesh's own maps)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_vertex_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_vertices(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{halfedge_index_map}
+///     \cgalParamDescription{a property map associating to each halfedge of `tm` a unique index in
+///                           `[0, num_halfedges(tm))`: the numbering of the elements in the error messages of
+///                           the validation of the input (the flow then numbers the mesh it modifies by the
+///                           mesh's own maps)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_halfedge_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_halfedges(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_index_map}
+///     \cgalParamDescription{a property map associating to each edge of `tm` a unique index in
+///                           `[0, num_edges(tm))`: the numbering of the elements in the error messages of the
+///                           validation of the input (the flow then numbers the mesh it modifies by the
+///                           mesh's own maps)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the order of `edges(tm)`}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_edges(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in
+///                           `[0, num_faces(tm))`: the numbering of the elements in the error messages of the
+///                           validation of the input (the flow then numbers the mesh it modifies by the
+///                           mesh's own maps)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_face_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_faces(tm))`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \returns per level: iterations, energies, why it ended; in total: iterations, evaluations,
 ///          flips, collapses, subdivisions, and seconds per phase
@@ -228,7 +425,7 @@ Developability_flow_result make_piecewise_developable(TriangleMesh& tm,
   using Vpm = typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::type;
   const Vpm vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                    get_property_map(CGAL::vertex_point, tm));
-  const internal::Developability_flow_options o = developability_detail::flow_options(np);
+  const internal::Developability_flow_options o = internal::developability_flow_options(np);
   {
     const internal::Mesh_indices<TriangleMesh> idx(tm, np);
     internal::validate_mesh(idx, vpm);
@@ -253,7 +450,7 @@ Developability_flow_result make_piecewise_developable(TriangleMesh& tm,
       internal::midpoint_subdivision(tm, vpm);
       state.rebuild();
       ++result.subdivisions;
-      result.seconds_subdivision += clock.seconds();
+      result.subdivision_seconds += clock.seconds();
     }
     internal::Lbfgs_minimizer minimizer(lo);
     Developability_flow_result::Level report;
@@ -264,7 +461,7 @@ Developability_flow_result make_piecewise_developable(TriangleMesh& tm,
     {
       const internal::Phase_clock clock;
       const internal::Lbfgs_step_result s = minimizer.step(state, state.coordinates());
-      result.seconds_evaluation += clock.seconds();
+      result.evaluation_seconds += clock.seconds();
       if(it == 0)
         report.initial_energy = s.energy_before;
       const bool accepted = s.status == internal::Lbfgs_step_status::accepted;
@@ -295,7 +492,7 @@ Developability_flow_result make_piecewise_developable(TriangleMesh& tm,
             result.flips += r.flips;
             result.collapses += r.collapses;
           }
-          result.seconds_remeshing += remesh.seconds();
+          result.remeshing_seconds += remesh.seconds();
         }
       }
       info.vertices = num_vertices(tm);
@@ -339,7 +536,7 @@ Developability_flow_result make_piecewise_developable(TriangleMesh& tm,
     result.levels.push_back(report);
   }
   result.evaluations = state.evaluations();
-  result.seconds_total = total.seconds();
+  result.total_seconds = total.seconds();
   return result;
 }
 
@@ -375,124 +572,44 @@ struct Developability_metrics
   double mean_distance = std::numeric_limits<double>::quiet_NaN();
 };
 
-namespace developability_detail {
-
-template <class TriangleMesh, class VertexPointMap, class NamedParameters>
-Developability_metrics metrics(const TriangleMesh& tm, const VertexPointMap& vpm, const TriangleMesh* reference,
-                               const NamedParameters& np)
-{
-  const internal::Developability_flow_options o = flow_options(np);
-  const internal::Mesh_indices<TriangleMesh> idx(tm, np);
-  internal::validate_mesh(idx, vpm);
-  Developability_metrics m;
-  m.vertices = idx.number_of_vertices();
-  m.faces = idx.number_of_faces();
-  m.energy = developability_energy(tm, np);
-  const internal::Developability_per_vertex d = internal::developability_per_vertex(idx, vpm, o.parallel);
-  std::vector<double> measured;
-  for(std::size_t v = 0; v < d.lambda.size(); ++v)
-    if(d.measured[v])
-      measured.push_back(d.lambda[v]);
-  m.measured_vertices = measured.size();
-  if(!measured.empty())
-  {
-    const double tau4 = internal::two_pi * 1e-4, tau3 = internal::two_pi * 1e-3;
-    m.lambda_max = *std::max_element(measured.begin(), measured.end());
-    m.lambda_mean = std::accumulate(measured.begin(), measured.end(), 0.) / double(measured.size());
-    std::vector<double> sorted = measured;
-    std::sort(sorted.begin(), sorted.end());
-    m.lambda_p95 = sorted[std::min(sorted.size() - 1, std::size_t(std::ceil(0.95 * double(sorted.size()))) - 1)];
-    m.hinge_share_1e4 = double(std::count_if(measured.begin(), measured.end(), [&](double l) { return l < tau4; })) /
-                        double(measured.size());
-    m.hinge_share_1e3 = double(std::count_if(measured.begin(), measured.end(), [&](double l) { return l < tau3; })) /
-                        double(measured.size());
-  }
-  // angle defects, seams
-  const std::vector<double> corner = internal::corner_angles(idx, vpm);
-  const std::vector<double> angle_sum = internal::vertex_angle_sums(idx, corner);
-  std::vector<bool> seam(idx.number_of_vertices(), false);
-  double defect_sum = 0., seam_defect = 0.;
-  std::size_t interior = 0;
-  for(std::size_t v = 0; v < seam.size(); ++v)
-  {
-    if(!d.interior[v])
-      continue;
-    const double omega = std::abs(internal::two_pi - angle_sum[v]);
-    ++interior;
-    defect_sum += omega;
-    m.angle_defect_max = (std::max)(m.angle_defect_max, omega);
-    seam[v] = d.lambda[v] >= internal::two_pi * 1e-4;
-    if(seam[v])
-    {
-      ++m.seam_vertices;
-      seam_defect += omega;
-    }
-  }
-  m.angle_defect_mean = interior > 0 ? defect_sum / double(interior) : 0.;
-  m.seam_curvature_share = defect_sum > 0. ? seam_defect / defect_sum : 1.;
-  std::vector<std::size_t> parent(seam.size());
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto find = [&parent](std::size_t x) {
-    while(parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  std::vector<bool> on_seam_edge(seam.size(), false);
-  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
-  {
-    const auto ij = idx.edge_vertices(e);
-    if(!seam[ij.first] || !seam[ij.second])
-      continue;
-    m.seam_length += (internal::position(vpm, idx.vertex(ij.first)) - internal::position(vpm, idx.vertex(ij.second))).norm();
-    on_seam_edge[ij.first] = on_seam_edge[ij.second] = true;
-    parent[find(ij.first)] = find(ij.second);
-  }
-  for(std::size_t v = 0; v < seam.size(); ++v)
-    m.seam_curves += on_seam_edge[v] && find(v) == v;
-  m.minimum_angle = internal::pi;
-  for(std::size_t h = 0; h < corner.size(); ++h)
-    if(!idx.is_border(idx.halfedge(h)))
-      m.minimum_angle = (std::min)(m.minimum_angle, corner[h]);
-  if(reference)
-  {
-    const auto ref_vpm = get(CGAL::vertex_point, *reference);
-    CGAL::Bbox_3 box;
-    for(auto v : vertices(*reference))
-      box += get(ref_vpm, v).bbox();
-    const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                                      CGAL::square(box.zmax() - box.zmin()));
-    const auto dist = internal::surface_distances(tm, vpm, *reference, ref_vpm, 4 * (m.faces + num_faces(*reference)));
-    m.hausdorff_distance = dist.first / diagonal;
-    m.mean_distance = dist.second / diagonal;
-  }
-  return m;
-}
-
-} // namespace developability_detail
-
 /// \ingroup PkgDevelopabilityRef
 ///
 /// The metrics of a design (see `Developability_metrics`).
-/// \param np as `developability_energy()` (the energy whose total is reported, the point map,
-///        the index maps)
+/// \param np an optional sequence of named parameters: exactly those of `developability_energy()`,
+///        with the same types, defaults and checks. `energy` is `developability_energy(tm, np)`, so
+///        `vertex_energy_map` and `vertex_gradient_map` are written if given; the point map, the
+///        index maps and `parallel_evaluation` serve the other measures too, while
+///        `developability_energy`, `omit_valence_three_vertices` and `include_boundary_vertices`
+///        change only `energy`
 /// \throws Invalid_mesh, Invalid_parameter
 /// Complexity: linear in the mesh size (plus the star costs of the chosen energy).
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Developability_metrics developability_metrics(const TriangleMesh& tm,
                                               const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return developability_detail::metrics(tm, internal::const_vertex_point_map(tm, np), static_cast<const TriangleMesh*>(nullptr), np);
+  const internal::Developability_flow_options o = internal::developability_flow_options(np);
+  Developability_metrics m;
+  internal::measure_developability(m, tm, internal::const_vertex_point_map(tm, np), static_cast<const TriangleMesh*>(nullptr),
+                                   np, o.parallel);
+  m.energy = developability_energy(tm, np);
+  return m;
 }
 
 /// \ingroup PkgDevelopabilityRef
 /// Same, with the distances to `reference` (e.g. the input of the flow), relative to the
 /// reference's bounding-box diagonal. `tm` is read through the point map of `np`, `reference`
 /// through its own `CGAL::vertex_point` map.
+/// \param np an optional sequence of named parameters: exactly those of `developability_energy()`,
+///        as the overload without `reference`
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Developability_metrics developability_metrics(const TriangleMesh& tm, const TriangleMesh& reference,
                                               const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return developability_detail::metrics(tm, internal::const_vertex_point_map(tm, np), &reference, np);
+  const internal::Developability_flow_options o = internal::developability_flow_options(np);
+  Developability_metrics m;
+  internal::measure_developability(m, tm, internal::const_vertex_point_map(tm, np), &reference, np, o.parallel);
+  m.energy = developability_energy(tm, np);
+  return m;
 }
 
 } // namespace Surface_design

@@ -31,7 +31,7 @@ namespace Surface_design {
 
 /// \ingroup PkgDevelopabilityRef
 /// What `compute_developable_cut()` found.
-struct Developable_cut_report
+struct Developable_cut_result
 {
   std::size_t terminals = 0;       ///< interior vertices with lambda_i > epsilon
   std::size_t boundary_loops = 0;  ///< boundary loops of the input (each joined to the cut)
@@ -63,20 +63,89 @@ struct Developable_cut_report
 /// \param tm a triangle mesh (validated: manifold, no degenerate face, finite coordinates), any
 ///        genus, boundaries and number of components
 /// \param cut_edges output iterator receiving the `edge_descriptor`s of the cut
-/// \param np optional named parameters among:
-/// - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
-/// - `cut_tolerance` (double >= 0): epsilon; default 1e-3 (the paper's Fig. 20 uses .01 to .001)
-/// - `ruling_alignment_weight` (double >= 0): w; default 1 (0: shortest cuts)
-/// - `vertex_energy_map` (writable vertex -> double): receives lambda_i of every vertex
-/// - `parallel_evaluation` (bool): default true (TBB)
-/// - index maps (`vertex_index_map`, ...)
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as
+///                    value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{cut_tolerance}
+///     \cgalParamDescription{epsilon: the interior vertices with lambda_i > epsilon are the terminals of the
+///                           cut (smaller: more cuts, less distortion)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`1e-3` (the paper's Fig. 20 uses .01 to .001)}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is negative or not finite}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{ruling_alignment_weight}
+///     \cgalParamDescription{w in the edge cost |e| (1 + w (|u_a x e^| + |u_b x e^|) / 2); 0: shortest cuts}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`1`}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is negative or not finite}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_energy_map}
+///     \cgalParamDescription{output: lambda_i of every vertex}
+///     \cgalParamType{a class model of `WritablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `double` as
+///                    value type}
+///     \cgalParamDefault{not written}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{parallel_evaluation}
+///     \cgalParamDescription{with TBB linked (`CGAL_LINKED_WITH_TBB`), the lambda_i are computed in parallel}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in
+///                           `[0, num_vertices(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_vertex_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_vertices(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{halfedge_index_map}
+///     \cgalParamDescription{a property map associating to each halfedge of `tm` a unique index in
+///                           `[0, num_halfedges(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_halfedge_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_halfedges(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_index_map}
+///     \cgalParamDescription{a property map associating to each edge of `tm` a unique index in
+///                           `[0, num_edges(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the order of `edges(tm)`}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_edges(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in
+///                           `[0, num_faces(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_face_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_faces(tm))`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \returns what was cut
 /// \throws Invalid_mesh, Invalid_parameter (nothing written then)
 /// Complexity: O(|E| log |V|) (two Dijkstra searches and two Kruskal passes).
 template <class TriangleMesh, class EdgeOutputIterator,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
-Developable_cut_report compute_developable_cut(const TriangleMesh& tm, EdgeOutputIterator cut_edges,
+Developable_cut_result compute_developable_cut(const TriangleMesh& tm, EdgeOutputIterator cut_edges,
                                                const NamedParameters& np = CGAL::parameters::default_values())
 {
   using CGAL::parameters::choose_parameter;
@@ -92,7 +161,7 @@ Developable_cut_report compute_developable_cut(const TriangleMesh& tm, EdgeOutpu
   internal::validate_mesh(idx, vpm);
 
   const internal::Cut_graph g = internal::developable_cut_graph(idx, vpm, o);
-  Developable_cut_report r;
+  Developable_cut_result r;
   r.terminals = g.terminals.size();
   r.boundary_loops = g.boundary_loops;
   r.generator_loops = g.generator_loops;
@@ -128,12 +197,87 @@ Developable_cut_report compute_developable_cut(const TriangleMesh& tm, EdgeOutpu
 /// \param edges a range of `edge_descriptor`s of `tm`
 /// \param out the mesh that receives the cut copy (a `MutableFaceGraph`; normally empty: the
 ///        copy is added to what it holds)
-/// \param np_in optional named parameters of `tm`:
-/// - `vertex_point_map`
-/// - `vertex_to_vertex_output_iterator`: receives a `std::pair` (vertex of `tm`, vertex of
-///   `out`) for every vertex of `out` (several per cut vertex of `tm`)
-/// - `face_to_face_output_iterator`: receives (face of `tm`, face of `out`) for every face
-/// \param np_out optional named parameters of `out`: `vertex_point_map`
+/// \param np_in an optional sequence of named parameters of `tm` among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as
+///                    value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_to_vertex_output_iterator}
+///     \cgalParamDescription{receives a pair (vertex of `tm`, vertex of `out`) for every vertex of `out`
+///                           (several per cut vertex of `tm`)}
+///     \cgalParamType{a model of `OutputIterator` accepting `std::pair`s of a
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` and a
+///                    `boost::graph_traits<OutputMesh>::%vertex_descriptor`}
+///     \cgalParamDefault{unused}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_to_face_output_iterator}
+///     \cgalParamDescription{receives a pair (face of `tm`, face of `out`) for every face}
+///     \cgalParamType{a model of `OutputIterator` accepting `std::pair`s of a
+///                    `boost::graph_traits<TriangleMesh>::%face_descriptor` and a
+///                    `boost::graph_traits<OutputMesh>::%face_descriptor`}
+///     \cgalParamDefault{unused}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in
+///                           `[0, num_vertices(tm))`: the numbering of the elements in error messages; the
+///                           copies of the vertices are added to `out` in this order}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_vertex_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_vertices(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{halfedge_index_map}
+///     \cgalParamDescription{a property map associating to each halfedge of `tm` a unique index in
+///                           `[0, num_halfedges(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_halfedge_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_halfedges(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_index_map}
+///     \cgalParamDescription{a property map associating to each edge of `tm` a unique index in
+///                           `[0, num_edges(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the order of `edges(tm)`}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_edges(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in
+///                           `[0, num_faces(tm))`: the numbering of the elements in error messages; the faces
+///                           are added to `out` in this order}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_face_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_faces(tm))`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \param np_out an optional sequence of named parameters of `out` among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map through which the points of the new vertices of `out` are
+///                           written}
+///     \cgalParamType{a class model of `WritablePropertyMap` with
+///                    `boost::graph_traits<OutputMesh>::%vertex_descriptor` as key type and `%Point_3` as
+///                    value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, out)`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \returns the number of connected components (pieces) of the cut mesh
 /// \throws Invalid_mesh (`tm`), Invalid_constraints (an edge is not an edge of `tm`); `out` is

@@ -12,10 +12,10 @@
 #include <CGAL/Surface_design/internal/Core/dec.h>
 #include <CGAL/Surface_design/internal/Core/discrete_connection.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>
-#include <CGAL/Surface_design/internal/Core/Hermitian_system.h>
+#include <CGAL/Surface_design/internal/Solvers/Hermitian_system.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/Core/named_parameters.h>
-#include <CGAL/Surface_design/internal/Core/shift_invert_lanczos.h>
+#include <CGAL/Surface_design/internal/Solvers/shift_invert_lanczos.h>
 #include <CGAL/Surface_design/internal/Core/topology.h>
 #include <CGAL/Surface_design/internal/Core/validation.h>
 #include <CGAL/Surface_design/internal/Direction_fields/direction_field_operators.h>
@@ -52,7 +52,7 @@ enum class Direction_field_boundary
 
 /// \ingroup PkgDirectionFieldsRef
 /// What `smoothest_direction_field()` computed.
-struct Smoothest_direction_field_info
+struct Smoothest_direction_field_result
 {
   /// Per connected component: the smallest eigenvalue lambda of A u = lambda M u (the normalized
   /// connection energy E(u) / <u, M u> of the returned field) for components solved as an
@@ -102,22 +102,111 @@ struct Smoothest_direction_field_info
 /// \param tm a triangle mesh (validated: no degenerate, non-manifold or non-triangle face)
 /// \param field a writable vertex -> `Vector_3` property map; receives unit tangent vectors
 ///        (tangent to the angle-weighted vertex normal), or vectors of length |u_v| with
-///        `normalize_field(false)` (u scaled to sum_v m_v |u_v|^2 = total area; |u| falls to 0
-///        near singularities); written only if the computation succeeds.
-/// \param np optional named parameters among:
-/// - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
-/// - `sparse_linear_solver`: a model of `SparseLinearAlgebraWithFactorTraits_d`; default
-///   `Default_solver_traits`
-/// - `symmetry_order` (int n >= 1): 1 vector field (default), 2 line field, 4 cross field, ...
-/// - `field_boundary_condition` (`Direction_field_boundary`): default `free`
-/// - `curvature_alignment_weight` (double t >= 0): default 0 (no alignment)
-/// - `normalize_field` (bool): default true
-/// - `eigen_tolerance` (double in (0, 1)): relative Lanczos residual at which the eigensolver
-///   stops; default 1e-6
-/// - `number_of_iterations` (std::size_t >= 1): limit on the Lanczos back-substitutions;
-///   default 200
-/// - `vertex_index_map`, `halfedge_index_map`, `edge_index_map`, `face_index_map`: the numbering
-///   of the elements named in error messages; default the mesh's own
+///        `normalize_field(false)` (u scaled on each connected component to sum_v m_v |u_v|^2 = the
+///        component's area; |u| falls to 0 near singularities); written only if the computation
+///        succeeds.
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as
+///                    value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{sparse_linear_solver}
+///     \cgalParamDescription{the sparse solver that factors the (shifted) Hermitian connection Laplacian: the
+///                           library's own solver traits in complex arithmetic, any other in its real
+///                           symmetric form of size 2|V|}
+///     \cgalParamType{a class model of `SparseLinearAlgebraWithFactorTraits_d`}
+///     \cgalParamDefault{`Default_solver_traits` (`Size_switched_cholesky`: the simplicial LDLT below 20000
+///                       unknowns, the supernodal Cholesky from there)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{symmetry_order}
+///     \cgalParamDescription{the symmetry order n of the field: 1 vector field, 2 line field, 4 cross field,
+///                           ...}
+///     \cgalParamType{`int`}
+///     \cgalParamDefault{`1` (vector field)}
+///     \cgalParamExtra{throws `Invalid_parameter` if n < 1}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{field_boundary_condition}
+///     \cgalParamDescription{what the field does at the boundary of the components that have one: `free` (no
+///                           condition), `tangent` or `normal` (fixed at the boundary vertices, the interior
+///                           by one linear solve)}
+///     \cgalParamType{`Direction_field_boundary`}
+///     \cgalParamDefault{`Direction_field_boundary::free`}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is not an enumerator of `Direction_field_boundary`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{curvature_alignment_weight}
+///     \cgalParamDescription{the weight t of the alignment with the principal curvature directions; 0: no
+///                           alignment}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`0`}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is negative or not finite, or if it is positive and
+///                     `symmetry_order` is odd or the curvature tensor of the mesh vanishes everywhere}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{normalize_field}
+///     \cgalParamDescription{`true`: unit tangent vectors; `false`: vectors of length |u_v|, u scaled per
+///                           connected component to sum_v m_v |u_v|^2 = the component's area}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{eigen_tolerance}
+///     \cgalParamDescription{the Lanczos residual, relative to the eigenvalue, at which the eigensolver
+///                           stops}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`1e-6`}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is not in (0, 1)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{the largest number of Lanczos steps (back-substitutions); `converged` is false
+///                           in the result if the eigensolver stopped there}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{`200`}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is 0}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in
+///                           `[0, num_vertices(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_vertex_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_vertices(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{halfedge_index_map}
+///     \cgalParamDescription{a property map associating to each halfedge of `tm` a unique index in
+///                           `[0, num_halfedges(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_halfedge_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_halfedges(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_index_map}
+///     \cgalParamDescription{a property map associating to each edge of `tm` a unique index in
+///                           `[0, num_edges(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the order of `edges(tm)`}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_edges(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in
+///                           `[0, num_faces(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_face_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_faces(tm))`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \returns the eigenvalue per component, the number of Lanczos steps and whether they converged
 /// \throws Invalid_mesh on bad input (the mesh is never modified)
@@ -131,7 +220,7 @@ struct Smoothest_direction_field_info
 /// back-substitution per Lanczos step (typically 10 to 20).
 template <class TriangleMesh, class VertexVectorMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
-Smoothest_direction_field_info smoothest_direction_field(const TriangleMesh& tm, VertexVectorMap field,
+Smoothest_direction_field_result smoothest_direction_field(const TriangleMesh& tm, VertexVectorMap field,
                                                          const NamedParameters& np = CGAL::parameters::default_values())
 {
   using CGAL::parameters::choose_parameter;
@@ -242,7 +331,7 @@ Smoothest_direction_field_info smoothest_direction_field(const TriangleMesh& tm,
   internal::Hermitian_system<Solver> system(internal::solver_traits(np), "connection Laplacian");
   system.factor(std::move(a));
 
-  Smoothest_direction_field_info info;
+  Smoothest_direction_field_result info;
   info.eigenvalues.assign(nc, std::numeric_limits<double>::quiet_NaN());
   Eigen::VectorXd x = Eigen::VectorXd::Zero(Eigen::Index(2 * nv));
   if(!std::all_of(eigen_component.begin(), eigen_component.end(), [](bool b) { return b; }))
@@ -325,11 +414,64 @@ Smoothest_direction_field_info smoothest_direction_field(const TriangleMesh& tm,
 /// \param tm a triangle mesh
 /// \param field a readable vertex -> `Vector_3` map
 /// \param face_index a writable face -> integer map (output), written only on success
-/// \param np optional named parameters among:
-/// - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
-/// - `symmetry_order` (int n >= 1): default 1
-/// - `vertex_index_map`, `halfedge_index_map`, `edge_index_map`, `face_index_map`: the numbering
-///   of the elements named in error messages; default the mesh's own
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as
+///                    value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{symmetry_order}
+///     \cgalParamDescription{the symmetry order n of the field: 1 vector field, 2 line field, 4 cross field,
+///                           ...}
+///     \cgalParamType{`int`}
+///     \cgalParamDefault{`1` (vector field)}
+///     \cgalParamExtra{throws `Invalid_parameter` if n < 1}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in
+///                           `[0, num_vertices(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_vertex_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_vertices(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{halfedge_index_map}
+///     \cgalParamDescription{a property map associating to each halfedge of `tm` a unique index in
+///                           `[0, num_halfedges(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_halfedge_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_halfedges(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_index_map}
+///     \cgalParamDescription{a property map associating to each edge of `tm` a unique index in
+///                           `[0, num_edges(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the order of `edges(tm)`}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_edges(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in
+///                           `[0, num_faces(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_face_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_faces(tm))`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \returns the number of faces with a non-zero index
 /// \throws Invalid_mesh on bad input; Invalid_parameter if n < 1, or if a field vector is zero,

@@ -126,6 +126,18 @@ public:
   {}
 };
 
+/// \ingroup PkgSurfaceDesignRef
+/// Thrown when the library finds one of its own invariants broken (a bug, not a bad input): the
+/// message says what was found and asks for the input to be reported. Nothing is returned that
+/// breaks the function's promise.
+class Internal_error : public std::logic_error
+{
+public:
+  explicit Internal_error(const std::string& what)
+    : std::logic_error("CGAL::Surface_design: internal error: " + what + " (please report this with the input)")
+  {}
+};
+
 } // namespace Surface_design
 } // namespace CGAL
 

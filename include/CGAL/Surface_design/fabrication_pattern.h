@@ -11,8 +11,8 @@
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/Core/named_parameters.h>
 #include <CGAL/Surface_design/internal/Core/topology.h>
-#include <CGAL/Surface_design/internal/Flattening/distortion.h>
-#include <CGAL/Surface_design/internal/Flattening/pattern_layout.h>
+#include <CGAL/Surface_design/internal/Developability/distortion.h>
+#include <CGAL/Surface_design/internal/Developability/pattern_layout.h>
 #include <CGAL/Surface_design/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -58,11 +58,81 @@ struct Fabrication_layout
 ///
 /// \param tm a triangle mesh (its faces' connectivity defines the pieces)
 /// \param uv a readable and writable vertex -> `Point_2` map (the flattening; overwritten)
-/// \param np optional named parameters among:
-/// - `sheet_size` (`std::pair<double, double>`): width and height in mm; default A4 (210, 297)
-/// - `pattern_scale` (double >= 0): mm per model unit; default 0: the largest "round" scale
-///   (1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8 times a power of ten) at which every piece fits
-/// - `sheet_margin` (double >= 0, mm): default 10; `piece_spacing` (double >= 0, mm): default 5
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{sheet_size}
+///     \cgalParamDescription{the width and the height of a sheet, in mm}
+///     \cgalParamType{`std::pair<double, double>`}
+///     \cgalParamDefault{(210, 297): A4}
+///     \cgalParamExtra{throws `Invalid_parameter` if the width or the height is not in [1, 1e6]}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{pattern_scale}
+///     \cgalParamDescription{mm on the sheet per unit of the model; 0: the largest "round" scale (1, 1.2,
+///                           1.5, 2, 2.5, 3, 4, 5, 6, 8 times a power of ten) at which every piece fits}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`0`}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is negative or not finite, or if a piece does not fit
+///                     inside the margins of a sheet at it}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{sheet_margin}
+///     \cgalParamDescription{the margin along the sides of a sheet, in mm}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`10`}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is negative or not finite, or if twice the margin is
+///                     not less than the smaller side of a sheet}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{piece_spacing}
+///     \cgalParamDescription{the spacing between the pieces on a sheet, in mm}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`5`}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is negative or not finite}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in
+///                           `[0, num_vertices(tm))`: the numbering of the elements, in error messages and
+///                           for the pieces (numbered in the order of their smallest vertex index)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_vertex_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_vertices(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{halfedge_index_map}
+///     \cgalParamDescription{a property map associating to each halfedge of `tm` a unique index in
+///                           `[0, num_halfedges(tm))`: the numbering of the elements, in error messages and
+///                           for the pieces (numbered in the order of their smallest vertex index)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_halfedge_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_halfedges(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_index_map}
+///     \cgalParamDescription{a property map associating to each edge of `tm` a unique index in
+///                           `[0, num_edges(tm))`: the numbering of the elements, in error messages and for
+///                           the pieces (numbered in the order of their smallest vertex index)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the order of `edges(tm)`}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_edges(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in
+///                           `[0, num_faces(tm))`: the numbering of the elements, in error messages and for
+///                           the pieces (numbered in the order of their smallest vertex index)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_face_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_faces(tm))`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \throws Invalid_parameter a size is not finite or out of range, or a piece does not fit on a
 ///         sheet at the given scale; `uv` is not written then
@@ -134,13 +204,78 @@ Fabrication_layout lay_out_flattened_pieces(const TriangleMesh& tm, UVMap uv,
 /// \param tm the flattened mesh (its pieces are the sides of the seams)
 /// \param uv a readable vertex -> `Point_2` map, laid out
 /// \param layout the layout that placed them
-/// \param np optional named parameters among:
-/// - `vertex_point_map`, index maps
-/// - `seam_vertex_index_map` (readable vertex -> integer): the vertex of the uncut mesh that a
-///   vertex copies (e.g. from `cut_mesh_along_edges()`'s `vertex_to_vertex_output_iterator`);
-///   two boundary edges joining copies of the same two vertices are the two sides of a seam.
-///   Without it no seam is labelled.
-/// - `fold_angle` (double in [0, pi], radians): default 5 degrees; pi draws no fold line
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`: the positions in
+///                           space, which give the dihedral angles of the fold lines}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as
+///                    value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{seam_vertex_index_map}
+///     \cgalParamDescription{the vertex of the uncut mesh that a vertex copies (e.g. from
+///                           `cut_mesh_along_edges()`'s `vertex_to_vertex_output_iterator`); two boundary
+///                           edges joining copies of the same two vertices are the two sides of a seam}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{none: no seam is labelled}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{fold_angle}
+///     \cgalParamDescription{the dihedral angle in space, in radians, that an interior edge must exceed to be
+///                           drawn as a fold line; pi draws no fold line}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{5 degrees (`5 * pi / 180`)}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is not in [0, pi]}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in
+///                           `[0, num_vertices(tm))`: the numbering of the elements in the drawing and in
+///                           error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_vertex_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_vertices(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{halfedge_index_map}
+///     \cgalParamDescription{a property map associating to each halfedge of `tm` a unique index in
+///                           `[0, num_halfedges(tm))`: the numbering of the elements in the drawing and in
+///                           error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_halfedge_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_halfedges(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_index_map}
+///     \cgalParamDescription{a property map associating to each edge of `tm` a unique index in
+///                           `[0, num_edges(tm))`: the numbering of the elements in the drawing and in error
+///                           messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the order of `edges(tm)`}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_edges(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in
+///                           `[0, num_faces(tm))`: the numbering of the elements in the drawing and in error
+///                           messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_face_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_faces(tm))`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \throws Invalid_parameter (`fold_angle`, or a coordinate of `uv` that is not finite; nothing
 ///         is written then); std::ios_base::failure is not thrown, check `os`

@@ -37,23 +37,126 @@ namespace Surface_design {
 /// \param face_indices a readable face -> integer map; 0 in every face with an edge on the
 ///        boundary (such a face cannot hold a singularity: see `Field_aligned_parameterizer`)
 /// \param alpha a writable vertex -> double map (output)
-/// \param np optional named parameters among:
-/// - `vertex_point_map`: default `get(CGAL::vertex_point, tm)`
-/// - `sparse_linear_solver`: a model of `SparseLinearAlgebraWithFactorTraits_d`; default
-///   `Default_solver_traits` (simplicial LDLT below 20k unknowns, supernodal Cholesky above)
-/// - `weighting` (`Edge_weighting`): `cotangent` (default) or `uniform`
-/// - `stripes_per_unit_length` (double >= 0): when positive the field is normalized and alpha
-///   advances by 2 pi times this per unit length along it; default 0 = use the field as given
-///   (|X| radians per unit length)
-/// - `one_form_convention` (`One_form_convention`): default `projected`
-/// - `loop_windings` (`std::map<std::size_t, int>`: loop number -> winding): windings of the
-///   listed loops (generators first, then boundary loops); unlisted loops are automatic
-/// - `edge_dalpha_map` (writable edge -> double): dalpha along `halfedge(e, tm)`, unwrapped
-/// - `edge_omega_map` (writable edge -> double): the target 1-form along `halfedge(e, tm)`
-/// - `corner_coordinate_map` (writable halfedge -> double): see
-///   `Field_aligned_parameterizer::corner_coordinates()`
-/// - `vertex_index_map`, `halfedge_index_map`, `edge_index_map`, `face_index_map`: the numbering
-///   used by loop numbers and error messages; default the mesh's own
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as
+///                    value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{sparse_linear_solver}
+///     \cgalParamDescription{the sparse solver that factors the weighted Laplacian with one vertex pinned per
+///                           connected component}
+///     \cgalParamType{a class model of `SparseLinearAlgebraWithFactorTraits_d`}
+///     \cgalParamDefault{`Default_solver_traits` (`Size_switched_cholesky`: the simplicial LDLT below 20000
+///                       unknowns, the supernodal Cholesky from there)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{weighting}
+///     \cgalParamDescription{the edge weights w_e of the least-squares energy}
+///     \cgalParamType{`Edge_weighting`: `cotangent` or `uniform`}
+///     \cgalParamDefault{`Edge_weighting::cotangent` (the paper's)}
+///     \cgalParamExtra{throws `Invalid_parameter` for any other value (`mean_value`: the energy needs
+///                     symmetric weights)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{stripes_per_unit_length}
+///     \cgalParamDescription{when positive, the field is normalized and alpha advances by 2 pi times this per
+///                           unit length along it; 0: the field is used as given (alpha advances by |X|
+///                           radians per unit length)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`0`}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is negative or not finite, or, when it is positive,
+///                     if the field has no tangential component at any vertex of a connected component}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{one_form_convention}
+///     \cgalParamDescription{how the target 1-form omega is computed from the field}
+///     \cgalParamType{`One_form_convention`}
+///     \cgalParamDefault{`One_form_convention::projected`}
+///     \cgalParamExtra{not validated: any value other than `projected` is taken as `angle_rescaled`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{loop_windings}
+///     \cgalParamDescription{the windings of the listed loops, loop number -> winding (the integral of dalpha
+///                           along the loop is 2 pi times the winding); loops are numbered generators first,
+///                           then boundary loops (`Field_aligned_parameterizer::loop()`); the loops not
+///                           listed are automatic}
+///     \cgalParamType{`std::map<std::size_t, int>`, or any range of (loop number, winding) pairs}
+///     \cgalParamDefault{every winding automatic}
+///     \cgalParamExtra{throws `Invalid_constraints` if a loop number does not exist}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_dalpha_map}
+///     \cgalParamDescription{output: dalpha along `halfedge(e, tm)` for every edge `e`, unwrapped}
+///     \cgalParamType{a class model of `WritablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and `double` as value
+///                    type}
+///     \cgalParamDefault{not written}
+///     \cgalParamExtra{written only if the whole computation succeeds}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_omega_map}
+///     \cgalParamDescription{output: the target 1-form omega along `halfedge(e, tm)` for every edge `e`}
+///     \cgalParamType{a class model of `WritablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and `double` as value
+///                    type}
+///     \cgalParamDefault{not written}
+///     \cgalParamExtra{written only if the whole computation succeeds}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{corner_coordinate_map}
+///     \cgalParamDescription{output: for every halfedge `h` that is not a border halfedge, the coordinate u
+///                           at the corner of `face(h, tm)` at `target(h, tm)` (see
+///                           `Field_aligned_parameterizer::corner_coordinates()`); border halfedges are not
+///                           written}
+///     \cgalParamType{a class model of `WritablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and `double` as
+///                    value type}
+///     \cgalParamDefault{not written}
+///     \cgalParamExtra{written only if the whole computation succeeds}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in
+///                           `[0, num_vertices(tm))`: the numbering of the elements (faces addressed by
+///                           index, loops, error messages)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_vertex_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_vertices(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{halfedge_index_map}
+///     \cgalParamDescription{a property map associating to each halfedge of `tm` a unique index in
+///                           `[0, num_halfedges(tm))`: the numbering of the elements (faces addressed by
+///                           index, loops, error messages)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_halfedge_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_halfedges(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_index_map}
+///     \cgalParamDescription{a property map associating to each edge of `tm` a unique index in
+///                           `[0, num_edges(tm))`: the numbering of the elements (faces addressed by index,
+///                           loops, error messages)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the order of `edges(tm)`}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_edges(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in
+///                           `[0, num_faces(tm))`: the numbering of the elements (faces addressed by index,
+///                           loops, error messages)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_face_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_faces(tm))`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \returns the energy sum_e w_e (dalpha_e - omega_e)^2 of the result
 /// \throws Invalid_mesh, Invalid_parameter, Invalid_constraints, Linear_solver_failure (see

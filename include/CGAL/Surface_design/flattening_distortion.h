@@ -11,7 +11,7 @@
 #include <CGAL/Surface_design/internal/Core/named_parameters.h>
 #include <CGAL/Surface_design/internal/Core/topology.h>
 #include <CGAL/Surface_design/internal/Core/validation.h>
-#include <CGAL/Surface_design/internal/Flattening/distortion.h>
+#include <CGAL/Surface_design/internal/Developability/distortion.h>
 #include <CGAL/Surface_design/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -54,11 +54,66 @@ struct Flattening_distortion
 ///
 /// \param tm a triangle mesh (validated)
 /// \param uv a readable vertex -> `Point_2` map
-/// \param np optional named parameters among:
-/// - `vertex_point_map`, index maps
-/// - `face_log_area_scale_map` (writable face -> double): log(s1 s2), the log of the ratio of
-///   the face's areas in the plane and in space (-inf for a face collapsed to zero area; the
-///   orientation is not in it: flipped faces are counted in `flipped_faces`)
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as
+///                    value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_log_area_scale_map}
+///     \cgalParamDescription{output: log(s1 s2), the log of the ratio of the face's areas in the plane and in
+///                           space (-inf for a face collapsed to zero area; the orientation is not in it:
+///                           flipped faces are counted in `flipped_faces`)}
+///     \cgalParamType{a class model of `WritablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `double` as value
+///                    type}
+///     \cgalParamDefault{not written}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in
+///                           `[0, num_vertices(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_vertex_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_vertices(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{halfedge_index_map}
+///     \cgalParamDescription{a property map associating to each halfedge of `tm` a unique index in
+///                           `[0, num_halfedges(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_halfedge_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_halfedges(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_index_map}
+///     \cgalParamDescription{a property map associating to each edge of `tm` a unique index in
+///                           `[0, num_edges(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the order of `edges(tm)`}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_edges(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in
+///                           `[0, num_faces(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_face_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_faces(tm))`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \throws Invalid_mesh the mesh is invalid, Invalid_parameter a coordinate of `uv` is not finite
 template <class TriangleMesh, class UVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>

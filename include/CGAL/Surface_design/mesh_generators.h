@@ -6,6 +6,7 @@
 #ifndef CGAL_SURFACE_DESIGN_MESH_GENERATORS_H
 #define CGAL_SURFACE_DESIGN_MESH_GENERATORS_H
 
+#include <CGAL/Surface_design/exceptions.h>
 #include <CGAL/Surface_design/internal/Core/angles.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -29,7 +30,7 @@
 namespace CGAL {
 namespace Surface_design {
 
-namespace generators_detail {
+namespace internal {
 
 template <class PolygonMesh>
 void soup_to_mesh(const std::vector<std::array<double, 3>>& points,
@@ -45,7 +46,7 @@ void soup_to_mesh(const std::vector<std::array<double, 3>>& points,
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pts, triangles, mesh);
 }
 
-} // namespace generators_detail
+} // namespace internal
 
 /// \ingroup PkgSurfaceDesignRef
 /// Torus of major radius `R` and minor radius `r` around the z axis, tessellated as a
@@ -61,7 +62,7 @@ void make_torus(PolygonMesh& mesh, std::size_t major_segments, std::size_t minor
 {
   if(major_segments < 3 || minor_segments < 3 || !(R > r && r > 0) ||
      (staggered && minor_segments % 2 != 0))
-    throw std::invalid_argument("make_torus: needs >= 3 segments each way (an even number of "
+    throw Invalid_parameter("major_segments, minor_segments, R, r", "make_torus needs >= 3 segments each way (an even number of "
                                 "minor segments if staggered) and R > r > 0");
   constexpr double two_pi = internal::two_pi;
   std::vector<std::array<double, 3>> pts;
@@ -92,7 +93,7 @@ void make_torus(PolygonMesh& mesh, std::size_t major_segments, std::size_t minor
         tris.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
       }
     }
-  generators_detail::soup_to_mesh(pts, tris, mesh);
+  internal::soup_to_mesh(pts, tris, mesh);
 }
 
 /// \ingroup PkgSurfaceDesignRef
@@ -103,7 +104,7 @@ template <class PolygonMesh>
 void make_sphere(PolygonMesh& mesh, std::size_t n)
 {
   if(n < 1)
-    throw std::invalid_argument("make_sphere: n must be at least 1");
+    throw Invalid_parameter("n", "make_sphere: n must be at least 1");
   std::vector<std::array<double, 3>> pts;
   std::vector<std::array<std::size_t, 3>> tris;
   std::map<std::array<long, 3>, std::size_t> lattice; // shared vertices on cube edges
@@ -149,10 +150,10 @@ void make_sphere(PolygonMesh& mesh, std::size_t n)
           }
         }
     }
-  generators_detail::soup_to_mesh(pts, tris, mesh);
+  internal::soup_to_mesh(pts, tris, mesh);
 }
 
-namespace generators_detail {
+namespace internal {
 
 // the triangles of `make_grid` (see there)
 inline void grid_soup(std::size_t nx, std::size_t ny, double jitter,
@@ -210,7 +211,7 @@ inline void grid_soup(std::size_t nx, std::size_t ny, double jitter,
   }
 }
 
-} // namespace generators_detail
+} // namespace internal
 
 /// \ingroup PkgSurfaceDesignRef
 /// Planar grid on [0, 1]^2 (z = 0) with `nx` x `ny` square cells, each split into two triangles
@@ -226,11 +227,11 @@ void make_grid(PolygonMesh& mesh, std::size_t nx, std::size_t ny, double jitter 
                const std::function<bool(std::size_t, std::size_t)>& is_hole = {})
 {
   if(nx < 1 || ny < 1 || !(jitter >= 0. && jitter < 0.5))
-    throw std::invalid_argument("make_grid: needs nx, ny >= 1 and 0 <= jitter < 0.5");
+    throw Invalid_parameter("nx, ny, jitter", "make_grid needs nx, ny >= 1 and 0 <= jitter < 0.5");
   std::vector<std::array<double, 3>> pts;
   std::vector<std::array<std::size_t, 3>> tris;
-  generators_detail::grid_soup(nx, ny, jitter, is_hole, pts, tris);
-  generators_detail::soup_to_mesh(pts, tris, mesh);
+  internal::grid_soup(nx, ny, jitter, is_hole, pts, tris);
+  internal::soup_to_mesh(pts, tris, mesh);
 }
 
 /// \ingroup PkgSurfaceDesignRef
@@ -247,7 +248,7 @@ void make_slab(PolygonMesh& mesh, std::size_t nx, std::size_t ny, double thickne
                const std::function<bool(std::size_t, std::size_t)>& is_hole = {}, std::size_t wall_segments = 1)
 {
   if(nx < 1 || ny < 1 || !(thickness > 0. && std::isfinite(thickness)) || wall_segments < 1)
-    throw std::invalid_argument("make_slab: needs nx, ny >= 1, a finite thickness > 0 and wall_segments >= 1");
+    throw Invalid_parameter("nx, ny, thickness, wall_segments", "make_slab needs nx, ny >= 1, a finite thickness > 0 and wall_segments >= 1");
   auto hole = [&](std::ptrdiff_t i, std::ptrdiff_t j) {
     return i >= 0 && j >= 0 && std::size_t(i) < nx && std::size_t(j) < ny && is_hole &&
            is_hole(std::size_t(i), std::size_t(j));
@@ -255,7 +256,7 @@ void make_slab(PolygonMesh& mesh, std::size_t nx, std::size_t ny, double thickne
   for(std::ptrdiff_t j = 0; j < std::ptrdiff_t(ny); ++j)
     for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(nx); ++i)
       if(hole(i, j) && (i == 0 || j == 0 || i + 1 == std::ptrdiff_t(nx) || j + 1 == std::ptrdiff_t(ny)))
-        throw std::invalid_argument("make_slab: hole cell (" + std::to_string(i) + ", " + std::to_string(j) +
+        throw Invalid_parameter("is_hole", "make_slab: hole cell (" + std::to_string(i) + ", " + std::to_string(j) +
                                     ") is on the border");
   for(std::ptrdiff_t j = 1; j < std::ptrdiff_t(ny); ++j)
     for(std::ptrdiff_t i = 1; i < std::ptrdiff_t(nx); ++i)
@@ -263,12 +264,12 @@ void make_slab(PolygonMesh& mesh, std::size_t nx, std::size_t ny, double thickne
       // the cells around grid vertex (i, j): holes meeting diagonally make it non-manifold
       const bool sw = hole(i - 1, j - 1), se = hole(i, j - 1), ne = hole(i, j), nw = hole(i - 1, j);
       if(sw == ne && se == nw && sw != se)
-        throw std::invalid_argument("make_slab: holes meet diagonally at grid vertex (" + std::to_string(i) + ", " +
+        throw Invalid_parameter("is_hole", "make_slab: holes meet diagonally at grid vertex (" + std::to_string(i) + ", " +
                                     std::to_string(j) + ")");
     }
   std::vector<std::array<double, 3>> pts;
   std::vector<std::array<std::size_t, 3>> tris;
-  generators_detail::grid_soup(nx, ny, 0., is_hole, pts, tris);
+  internal::grid_soup(nx, ny, 0., is_hole, pts, tris);
   // the layers z_0 = top, ..., z_wall_segments = bottom; interior vertices only on top and bottom
   const std::size_t n = pts.size(), top_triangles = tris.size();
   std::map<std::pair<std::size_t, std::size_t>, int> directed;
@@ -325,7 +326,7 @@ void make_slab(PolygonMesh& mesh, std::size_t nx, std::size_t ny, double thickne
       tris.push_back({b0, a0, a1});
       tris.push_back({b0, a1, b1});
     }
-  generators_detail::soup_to_mesh(pts, tris, mesh);
+  internal::soup_to_mesh(pts, tris, mesh);
 }
 
 } // namespace Surface_design

@@ -148,7 +148,7 @@ make_octahedron_membrane(PolygonMesh& mesh, std::size_t m, double radius = 1.,
   tris.reserve(keyed_triangles.size());
   for(const auto& t : keyed_triangles)
     tris.push_back({index.at(t[0]), index.at(t[1]), index.at(t[2])});
-  generators_detail::soup_to_mesh(pts, tris, mesh);
+  internal::soup_to_mesh(pts, tris, mesh);
 
   // polygon_soup_to_polygon_mesh adds the vertices in the order of the points (all are used)
   using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
@@ -157,7 +157,7 @@ make_octahedron_membrane(PolygonMesh& mesh, std::size_t m, double radius = 1.,
   for(vertex_descriptor v : vertices(mesh))
     vertex_of_point.push_back(v);
   if(vertex_of_point.size() != pts.size())
-    throw std::logic_error("make_octahedron_membrane: the mesh has " +
+    throw Internal_error("make_octahedron_membrane: the mesh has " +
                            std::to_string(vertex_of_point.size()) + " vertices instead of " +
                            std::to_string(pts.size()));
   std::array<std::vector<vertex_descriptor>, 6> loops;

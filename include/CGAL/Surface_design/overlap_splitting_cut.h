@@ -9,7 +9,7 @@
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/Core/named_parameters.h>
 #include <CGAL/Surface_design/internal/Core/validation.h>
-#include <CGAL/Surface_design/internal/Flattening/overlap_split.h>
+#include <CGAL/Surface_design/internal/Developability/overlap_split.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
@@ -22,7 +22,7 @@ namespace Surface_design {
 
 /// \ingroup PkgFlatteningRef
 /// What `compute_overlap_splitting_cut()` found.
-struct Overlap_splitting_report
+struct Overlap_splitting_result
 {
   std::size_t overlapping_pieces = 0; ///< pieces whose boundary crosses itself in the plane
   std::size_t split_pieces = 0;       ///< of these, the pieces the cut splits into disks
@@ -52,7 +52,57 @@ struct Overlap_splitting_report
 ///        `cut_mesh_along_edges()`
 /// \param uv a readable vertex -> `Point_2` map: the flattening of `tm`
 /// \param cut_edges output iterator receiving the `edge_descriptor`s of the cut (edges of `tm`)
-/// \param np optional named parameters: `vertex_point_map`, index maps
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as
+///                    value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in
+///                           `[0, num_vertices(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_vertex_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_vertices(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{halfedge_index_map}
+///     \cgalParamDescription{a property map associating to each halfedge of `tm` a unique index in
+///                           `[0, num_halfedges(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_halfedge_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_halfedges(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_index_map}
+///     \cgalParamDescription{a property map associating to each edge of `tm` a unique index in
+///                           `[0, num_edges(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the order of `edges(tm)`}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_edges(tm))`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in
+///                           `[0, num_faces(tm))`: the numbering of the elements in error messages}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and an integer as
+///                    value type}
+///     \cgalParamDefault{the mesh's own (`CGAL::get_initialized_face_index_map(tm)`)}
+///     \cgalParamExtra{throws `Invalid_mesh` (`Mesh_defect::invalid_index_map`) if it is not a bijection onto
+///                     `[0, num_faces(tm))`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \returns what was found and cut
 /// \throws Invalid_mesh the mesh is invalid, Invalid_parameter a coordinate of `uv` is not
@@ -61,7 +111,7 @@ struct Overlap_splitting_report
 /// time in the boundary's size to find crossings.
 template <class TriangleMesh, class UVMap, class EdgeOutputIterator,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
-Overlap_splitting_report compute_overlap_splitting_cut(const TriangleMesh& tm, const UVMap& uv,
+Overlap_splitting_result compute_overlap_splitting_cut(const TriangleMesh& tm, const UVMap& uv,
                                                        EdgeOutputIterator cut_edges,
                                                        const NamedParameters& np = CGAL::parameters::default_values())
 {
@@ -69,7 +119,7 @@ Overlap_splitting_report compute_overlap_splitting_cut(const TriangleMesh& tm, c
   const internal::Mesh_indices<TriangleMesh> idx(tm, np);
   internal::validate_mesh(idx, vpm);
   const internal::Overlap_split split = internal::overlap_splitting_cut(idx, vpm, internal::plane_coordinates(idx, uv));
-  Overlap_splitting_report r;
+  Overlap_splitting_result r;
   r.overlapping_pieces = split.overlapping;
   r.split_pieces = split.split;
   for(std::size_t e = 0; e < idx.number_of_edges(); ++e)

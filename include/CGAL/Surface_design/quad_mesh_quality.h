@@ -82,10 +82,38 @@ void topology_counts(const Mesh& m, long& chi, std::size_t& loops, std::size_t& 
 /// Measures a polygon mesh `pm` (typically the output of `harmonic_quad_remeshing()`) against
 /// the triangle mesh `reference` it approximates.
 ///
-/// \param np1 named parameters of `pm`: `vertex_point_map`
-/// \param np2 named parameters among: `vertex_point_map` (of `reference`);
-///        `hausdorff_error_bound` (relative to the bounding-box diagonal of `reference`, default
-///        1e-3: the Hausdorff distance is certified within that)
+/// \param np1 an optional sequence of named parameters of `pm` among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `pm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<PolygonMesh>::%vertex_descriptor` as key type and `%Point_3` as
+///                    value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, pm)`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \param np2 an optional sequence of named parameters of `reference` among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `reference`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as
+///                    value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, reference)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{hausdorff_error_bound}
+///     \cgalParamDescription{the accuracy of the Hausdorff distance, relative to the bounding-box diagonal of
+///                           `reference`: the distance reported is an upper bound within this times that
+///                           diagonal of the exact value}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`1e-3`}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is not in (0, 1]}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
 /// Complexity: linear in the size of `pm`, plus the certified Hausdorff distance: an AABB tree on
 /// each mesh and a closest-point query per vertex, then per midpoint of the triangles refined until
 /// the upper bound is within the error bound of the largest distance found.

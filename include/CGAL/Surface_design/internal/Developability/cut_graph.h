@@ -9,6 +9,7 @@
 #define CGAL_SURFACE_DESIGN_INTERNAL_DEVELOPABILITY_CUT_GRAPH_H
 
 #include <CGAL/Surface_design/developability_energy.h>
+#include <CGAL/Surface_design/exceptions.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/Core/cut_mesh.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>
@@ -319,10 +320,9 @@ Cut_graph developable_cut_graph(const Indices& idx, const VertexPointMap& vpm, c
     if(piece.euler_characteristic() != 1 || piece.boundary_loops != 1)
     {
       std::ostringstream s;
-      s << "CGAL::Surface_design: internal error: the cut left piece " << k << " (face " << piece.root_face
-        << ") with " << piece.boundary_loops << " boundary loops and Euler characteristic "
-        << piece.euler_characteristic() << "; please report this mesh";
-      throw std::logic_error(s.str());
+      s << "the cut left piece " << k << " (face " << piece.root_face << ") with " << piece.boundary_loops
+        << " boundary loops and Euler characteristic " << piece.euler_characteristic();
+      throw Internal_error(s.str());
     }
   }
   return g;

@@ -10,7 +10,7 @@
 
 #include <CGAL/Surface_design/developability_energy.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>
-#include <CGAL/Surface_design/internal/Core/Lbfgs_minimizer.h>
+#include <CGAL/Surface_design/internal/Solvers/Lbfgs_minimizer.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/Developability/remeshing.h>
 #include <CGAL/Surface_design/internal/Developability/star_energies.h>

@@ -95,7 +95,7 @@
 
 #include <CGAL/Surface_design/developability_energy.h>
 #include <CGAL/Surface_design/internal/Core/angles.h>
-#include <CGAL/Surface_design/internal/Core/parallel.h>
+#include <CGAL/Surface_design/internal/Solvers/parallel.h>
 #include <CGAL/Surface_design/internal/Developability/vertex_stars.h>
 
 #include <CGAL/assertions.h>

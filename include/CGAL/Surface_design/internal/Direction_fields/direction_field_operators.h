@@ -13,7 +13,7 @@
 #include <CGAL/Surface_design/internal/Core/dec.h>
 #include <CGAL/Surface_design/internal/Core/discrete_connection.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>
-#include <CGAL/Surface_design/internal/Core/Hermitian_system.h>
+#include <CGAL/Surface_design/internal/Solvers/Hermitian_system.h>
 #include <CGAL/Surface_design/internal/Core/vertex_frames.h>
 
 #include <Eigen/Core>

@@ -3,13 +3,13 @@
 //
 // Cuts that split flattened pieces whose boundary crosses itself in the plane.
 
-#ifndef CGAL_SURFACE_DESIGN_INTERNAL_FLATTENING_OVERLAP_SPLIT_H
-#define CGAL_SURFACE_DESIGN_INTERNAL_FLATTENING_OVERLAP_SPLIT_H
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_DEVELOPABILITY_OVERLAP_SPLIT_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_DEVELOPABILITY_OVERLAP_SPLIT_H
 
 #include <CGAL/Surface_design/internal/Core/cut_mesh.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>
 #include <CGAL/Surface_design/internal/Core/topology.h>
-#include <CGAL/Surface_design/internal/Flattening/distortion.h>
+#include <CGAL/Surface_design/internal/Developability/distortion.h>
 
 #include <Eigen/Core>
 
@@ -238,4 +238,4 @@ Overlap_split overlap_splitting_cut(const Indices& idx, const VertexPointMap& vp
 } // namespace Surface_design
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_DESIGN_INTERNAL_FLATTENING_OVERLAP_SPLIT_H
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_DEVELOPABILITY_OVERLAP_SPLIT_H

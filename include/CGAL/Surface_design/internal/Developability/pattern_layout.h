@@ -4,8 +4,8 @@
 // Layout of flattened pieces on sheets (smallest bounding rectangles, shelf packing) and the SVG
 // drawing of a pattern, on plain arrays.
 
-#ifndef CGAL_SURFACE_DESIGN_INTERNAL_FLATTENING_PATTERN_LAYOUT_H
-#define CGAL_SURFACE_DESIGN_INTERNAL_FLATTENING_PATTERN_LAYOUT_H
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_DEVELOPABILITY_PATTERN_LAYOUT_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_DEVELOPABILITY_PATTERN_LAYOUT_H
 
 #include <CGAL/Surface_design/exceptions.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
@@ -478,4 +478,4 @@ inline void write_pattern_svg(std::ostream& os, const Pattern_drawing& d)
 } // namespace Surface_design
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_DESIGN_INTERNAL_FLATTENING_PATTERN_LAYOUT_H
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_DEVELOPABILITY_PATTERN_LAYOUT_H

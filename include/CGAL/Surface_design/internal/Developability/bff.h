@@ -6,14 +6,14 @@
 // boundary loops in counter-clockwise order, and the closure of a boundary curve from target
 // lengths and turning angles.
 
-#ifndef CGAL_SURFACE_DESIGN_INTERNAL_FLATTENING_BFF_H
-#define CGAL_SURFACE_DESIGN_INTERNAL_FLATTENING_BFF_H
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_DEVELOPABILITY_BFF_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_DEVELOPABILITY_BFF_H
 
 #include <CGAL/Surface_design/exceptions.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/Core/angles.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>
-#include <CGAL/Surface_design/internal/Core/parallel.h>
+#include <CGAL/Surface_design/internal/Solvers/parallel.h>
 #include <CGAL/Surface_design/internal/Core/topology.h>
 
 #include <Eigen/Core>
@@ -300,4 +300,4 @@ inline std::vector<Eigen::Vector2d> close_boundary_curve(const std::vector<doubl
 } // namespace Surface_design
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_DESIGN_INTERNAL_FLATTENING_BFF_H
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_DEVELOPABILITY_BFF_H

@@ -4,8 +4,8 @@
 // Distortion of a map from a triangle mesh to the plane: singular values per face, and
 // intersections of boundary segments in the plane.
 
-#ifndef CGAL_SURFACE_DESIGN_INTERNAL_FLATTENING_DISTORTION_H
-#define CGAL_SURFACE_DESIGN_INTERNAL_FLATTENING_DISTORTION_H
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_DEVELOPABILITY_DISTORTION_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_DEVELOPABILITY_DISTORTION_H
 
 #include <CGAL/Surface_design/exceptions.h>
 
@@ -162,4 +162,4 @@ inline bool polygon_self_intersects(const std::vector<Eigen::Vector2d>& loop)
 } // namespace Surface_design
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_DESIGN_INTERNAL_FLATTENING_DISTORTION_H
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_DEVELOPABILITY_DISTORTION_H
