@@ -9,7 +9,7 @@ JOBS="${JOBS:-$(nproc)}"
 # The library's build and test dependencies.
 BUILD_PACKAGES=(g++ make cmake libcgal-dev libeigen3-dev libboost-graph-dev catch2
                 libsuitesparse-dev libopenblas-dev libmetis-dev libtbb-dev ccache)
-# The stripe editor (examples/Editor): an HTTP library, a JSON library, three.js for the page.
+# The stripe editor (examples/Programs/Editor): an HTTP library, a JSON library, three.js for the page.
 EDITOR_PACKAGES=(pkg-config libcpp-httplib-dev nlohmann-json3-dev libjs-three)
 
 install_packages() {
