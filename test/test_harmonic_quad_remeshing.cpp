@@ -830,6 +830,25 @@ TEST_CASE("The net's four phases on a cylinder: levels, crossings and spacing, t
   }
   CHECK(crossings == lines_around * levels.size());
   CHECK(boundary == 2 * lines_around);
+
+  // on a closed sphere with one minimum and one maximum the lines end at the two extrema: two
+  // poles, no boundary point, every other point a crossing
+  Mesh sphere;
+  SD::make_sphere(sphere, 8);
+  SD::Harmonic_quad_remesher<Mesh> on_sphere(sphere);
+  const SDI::Mesh_indices<Mesh> sphere_idx(sphere);
+  const H::Trace_mesh sm = H::make_trace_mesh(sphere_idx, get(CGAL::vertex_point, sphere));
+  H::Net_options sphere_options;
+  sphere_options.edge_length = 0.3;
+  const H::Polygon_soup sphere_soup = H::Quad_net_builder(sm, on_sphere.harmonic_function(), sphere_options).build();
+  std::size_t poles = 0, others = 0;
+  for(H::Net_point_kind k : sphere_soup.kind)
+  {
+    poles += k == H::Net_point_kind::pole;
+    others += k != H::Net_point_kind::pole && k != H::Net_point_kind::crossing;
+  }
+  CHECK(poles == 2);
+  CHECK(others == 0);
 }
 
 TEMPLATE_TEST_CASE("Curvature-adapted spacing refines where the surface bends, and only there",

@@ -545,6 +545,17 @@ TEMPLATE_TEST_CASE("Control: the certified Hausdorff distance brackets the exact
       CHECK(h.upper >= 0.3);
       CHECK(h.upper <= 0.3 + error);
     }
+    // a point of no triangle is not on the surface: a far one changes nothing
+    SDI::Triangle_soup flat_soup = SDI::fanned_triangle_soup(flat, get(CGAL::vertex_point, flat));
+    const SDI::Triangle_soup bumped_soup = SDI::fanned_triangle_soup(bumped, get(CGAL::vertex_point, bumped));
+    flat_soup.points.emplace_back(0.5, 0.5, -40.);
+    const SDI::Hausdorff_bounds isolated = SDI::bounded_hausdorff_distance(flat_soup, bumped_soup, error);
+    CHECK(isolated.lower == Approx(0.3).epsilon(1e-12));
+    CHECK(isolated.upper <= 0.3 + error);
+    // an error below what the coordinates resolve is raised to it: the refinement ends
+    const SDI::Hausdorff_bounds tiny = SDI::bounded_hausdorff_distance(flat_soup, bumped_soup, 1e-30);
+    CHECK(tiny.lower == Approx(0.3).epsilon(1e-12));
+    CHECK(tiny.upper - tiny.lower <= 1e-12 * 40.); // the largest coordinate is the isolated point's 40
   }
   SECTION("two spheres of different resolutions: CGAL's bounded-error distance within the error of the bounds")
   {

@@ -22,7 +22,8 @@ import sys
 import tempfile
 
 INCLUDE = re.compile(r'#\s*include\s*[<"]CGAL/Surface_design/([^>"]+)[>"]')
-QUALIFIED = re.compile(r'\binternal::')
+QUOTED = re.compile(r'#\s*include\s*"([^"]+)"')
+QUALIFIED = re.compile(r'\binternal::|namespace\s+\w+\s*=\s*[\w:]*\binternal\b|using\s+namespace\s+[\w:]*\binternal\b')
 TYPE_HEADERS = {"exceptions.h", "parameters.h", "edge_weighting.h", "developability_energy.h"}
 MAX_LINES = 1000
 
@@ -66,24 +67,41 @@ def allowed_include(folder, target):
     return target.startswith("internal/%s/" % folder)
 
 
+def included(path, code, headers):
+    """The header of the library that the line `code` of `path` includes (its path under
+    CGAL/Surface_design/), whether written <CGAL/Surface_design/...> or as a quoted relative path;
+    None for any other line or header."""
+    m = INCLUDE.search(code)
+    if m:
+        return m.group(1)
+    m = QUOTED.search(code)
+    if m:
+        target = os.path.normpath(os.path.join(os.path.dirname(path), m.group(1)))
+        if os.path.commonpath([target, headers]) == headers:
+            return os.path.relpath(target, headers).replace(os.sep, "/")
+    return None
+
+
 def offenders(root):
     found = []
-    headers = os.path.join(root, "include", "CGAL", "Surface_design")
+    headers = os.path.normpath(os.path.join(root, "include", "CGAL", "Surface_design"))
     for path in files(headers, (".h",)):
         rel = os.path.relpath(path, root)
         parts = os.path.relpath(path, headers).split(os.sep)
+        if len(parts) == 2 and parts[0] == "internal":
+            found.append("%s: a header directly in internal/ belongs to no folder" % rel)
         lines = 0
         for number, code, line in code_lines(path):
             lines = number
-            m = INCLUDE.search(code)
-            if m and len(parts) == 3 and parts[0] == "internal" and not allowed_include(parts[1], m.group(1)):
-                found.append("%s:%d: internal/%s/ may not include %s" % (rel, number, parts[1], m.group(1)))
+            target = included(path, code, headers)
+            if target and len(parts) >= 3 and parts[0] == "internal" and not allowed_include(parts[1], target):
+                found.append("%s:%d: internal/%s/ may not include %s" % (rel, number, parts[1], target))
         if lines > MAX_LINES:
             found.append("%s: %d lines, more than %d" % (rel, lines, MAX_LINES))
     for path in files(os.path.join(root, "examples"), (".cpp", ".h")):
         for number, code, line in code_lines(path):
-            m = INCLUDE.search(code)
-            if (m and m.group(1).startswith("internal/")) or QUALIFIED.search(code):
+            target = included(path, code, headers)
+            if (target and target.startswith("internal/")) or QUALIFIED.search(code):
                 found.append("%s:%d: uses the library's internals: %s" % (os.path.relpath(path, root), number, line.strip()))
     return found
 
@@ -110,7 +128,18 @@ def self_test():
                                                                "#include <CGAL/Surface_design/algorithm.h>\n"}, True),
              ("a header of 1001 lines", {"include/CGAL/Surface_design/algorithm.h": "int x;\n" * 1001}, True),
              ("a program uses internal::", {"examples/Programs/p.cpp": "int f() { return CGAL::Surface_design::internal::g(); }\n"}, True),
-             ("an example includes an internal header", {"examples/Pkg/e.cpp": "#include <CGAL/Surface_design/internal/Core/b.h>\n"}, True)]
+             ("an example includes an internal header", {"examples/Pkg/e.cpp": "#include <CGAL/Surface_design/internal/Core/b.h>\n"}, True),
+             ("a package includes another by a quoted path", {"include/CGAL/Surface_design/internal/Pkg/c.h":
+                                                              '#include "../Other/e.h"\n'}, True),
+             ("the wing includes the core from a subfolder", {"include/CGAL/Surface_design/internal/Solvers/sub/f.h":
+                                                              "#include <CGAL/Surface_design/internal/Core/b.h>\n"}, True),
+             ("a header directly in internal/", {"include/CGAL/Surface_design/internal/loose.h": "int x;\n"}, True),
+             ("an example aliases the internal namespace", {"examples/Pkg/e.cpp":
+                                                            "namespace SDI = CGAL::Surface_design::internal;\n"}, True),
+             ("an example uses the internal namespace", {"examples/Pkg/e.cpp":
+                                                         "using namespace CGAL::Surface_design::internal;\n"}, True),
+             ("an example includes an internal header by a quoted path", {"examples/Pkg/e.cpp":
+                                                                          '#include "../../include/CGAL/Surface_design/internal/Core/b.h"\n'}, True)]
     ok = True
     for title, change, bad in cases:
         tree = dict(good)

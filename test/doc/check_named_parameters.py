@@ -76,9 +76,11 @@ def check(header_text, manual_text):
     problems += table_problems
     if any(p.startswith("table not found") for p in table_problems):
         return problems
-    listed = set(library) | set(cgal)
+    listed = set(library)
     for name in declared:
-        if name not in listed:
+        if name in set(cgal):
+            problems.append(f"{name}: declared in {HEADER} but marked \"(CGAL)\" in the table of {MANUAL}")
+        elif name not in listed:
             problems.append(f"{name}: declared in {HEADER} but missing from the table of {MANUAL}")
     declared_set = set(declared)
     for name in dict.fromkeys(library):  # in table order, once each
@@ -105,6 +107,8 @@ def self_test():
                    "| `beta`, `gamma` | `bool` | `true`, `false` | `g` |\n") + tail
     cases = [
         ("a correct table", header, good, None),
+        ("a library parameter marked as CGAL's", header,
+         head + "| `alpha` | `double` | 0 | `f` |\n| `beta`, `gamma` (CGAL) | `bool` | `true` | `g` |\n" + tail, "beta"),
         ("a library parameter missing from the table", header,
          head + "| `alpha` | `double` | 0 | `f` |\n| `beta` | `bool` | `true` | `g` |\n" + tail, "gamma"),
         ("a name in the table that is not declared", header,

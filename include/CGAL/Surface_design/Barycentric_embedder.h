@@ -362,7 +362,7 @@ private:
 /// Deduces the point map and solver types from the named parameters.
 template <class PolygonMesh, class FixedVertices, class NamedParameters>
 Barycentric_embedder(PolygonMesh&, const FixedVertices&, const NamedParameters&)
-  -> Barycentric_embedder<PolygonMesh, typename CGAL::GetVertexPointMap<PolygonMesh, NamedParameters>::type,
+  -> Barycentric_embedder<PolygonMesh, internal::Vertex_point_map_t<PolygonMesh, NamedParameters>,
                           internal::Solver_traits_t<NamedParameters>>;
 template <class PolygonMesh, class FixedVertices>
 Barycentric_embedder(PolygonMesh&, const FixedVertices&) -> Barycentric_embedder<PolygonMesh>;

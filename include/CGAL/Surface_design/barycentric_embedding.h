@@ -123,10 +123,9 @@ template <class PolygonMesh, class FixedVertices,
 std::size_t barycentric_embedding(PolygonMesh& pm, const FixedVertices& fixed_vertices,
                                   const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using Vpm = typename CGAL::GetVertexPointMap<PolygonMesh, NamedParameters>::type;
-  using Solver = typename CGAL::internal_np::Lookup_named_param_def<
-    CGAL::internal_np::sparse_linear_solver_t, NamedParameters, Default_solver_traits>::type;
-  Barycentric_embedder<PolygonMesh, Vpm, Solver> embedder(pm, fixed_vertices, np);
+  Barycentric_embedder<PolygonMesh, internal::Vertex_point_map_t<PolygonMesh, NamedParameters>,
+                       internal::Solver_traits_t<NamedParameters>>
+    embedder(pm, fixed_vertices, np);
   embedder.update();
   return embedder.number_of_free_vertices();
 }
@@ -274,7 +273,7 @@ barycentric_embedding_iterative(PolygonMesh& pm, const FixedVertices& fixed_vert
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  using Vpm = typename CGAL::GetVertexPointMap<PolygonMesh, NamedParameters>::type;
+  using Vpm = internal::Vertex_point_map_t<PolygonMesh, NamedParameters>;
   using Point = typename boost::property_traits<Vpm>::value_type;
 
   const Vpm vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),

@@ -422,7 +422,7 @@ Developability_flow_result make_piecewise_developable(TriangleMesh& tm,
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  using Vpm = typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::type;
+  using Vpm = internal::Vertex_point_map_t<TriangleMesh, NamedParameters>;
   const Vpm vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                    get_property_map(CGAL::vertex_point, tm));
   const internal::Developability_flow_options o = internal::developability_flow_options(np);

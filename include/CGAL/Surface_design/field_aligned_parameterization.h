@@ -74,7 +74,7 @@ namespace Surface_design {
 ///     \cgalParamDescription{how the target 1-form omega is computed from the field}
 ///     \cgalParamType{`One_form_convention`}
 ///     \cgalParamDefault{`One_form_convention::projected`}
-///     \cgalParamExtra{not validated: any value other than `projected` is taken as `angle_rescaled`}
+///     \cgalParamExtra{throws `Invalid_parameter` for a value other than the two enumerators}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{loop_windings}
 ///     \cgalParamDescription{the windings of the listed loops, loop number -> winding (the integral of dalpha

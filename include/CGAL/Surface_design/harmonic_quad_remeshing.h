@@ -44,7 +44,7 @@ namespace Surface_design {
 ///     \cgalParamDescription{the weights of the Laplacian whose harmonic function drives the remeshing}
 ///     \cgalParamType{`Harmonic_weights`}
 ///     \cgalParamDefault{`Harmonic_weights::cotangent`}
-///     \cgalParamExtra{not validated: a value other than the two enumerators is not rejected}
+///     \cgalParamExtra{throws `Invalid_parameter` for a value other than the two enumerators}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{harmonic_constraints}
 ///     \cgalParamDescription{the constrained vertices and their values, u(c) = value (see
@@ -174,9 +174,9 @@ template <class TriangleMesh, class PolygonMesh, class NamedParameters = CGAL::p
 Harmonic_quad_remeshing_result harmonic_quad_remeshing(const TriangleMesh& tm, PolygonMesh& out,
                                                        const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using VPM = typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type;
-  using Traits = std::decay_t<decltype(internal::solver_traits(np))>;
-  Harmonic_quad_remesher<TriangleMesh, VPM, Traits> remesher(tm, np);
+  Harmonic_quad_remesher<TriangleMesh, internal::Const_vertex_point_map_t<TriangleMesh, NamedParameters>,
+                         internal::Solver_traits_t<NamedParameters>>
+    remesher(tm, np);
   // the remaining parameters go to remesh() without the input's point map
   const bool poles = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::quad_poles), true);
   const bool spectacles =

@@ -49,8 +49,9 @@ struct Quad_mesh_quality
   double edge_length_mean = 0., edge_length_min = 0., edge_length_max = 0.;
   double edge_length_variation = 0.; ///< standard deviation / mean
   /// two-sided Hausdorff distance to the reference (the faces fanned into triangles), an upper
-  /// bound within `hausdorff_error_bound` of the exact value; and relative to the diagonal of the
-  /// reference's bounding box
+  /// bound within `hausdorff_error_bound` of the exact value (certified: no more than that above a
+  /// distance found between the surfaces); and relative to the diagonal of the reference's
+  /// bounding box. Infinite when only one of the two has faces.
   double hausdorff_distance = 0., relative_hausdorff_distance = 0.;
   long euler_characteristic = 0;
   std::size_t boundary_loops = 0, connected_components = 0;
@@ -231,11 +232,14 @@ Quad_mesh_quality quad_mesh_quality(const PolygonMesh& pm, const TriangleMesh& r
     const double diagonal = (hi - lo).norm();
     const internal::Triangle_soup a = internal::fanned_triangle_soup(pm, vpm);
     const internal::Triangle_soup b = internal::fanned_triangle_soup(reference, rvpm);
-    if(!a.triangles.empty() && !b.triangles.empty() && diagonal > 0.)
+    if(!a.triangles.empty() && !b.triangles.empty())
     {
       q.hausdorff_distance = internal::bounded_hausdorff_distance(a, b, bound * diagonal).upper;
-      q.relative_hausdorff_distance = diagonal > 0. ? q.hausdorff_distance / diagonal : 0.;
+      q.relative_hausdorff_distance =
+        diagonal > 0. ? q.hausdorff_distance / diagonal : std::numeric_limits<double>::infinity();
     }
+    else if(!b.triangles.empty() || !a.triangles.empty()) // one surface and nothing to be near
+      q.hausdorff_distance = q.relative_hausdorff_distance = std::numeric_limits<double>::infinity();
   }
   return q;
 }

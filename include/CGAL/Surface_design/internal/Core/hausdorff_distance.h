@@ -31,8 +31,8 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <map>
 #include <queue>
-#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -53,7 +53,7 @@ template <class PolygonMesh, class VertexPointMap>
 Triangle_soup fanned_triangle_soup(const PolygonMesh& pm, const VertexPointMap& vpm)
 {
   Triangle_soup soup;
-  std::unordered_map<typename boost::graph_traits<PolygonMesh>::vertex_descriptor, std::size_t> index;
+  std::map<typename boost::graph_traits<PolygonMesh>::vertex_descriptor, std::size_t> index;
   for(auto v : vertices(pm))
   {
     const auto& p = get(vpm, v);
@@ -111,16 +111,21 @@ public:
     tree_.accelerate_distance_queries();
   }
 
-  // the triangles of `from`, with the distances at their corners (the lower bound rises to the largest)
+  // the triangles of `from`, with the distances at their corners (the lower bound rises to the
+  // largest; points of no triangle are not on the surface and are left out)
   void add(const Triangle_soup& from, double& lower)
   {
     std::vector<double> distance(from.points.size());
     std::vector<std::size_t> closest(from.points.size());
+    std::vector<char> used(from.points.size(), 0);
+    for(const auto& t : from.triangles)
+      used[t[0]] = used[t[1]] = used[t[2]] = 1;
     for(std::size_t v = 0; v < from.points.size(); ++v)
-    {
-      query(from.points[v], distance[v], closest[v]);
-      lower = (std::max)(lower, distance[v]);
-    }
+      if(used[v])
+      {
+        query(from.points[v], distance[v], closest[v]);
+        lower = (std::max)(lower, distance[v]);
+      }
     for(const auto& t : from.triangles)
       queue_.push(piece({from.points[t[0]], from.points[t[1]], from.points[t[2]]},
                         {distance[t[0]], distance[t[1]], distance[t[2]]},
@@ -187,9 +192,16 @@ private:
 } // namespace hausdorff_internal
 
 /// Two-sided Hausdorff distance between the surfaces of `a` and `b` (each with at least one
-/// triangle), certified: `upper - lower <= error` (`error > 0`).
+/// triangle), certified: `upper - lower <= error` (`error > 0`). An error below what the
+/// coordinates can resolve (1e-12 times the largest coordinate) is raised to that, so that the
+/// refinement ends.
 inline Hausdorff_bounds bounded_hausdorff_distance(const Triangle_soup& a, const Triangle_soup& b, double error)
 {
+  double largest = 0.;
+  for(const Triangle_soup* soup : {&a, &b})
+    for(const auto& p : soup->points)
+      largest = (std::max)({largest, std::abs(p.x()), std::abs(p.y()), std::abs(p.z())});
+  error = (std::max)(error, 1e-12 * largest);
   hausdorff_internal::One_side a_to_b(b), b_to_a(a);
   Hausdorff_bounds h;
   a_to_b.add(a, h.lower);

@@ -31,9 +31,16 @@ inline std::string to_text(double x)
   return s.str();
 }
 
+// The types that the named parameters choose, derived here only (every public header uses these):
+
 /// The (read-only) vertex point map of `vertex_point_map`, else the mesh's own.
 template <class Mesh, class NamedParameters>
 using Const_vertex_point_map_t = typename CGAL::GetVertexPointMap<Mesh, NamedParameters>::const_type;
+
+/// The (writable) vertex point map of `vertex_point_map`, else the mesh's own, for the algorithms
+/// that move vertices.
+template <class Mesh, class NamedParameters>
+using Vertex_point_map_t = typename CGAL::GetVertexPointMap<Mesh, NamedParameters>::type;
 
 /// The type of `sparse_linear_solver`, else `Default_solver_traits`.
 template <class NamedParameters>

@@ -103,7 +103,8 @@ struct Complex_solver_of<Metis_ldlt_solver_traits>
 /// Factors a Hermitian positive definite matrix once (`factor`) and solves for any number of
 /// right-hand sides (`solve`), vectors given with (Re, Im) interleaved. With the library's own
 /// traits (`Default_solver_traits`, `Simplicial_ldlt_solver_traits`, `Supernodal_solver_traits`,
-/// `Nested_dissection_ldlt_solver_traits`, `Cholmod_solver_traits`, `Metis_ldlt_solver_traits`) the
+/// `Nested_dissection_ldlt_solver_traits`, `Cholmod_solver_traits`, `Cholmod_nested_dissection_solver_traits`,
+/// `Metis_ldlt_solver_traits`) the
 /// same factorization runs in complex arithmetic (half the floating-point operations of the real
 /// form and a quarter of its index work); any other model of
 /// `SparseLinearAlgebraWithFactorTraits_d` factors the real symmetric form (`realify`).
