@@ -226,9 +226,12 @@ struct Face_level
 class Gradient_walker
 {
 public:
+  /// With `curves` (the isolines that `levels` refer to), a line that reaches a level held by
+  /// two curves in one face (a frame and the bridge of spectacles around their junction) lands
+  /// on the one nearer to where it reaches the level; else on the first registered.
   Gradient_walker(const Trace_mesh& m, const std::vector<double>& u,
-                  const std::vector<std::vector<Face_level>>& levels)
-    : m_m(m), m_u(u), m_levels(levels), m_grad(m.number_of_faces())
+                  const std::vector<std::vector<Face_level>>& levels, const std::vector<Isoline>* curves = nullptr)
+    : m_m(m), m_u(u), m_levels(levels), m_curves(curves), m_grad(m.number_of_faces())
   {
     for(std::size_t f = 0; f < m.number_of_faces(); ++f)
       m_grad[f] = m.gradient(f, u);
@@ -270,13 +273,32 @@ private:
     return best;
   }
 
-  Trace_end landed(const Face_level& l, const Eigen::Vector3d& p) const
+  // p: where the line reaches level l in face f
+  Trace_end landed(const Face_level& l, const Eigen::Vector3d& p, std::size_t f) const
   {
     Trace_end e;
     e.kind = Trace_end::isoline;
     e.curve = l.curve;
     e.segment = l.segment;
     e.point = p;
+    if(m_curves == nullptr)
+      return e;
+    auto distance = [&](const Face_level& k) {
+      const Isoline& iso = (*m_curves)[k.curve];
+      return (iso.at(iso.nearest_arc_position(k.segment, p)).first - p).squaredNorm();
+    };
+    double best = distance(l);
+    for(const Face_level& k : m_levels[f])
+      if(k.value == l.value && &k != &l)
+      {
+        const double d = distance(k);
+        if(d < best)
+        {
+          best = d;
+          e.curve = k.curve;
+          e.segment = k.segment;
+        }
+      }
     return e;
   }
 
@@ -379,7 +401,7 @@ private:
         {
           const double t = (l->value - m_u[v]) / (m_u[w_best] - m_u[v]);
           record(Surface_point::edge, v, w_best, t, (1. - t) * m_m.point[v] + t * m_m.point[w_best]);
-          return landed(*l, (1. - t) * m_m.point[v] + t * m_m.point[w_best]);
+          return landed(*l, (1. - t) * m_m.point[v] + t * m_m.point[w_best], edge_face);
         }
         v = w_best;
         continue;
@@ -425,7 +447,7 @@ private:
       {
         const double t = s * (l->value - value) / speed;
         record(Surface_point::face, f, npos, 0., m_m.at(f, bary) + t * d);
-        return landed(*l, m_m.at(f, bary) + t * d);
+        return landed(*l, m_m.at(f, bary) + t * d, f);
       }
       // exit through the edge opposite exit_corner: local edge (exit_corner + 1)
       for(int i = 0; i < 3; ++i)
@@ -459,7 +481,7 @@ private:
         {
           const double tl = (l->value - m_u[a]) / (m_u[b] - m_u[a]);
           record(Surface_point::edge, a, b, tl, (1. - tl) * m_m.point[a] + tl * m_m.point[b]);
-          return landed(*l, (1. - tl) * m_m.point[a] + tl * m_m.point[b]);
+          return landed(*l, (1. - tl) * m_m.point[a] + tl * m_m.point[b], f);
         }
         v = top;
         continue;
@@ -476,6 +498,7 @@ private:
   const Trace_mesh& m_m;
   const std::vector<double>& m_u;
   const std::vector<std::vector<Face_level>>& m_levels;
+  const std::vector<Isoline>* m_curves;
   std::vector<Eigen::Vector3d> m_grad;
 };
 

@@ -62,7 +62,7 @@ inline void Quad_net_builder::attach_floating_loops()
         }
       }
   }
-  Gradient_walker walker(m_m, m_u, m_levels_in_face);
+  Gradient_walker walker(m_m, m_u, m_levels_in_face, &m_iso);
   for(std::size_t l = 0; l < nl; ++l)
   {
     if(attached[l])

@@ -243,17 +243,37 @@ inline void Quad_net_builder::merge_into_spectacles_lines(std::size_t c)
 {
   auto& cr = m_crossings[c];
   const Isoline& iso = m_iso[c];
-  std::vector<char> gone(cr.size(), 0);
-  for(Crossing& x : cr)
+  const std::size_t n = cr.size();
+  std::vector<char> gone(n, 0);
+  // (`cr` is sorted along the isoline) the line may only join a neighbour along the isoline,
+  // the first crossing on either side that has not joined another: a farther one would cross
+  // the lines between them (found on the triceratops: two lines from below, each joined to the
+  // spectacles line nearer the other one's, crossed and gave the net a handle)
+  auto neighbour = [&](std::size_t k, bool forward) {
+    for(std::size_t step = 1; step < n; ++step)
+    {
+      if(!iso.closed && (forward ? k + step >= n : step > k))
+        return npos;
+      const std::size_t j = forward ? (k + step) % n : (k + n - step) % n;
+      if(!gone[j])
+        return j;
+    }
+    return npos;
+  };
+  for(std::size_t i = 0; i < n; ++i)
   {
+    Crossing& x = cr[i];
     if(!x.fixed || !x.no_trace || x.down != npos)
       continue;
     std::size_t best = npos;
     double distance = 0.5 * m_opt.edge_length;
-    for(std::size_t k = 0; k < cr.size(); ++k)
+    for(const bool forward : {false, true})
     {
+      const std::size_t k = neighbour(i, forward);
+      if(k == npos)
+        continue;
       const double d = std::abs(wrapped(cr[k].s - x.s, iso.length(), iso.closed));
-      if(!gone[k] && !cr[k].fixed && cr[k].down != npos && d < distance)
+      if(!cr[k].fixed && cr[k].down != npos && d < distance)
       {
         distance = d;
         best = k;

@@ -167,10 +167,17 @@ inline void Quad_net_builder::choose_levels()
     // the level's other pieces (away from the spectacles), then the spectacles
     for(Isoline& iso : extract_isolines(m_m, m_u, c))
     {
+      // (a piece through a vertex of the spectacles is theirs: it crosses an edge at its end
+      // held at the level, the vertex counting as above it; a piece that only passes through a
+      // face next to them is another loop of the level, kept: dropping it left a band holding
+      // a handle on the rounded genus-100 slab)
       bool touches = false;
-      for(std::size_t f : iso.faces)
-        for(std::size_t v : m_m.tri[f])
-          touches = touches || m_on_spectacles[v];
+      for(std::size_t e : iso.point_edge)
+      {
+        const auto [f, i] = m_m.edge_side[e];
+        for(const std::size_t v : {m_m.tri[f][i], m_m.tri[f][(i + 1) % 3]})
+          touches = touches || (m_on_spectacles[v] && m_u[v] == c);
+      }
       const bool ends_on_boundary =
         iso.closed || (is_boundary_edge(iso.point_edge.front()) && is_boundary_edge(iso.point_edge.back()));
       if(!touches && ends_on_boundary && worth_keeping(iso))
@@ -306,16 +313,17 @@ inline void Quad_net_builder::separate_saddles(const std::vector<double>& sorted
     if(c.kind == Critical_kind::saddle && !m_on_spectacles[c.vertex]) // (spectacles: one level already)
       saddles.push_back(c.vertex);
   std::sort(saddles.begin(), saddles.end(), [&](std::size_t a, std::size_t b) { return below(m_u, a, b); });
-  std::vector<double> level_values;
-  for(const Isoline& iso : m_iso)
-    level_values.push_back(iso.value);
-  std::sort(level_values.begin(), level_values.end());
-  auto band = [&](double x) { return std::lower_bound(level_values.begin(), level_values.end(), x) - level_values.begin(); };
-  for(std::size_t k = 0; k + 1 < saddles.size(); ++k)
+  for(std::size_t k = 0, next = 0; k + 1 < saddles.size(); ++k)
   {
-    const double a = m_u[saddles[k]], b = m_u[saddles[k + 1]];
-    if(band(a) != band(b) || !(b - a > 4. * gap))
-      continue;
+    // the next saddle of a higher value: saddles of one value (mirror images on a symmetric
+    // surface) are each separated from it (once, only the last of them was: the hole of the
+    // first one kept its handle in one band)
+    next = (std::max)(next, k + 1);
+    while(next < saddles.size() && !(m_u[saddles[next]] - m_u[saddles[k]] > 4. * gap))
+      ++next;
+    if(next == saddles.size())
+      break;
+    const double a = m_u[saddles[k]], b = m_u[saddles[next]];
     const double c = avoid_vertex_values(0.5 * (a + b), sorted, (std::min)(gap, 0.1 * (b - a)));
     // the faces of the slab a <= u <= b connected to the lower saddle
     std::vector<char> in_slab(m_m.number_of_faces(), 0);
@@ -344,6 +352,18 @@ inline void Quad_net_builder::separate_saddles(const std::vector<double>& sorted
         }
       }
     }
+    // Separated already where an isoline between them crosses the slab. (The test once asked
+    // whether any isoline anywhere had a value between them: the levels added in one region
+    // (wide bands, other saddles) then hid the saddles of a hole elsewhere, whose two saddles
+    // stayed in one band, and the cell around the hole's wall held its handle: 6 of the 100
+    // handles of the straight-walled slab at h = sqrt(area / 250).)
+    bool separated = false;
+    for(std::size_t f = 0; f < in_slab.size() && !separated; ++f)
+      if(in_slab[f])
+        for(const Face_level& l : m_levels_in_face[f])
+          separated = separated || (l.value > a && l.value < b);
+    if(separated)
+      continue;
     for(Isoline& iso : extract_isolines(m_m, m_u, c))
       if(in_slab[iso.faces[0]] && worth_keeping(iso))
       {

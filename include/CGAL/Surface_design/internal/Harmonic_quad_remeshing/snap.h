@@ -19,6 +19,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <utility>
@@ -31,23 +32,49 @@ namespace harmonic_quad {
 
 struct Snap_statistics
 {
-  std::size_t far_vertices = 0; ///< interior input vertices farther than the tolerance from the soup
+  std::size_t far_vertices = 0; ///< interior input vertices and crease points farther than the tolerance from the soup
   std::size_t snapped = 0;      ///< soup vertices moved onto one of them
-  double largest_distance = 0.; ///< before snapping: the largest distance of an input vertex to the soup
+  double largest_distance = 0.; ///< before snapping: the largest distance of such a point to the soup
 };
+
+/// The points that snapping may pull the soup onto: the input's interior vertices, and points
+/// along its creases (interior edges whose faces' normals differ by more than 30 degrees), at
+/// most `spacing` apart. A net whose cells span a crease cuts it off between two of the input's
+/// vertices (the vertical edges of a slab's holes, many spacings long on a coarse input).
+inline std::vector<Eigen::Vector3d> snap_targets(const Trace_mesh& m, double spacing)
+{
+  std::vector<Eigen::Vector3d> out;
+  for(std::size_t v = 0; v < m.number_of_vertices(); ++v)
+    if(!m.on_boundary[v] && !m.star[v].empty())
+      out.push_back(m.point[v]);
+  const double crease = std::cos(30. * 3.141592653589793 / 180.);
+  for(std::size_t f = 0; f < m.number_of_faces(); ++f)
+    for(std::size_t i = 0; i < 3; ++i)
+    {
+      const std::size_t g = m.neighbour[f][i];
+      if(g == npos || g < f || !(m.normal[f].dot(m.normal[g]) < crease))
+        continue;
+      const Eigen::Vector3d& a = m.point[m.tri[f][i]];
+      const Eigen::Vector3d& b = m.point[m.tri[f][(i + 1) % 3]];
+      const std::size_t pieces = std::size_t(std::ceil((b - a).norm() / spacing));
+      for(std::size_t k = 1; k < pieces; ++k)
+        out.push_back(a + (double(k) / double(pieces)) * (b - a));
+    }
+  return out;
+}
 
 /// The net passes over features narrower than its spacing: a pit or a spike, the apex of a cone,
 /// a sharp crease. Input vertices (interior ones: the boundary follows the input's, see
-/// `Quad_net_builder::boundary_detail`) farther than `tolerance` from the soup's surface, farthest
-/// first, pull the nearest corner of the soup face closest to them onto them, provided that
+/// `Quad_net_builder::boundary_detail`) and points along the input's creases (`snap_targets()`,
+/// 2 `tolerance` apart) farther than `tolerance` from the soup's surface, farthest first, pull
+/// the nearest corner of the soup face closest to them onto them, provided that
 ///  - that corner is not on the boundary and is at most `reach` away,
 ///  - no face around it turns over (its normal keeps a positive dot product with the old one),
 ///  - no face around it has moved already (the distances are those before any move: a corner
 ///    next to a moved one stays),
-///  - the input vertices closest to a face around it end up closer to the surface than the
-///    farthest of them was (a pull into a narrow pit must not lift the surface off a ridge next
-///    to it).
-/// The topology does not change; positions move onto the input's vertices, so the output still
+///  - the points closest to a face around it end up closer to the surface than the farthest of
+///    them was (a pull into a narrow pit must not lift the surface off a ridge next to it).
+/// The topology does not change; positions move onto points of the input, so the output still
 /// interpolates the input there.
 inline Snap_statistics snap_to_far_vertices(Polygon_soup& soup, const Trace_mesh& m, double tolerance, double reach,
                                             bool parallel)
@@ -73,14 +100,13 @@ inline Snap_statistics snap_to_far_vertices(Polygon_soup& soup, const Trace_mesh
     return stats;
   Tree tree(triangles.cbegin(), triangles.cend());
   tree.accelerate_distance_queries();
-  const std::size_t nv = m.number_of_vertices();
+  const std::vector<Eigen::Vector3d> targets = snap_targets(m, 2. * tolerance);
+  const std::size_t nv = targets.size();
   std::vector<double> distance(nv, 0.);
   std::vector<std::size_t> closest_face(nv, npos);
   (void)tree.closest_point(point(m.point[0])); // builds the search structure before the parallel queries
   for_each_index(nv, parallel, [&](std::size_t v) {
-    if(m.on_boundary[v] || m.star[v].empty())
-      return;
-    const K::Point_3 p = point(m.point[v]);
+    const K::Point_3 p = point(targets[v]);
     const auto [q, id] = tree.closest_point_and_primitive(p);
     distance[v] = std::sqrt(CGAL::squared_distance(p, q));
     closest_face[v] = face_of[std::size_t(id - triangles.cbegin())];
@@ -132,7 +158,7 @@ inline Snap_statistics snap_to_far_vertices(Polygon_soup& soup, const Trace_mesh
     const std::size_t f = closest_face[v];
     if(face_moved[f])
       continue;
-    const Eigen::Vector3d& target = m.point[v];
+    const Eigen::Vector3d& target = targets[v];
     std::size_t corner = npos;
     for(std::size_t c : soup.faces[f])
       if(!on_boundary[c] && (corner == npos || (soup.points[c] - target).squaredNorm() <
@@ -146,7 +172,7 @@ inline Snap_statistics snap_to_far_vertices(Polygon_soup& soup, const Trace_mesh
                           newell_normal(g, corner, target).dot(newell_normal(g, npos, target)) > 0.;
     if(!keeps_orientation)
       continue;
-    // the input vertices closest to a face around the corner may move away from it: their
+    // the points closest to a face around the corner may move away from it: their
     // distance to the faces around the corner and their neighbours (an upper bound of the new
     // distance) must stay below the largest old one (the others keep their closest face)
     std::vector<std::size_t> ring;
@@ -172,7 +198,7 @@ inline Snap_statistics snap_to_far_vertices(Polygon_soup& soup, const Trace_mesh
       for(std::size_t w : closest_to[g])
       {
         before = (std::max)(before, distance[w]);
-        after = (std::max)(after, distance_to_ring(m.point[w], target));
+        after = (std::max)(after, distance_to_ring(targets[w], target));
       }
     if(!(after < before))
       continue;
