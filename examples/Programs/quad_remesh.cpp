@@ -52,9 +52,9 @@ const char* usage =
   "  --quad-dominant       keep the net as it is: pentagons where lines end (T-junctions), triangles\n"
   "                        (default: quads only; odd faces are paired by paths across the net whose\n"
   "                        edges get a vertex, and every face is split into quads)\n"
-  "  --no-feature-snapping keep the net's positions (default: interior input vertices farther than\n"
-  "                        h / 4 from the result, a pit or a spike narrower than h, pull the nearest\n"
-  "                        vertex onto them)\n"
+  "  --no-feature-snapping keep the net's positions (default: interior input vertices and points\n"
+  "                        along its creases farther than h / 4 from the result, a pit, a spike or a\n"
+  "                        crease narrower than h, pull the nearest vertex onto them)\n"
   "  --solver S            sparse solver: default (simplicial LDLT below 20k\n"
   "                        unknowns, supernodal Cholesky above), ldlt, supernodal, cholmod\n"
   "  --output OUT          the quad mesh (.off, .obj or .ply); required\n"
@@ -234,8 +234,8 @@ int run(const Options& o, Traits traits)
     std::printf("quads only: %zu faces with an odd number of sides paired by %zu paths, %zu edges split\n",
                 r.odd_faces, r.odd_face_paths, r.split_edges);
   if(o.feature_snapping)
-    std::printf("feature snapping: %zu of %zu input vertices farther than h / 4 from the result pulled a vertex "
-                "onto them (the farthest was %.3g away)\n",
+    std::printf("feature snapping: %zu of %zu input vertices and crease points farther than h / 4 from the result "
+                "pulled a vertex onto them (the farthest was %.3g away)\n",
                 r.snapped_vertices, r.far_input_vertices, r.largest_input_distance);
   std::printf("times: harmonic %.3f s, spectacles (re-solve) %.3f s, curves %.3f s, meshing %.3f s (quads only %.3f s, "
               "snapping %.3f s)\n",

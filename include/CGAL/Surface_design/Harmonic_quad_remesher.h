@@ -120,7 +120,8 @@ struct Harmonic_quad_remeshing_result
   std::size_t odd_faces = 0;        ///< faces of the net with an odd number of sides
   std::size_t odd_face_paths = 0;   ///< with `all_quads(true)`: paths that paired them (or led to the boundary)
   std::size_t split_edges = 0;      ///< with `all_quads(true)`: edges of the net given a vertex
-  /// interior input vertices farther than h / 4 from the remeshed surface before feature snapping
+  /// interior input vertices and points along its creases farther than h / 4 from the remeshed
+  /// surface before feature snapping
   std::size_t far_input_vertices = 0;
   std::size_t snapped_vertices = 0; ///< with `feature_snapping(true)`: output vertices moved onto them
   double largest_input_distance = 0.; ///< the largest of those distances, before snapping (0 without it)
@@ -486,8 +487,10 @@ public:
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{feature_snapping}
   ///     \cgalParamDescription{the curves pass over features narrower than their spacing (a pit, a spike, the
-  ///                           apex of a cone, a sharp crease). Interior input vertices farther than h / 4 from
-  ///                           the result, farthest first, pull the nearest corner of the face closest to them
+  ///                           apex of a cone, a sharp crease). Interior input vertices, and points h / 2 apart
+  ///                           along the input's creases (edges whose faces' normals differ by more than 30
+  ///                           degrees), farther than h / 4 from the result, farthest first, pull the nearest
+  ///                           corner of the face closest to them
   ///                           onto them (a corner not on the boundary, at most 2h away, no face around it
   ///                           turned over or moved before). The boundary needs no snapping: where the input's
   ///                           boundary leaves the chord between two vertices of the net by more than h / 4 (a

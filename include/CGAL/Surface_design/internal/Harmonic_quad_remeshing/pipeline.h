@@ -111,6 +111,9 @@ bool insert_spectacles(const Pipeline_input<SolverTraits>& in, const std::vector
   };
   hq::Refined_mesh r;
   std::vector<hq::Net_spectacles> net;
+  std::vector<char> critical_vertex(in.mesh.number_of_vertices(), 0); // (the input's vertices come first in r)
+  for(const Critical_point& c : critical)
+    critical_vertex[c.vertex] = c.kind != Critical_kind::regular;
   for(;;)
   {
     if(plans.empty())
@@ -134,6 +137,7 @@ bool insert_spectacles(const Pipeline_input<SolverTraits>& in, const std::vector
     for(const auto& [v, value] : in.constraints)
       owner[v] = plans.size();
     std::size_t bad = npos;
+    std::string why = "its curves touch other curves or a constrained vertex once inserted into the mesh";
     for(std::size_t k = 0; k < plans.size() && bad == npos; ++k)
     {
       hq::Net_spectacles sp;
@@ -159,6 +163,16 @@ bool insert_spectacles(const Pipeline_input<SolverTraits>& in, const std::vector
         ok = ok && owner[v] == npos;
         owner[v] = k;
       }
+      // Curves through another critical point would hold it at their value: the level there
+      // has another loop, which meets a frame at that vertex (found on the genus-100 slabs,
+      // where a frame ran down the vertical edge of the next hole's corner, at its saddle).
+      for(std::size_t v : all)
+        if(ok && v < critical_vertex.size() && critical_vertex[v] && v != plans[k].saddle)
+        {
+          ok = false;
+          why = "its curves pass through another critical point (vertex " + std::to_string(v) +
+                ") once inserted into the mesh";
+        }
       if(!ok)
         bad = k;
       else
@@ -166,8 +180,7 @@ bool insert_spectacles(const Pipeline_input<SolverTraits>& in, const std::vector
     }
     if(bad == npos)
       break;
-    report.skipped_saddles.emplace_back(plans[bad].saddle,
-                                        "its curves touch other curves or a constrained vertex once inserted into the mesh");
+    report.skipped_saddles.emplace_back(plans[bad].saddle, why);
     plans.erase(plans.begin() + std::ptrdiff_t(bad));
   }
   // the refined mesh, its Laplacian and the function held at the spectacles
