@@ -103,27 +103,35 @@ inline double avoid_vertex_values(double c, const std::vector<double>& sorted, d
   return c;
 }
 
-/// Every connected piece of the level set u = c (c equal to no vertex value).
-inline std::vector<Isoline> extract_isolines(const Trace_mesh& m, const std::vector<double>& u, double c)
+/// Every connected piece of the level set u = c (c equal to no vertex value); with `seeds`, only
+/// the pieces through one of those faces (the work is then that of the faces they cross).
+inline std::vector<Isoline> extract_isolines(const Trace_mesh& m, const std::vector<double>& u, double c,
+                                             const std::vector<std::size_t>* seeds = nullptr)
 {
   const std::size_t nf = m.number_of_faces();
-  // entry (rising) and exit (falling) local edges of every crossed face; a vertex valued c
-  // exactly counts as above (a symbolic perturbation of c downwards), so that a face is crossed
-  // on two edges or on none (with a strict test, a level through a vertex met its faces on one
-  // edge only: the walks below read past the cut table and ended paths inside the surface)
-  std::vector<std::pair<signed char, signed char>> cut(nf, {-1, -1});
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    const auto& t = m.tri[f];
-    for(int i = 0; i < 3; ++i)
+  // entry (rising) and exit (falling) local edges of every crossed face, found when first asked
+  // for; a vertex valued c exactly counts as above (a symbolic perturbation of c downwards), so
+  // that a face is crossed on two edges or on none (with a strict test, a level through a vertex
+  // met its faces on one edge only: the walks below read past the cut table and ended paths
+  // inside the surface)
+  std::vector<std::pair<signed char, signed char>> cut_table(nf, {-2, -2});
+  auto cut = [&](std::size_t f) -> const std::pair<signed char, signed char>& {
+    auto& entry = cut_table[f];
+    if(entry.first == -2)
     {
-      const bool a = u[t[i]] >= c, b = u[t[(i + 1) % 3]] >= c;
-      if(!a && b)
-        cut[f].first = static_cast<signed char>(i);
-      else if(a && !b)
-        cut[f].second = static_cast<signed char>(i);
+      entry = {-1, -1};
+      const auto& t = m.tri[f];
+      for(int i = 0; i < 3; ++i)
+      {
+        const bool a = u[t[i]] >= c, b = u[t[(i + 1) % 3]] >= c;
+        if(!a && b)
+          entry.first = static_cast<signed char>(i);
+        else if(a && !b)
+          entry.second = static_cast<signed char>(i);
+      }
     }
-  }
+    return entry;
+  };
   auto edge_point = [&](std::size_t f, int i) {
     const std::size_t a = m.tri[f][i], b = m.tri[f][(i + 1) % 3];
     const double t = (c - u[a]) / (u[b] - u[a]);
@@ -131,17 +139,18 @@ inline std::vector<Isoline> extract_isolines(const Trace_mesh& m, const std::vec
   };
   std::vector<char> done(nf, 0);
   std::vector<Isoline> out;
-  for(std::size_t f0 = 0; f0 < nf; ++f0)
+  for(std::size_t seed = 0; seed < (seeds != nullptr ? seeds->size() : nf); ++seed)
   {
+    const std::size_t f0 = seeds != nullptr ? (*seeds)[seed] : seed;
     // (a face meets the level on two edges, or on none when no vertex value equals it)
-    if(done[f0] || cut[f0].first < 0 || cut[f0].second < 0)
+    if(done[f0] || cut(f0).first < 0 || cut(f0).second < 0)
       continue;
     // walk back to the start of an open path (or once around a loop)
     std::size_t start = f0;
     bool closed = false;
     for(std::size_t guard = 0; guard <= nf; ++guard)
     {
-      const std::size_t prev = m.neighbour[start][std::size_t(cut[start].first)];
+      const std::size_t prev = m.neighbour[start][std::size_t(cut(start).first)];
       if(prev == npos)
         break;
       if(prev == f0)
@@ -161,14 +170,14 @@ inline std::vector<Isoline> extract_isolines(const Trace_mesh& m, const std::vec
     {
       done[f] = 1;
       iso.faces.push_back(f);
-      iso.point.push_back(edge_point(f, cut[f].first));
-      iso.point_edge.push_back(m.edge[f][std::size_t(cut[f].first)]);
-      const std::size_t next = m.neighbour[f][std::size_t(cut[f].second)];
+      iso.point.push_back(edge_point(f, cut(f).first));
+      iso.point_edge.push_back(m.edge[f][std::size_t(cut(f).first)]);
+      const std::size_t next = m.neighbour[f][std::size_t(cut(f).second)];
       // (`next` is crossed too, and unvisited but for the start of a loop, on a manifold mesh)
       if(next == npos || (done[next] && next != start))
       {
-        iso.point.push_back(edge_point(f, cut[f].second));
-        iso.point_edge.push_back(m.edge[f][std::size_t(cut[f].second)]);
+        iso.point.push_back(edge_point(f, cut(f).second));
+        iso.point_edge.push_back(m.edge[f][std::size_t(cut(f).second)]);
         break;
       }
       if(next == start && closed)

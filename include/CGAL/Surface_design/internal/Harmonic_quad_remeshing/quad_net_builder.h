@@ -220,8 +220,9 @@ private:
                    double gap, int depth);
 
   // Two saddles between the same two levels leave a band that the gradient lines may fail to cut
-  // into disks (all lines of one lower loop reaching the same upper loop): between them, an
-  // extra isoline is added in the region of the slab of values between the two saddles.
+  // into disks (the cell next to a hole's wall holds its handle): every saddle gets an isoline
+  // between it and the next higher saddle value, in the slab of values between them around it,
+  // unless an isoline between them crosses that slab already.
   void separate_saddles(const std::vector<double>& sorted, double gap);
 
   // ---- gradient lines ------------------------------------------------------------------------

@@ -313,6 +313,7 @@ inline void Quad_net_builder::separate_saddles(const std::vector<double>& sorted
     if(c.kind == Critical_kind::saddle && !m_on_spectacles[c.vertex]) // (spectacles: one level already)
       saddles.push_back(c.vertex);
   std::sort(saddles.begin(), saddles.end(), [&](std::size_t a, std::size_t b) { return below(m_u, a, b); });
+  std::vector<std::size_t> in_slab(m_m.number_of_faces(), 0), slab;
   for(std::size_t k = 0, next = 0; k + 1 < saddles.size(); ++k)
   {
     // the next saddle of a higher value: saddles of one value (mirror images on a symmetric
@@ -325,47 +326,41 @@ inline void Quad_net_builder::separate_saddles(const std::vector<double>& sorted
       break;
     const double a = m_u[saddles[k]], b = m_u[saddles[next]];
     const double c = avoid_vertex_values(0.5 * (a + b), sorted, (std::min)(gap, 0.1 * (b - a)));
-    // the faces of the slab a <= u <= b connected to the lower saddle
-    std::vector<char> in_slab(m_m.number_of_faces(), 0);
-    std::vector<std::size_t> stack;
+    // the faces of the slab a <= u <= b connected to the lower saddle (marked with k + 1)
+    slab.clear();
     for(const auto& [f, i] : m_m.star[saddles[k]])
-    {
-      in_slab[f] = 1;
-      stack.push_back(f);
-    }
-    while(!stack.empty())
-    {
-      const std::size_t f = stack.back();
-      stack.pop_back();
-      for(int i = 0; i < 3; ++i)
+      if(in_slab[f] != k + 1)
       {
-        const std::size_t g = m_m.neighbour[f][std::size_t(i)];
-        if(g == npos || in_slab[g])
+        in_slab[f] = k + 1;
+        slab.push_back(f);
+      }
+    for(std::size_t j = 0; j < slab.size(); ++j)
+      for(const std::size_t g : m_m.neighbour[slab[j]])
+      {
+        if(g == npos || in_slab[g] == k + 1)
           continue;
         const auto& t = m_m.tri[g];
         const double lo = (std::min)({m_u[t[0]], m_u[t[1]], m_u[t[2]]});
         const double hi = (std::max)({m_u[t[0]], m_u[t[1]], m_u[t[2]]});
         if(hi >= a && lo <= b)
         {
-          in_slab[g] = 1;
-          stack.push_back(g);
+          in_slab[g] = k + 1;
+          slab.push_back(g);
         }
       }
-    }
     // Separated already where an isoline between them crosses the slab. (The test once asked
     // whether any isoline anywhere had a value between them: the levels added in one region
     // (wide bands, other saddles) then hid the saddles of a hole elsewhere, whose two saddles
     // stayed in one band, and the cell around the hole's wall held its handle: 6 of the 100
     // handles of the straight-walled slab at h = sqrt(area / 250).)
     bool separated = false;
-    for(std::size_t f = 0; f < in_slab.size() && !separated; ++f)
-      if(in_slab[f])
-        for(const Face_level& l : m_levels_in_face[f])
-          separated = separated || (l.value > a && l.value < b);
+    for(std::size_t j = 0; j < slab.size() && !separated; ++j)
+      for(const Face_level& l : m_levels_in_face[slab[j]])
+        separated = separated || (l.value > a && l.value < b);
     if(separated)
       continue;
-    for(Isoline& iso : extract_isolines(m_m, m_u, c))
-      if(in_slab[iso.faces[0]] && worth_keeping(iso))
+    for(Isoline& iso : extract_isolines(m_m, m_u, c, &slab))
+      if(in_slab[iso.faces[0]] == k + 1 && worth_keeping(iso))
       {
         include(std::move(iso));
         ++m_stats.saddle_levels;
