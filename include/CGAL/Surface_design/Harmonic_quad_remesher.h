@@ -487,8 +487,8 @@ public:
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{feature_snapping}
   ///     \cgalParamDescription{the curves pass over features narrower than their spacing (a pit, a spike, the
-  ///                           apex of a cone, a sharp crease). Interior input vertices, and points h / 2 apart
-  ///                           along the input's creases (edges whose faces' normals differ by more than 30
+  ///                           apex of a cone, a sharp crease). Interior input vertices, and points at most h / 2
+  ///                           apart along the input's creases (edges whose faces' normals differ by more than 30
   ///                           degrees), farther than h / 4 from the result, farthest first, pull the nearest
   ///                           corner of the face closest to them
   ///                           onto them (a corner not on the boundary, at most 2h away, no face around it

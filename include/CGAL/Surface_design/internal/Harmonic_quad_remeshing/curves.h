@@ -104,7 +104,8 @@ inline double avoid_vertex_values(double c, const std::vector<double>& sorted, d
 }
 
 /// Every connected piece of the level set u = c (c equal to no vertex value); with `seeds`, only
-/// the pieces through one of those faces (the work is then that of the faces they cross).
+/// the pieces through one of those faces (then only the faces they cross are examined, besides
+/// clearing two arrays of a byte or two per face).
 inline std::vector<Isoline> extract_isolines(const Trace_mesh& m, const std::vector<double>& u, double c,
                                              const std::vector<std::size_t>* seeds = nullptr)
 {
@@ -290,7 +291,11 @@ private:
     e.curve = l.curve;
     e.segment = l.segment;
     e.point = p;
-    if(m_curves == nullptr)
+    // (`l` is an element of m_levels[f]: every caller found it there)
+    const bool tie = m_curves != nullptr && std::any_of(m_levels[f].begin(), m_levels[f].end(), [&](const Face_level& k) {
+      return k.value == l.value && &k != &l;
+    });
+    if(!tie)
       return e;
     auto distance = [&](const Face_level& k) {
       const Isoline& iso = (*m_curves)[k.curve];

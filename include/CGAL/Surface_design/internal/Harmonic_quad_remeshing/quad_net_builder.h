@@ -341,27 +341,12 @@ private:
   // keeps the cells there quadrilateral).
   void spectacles_lines(std::size_t k, const Gradient_walker& walker);
 
-  // The faces around junction v between the edge to the bridge's next vertex `along` and the
-  // first edge to the frame's next or previous vertex, swept counter-clockwise and clockwise
-  // (the two sectors on the bridge's side of the frame), with their corner angles at v: found
-  // in the mesh's own order around v, which the angles in a tangent plane do not give where
-  // the frame turns sharply or the bridge leaves it straight.
-  struct Junction_sector
-  {
-    std::vector<std::pair<std::size_t, unsigned char>> faces; // (face, corner of v), from the bridge
-    std::vector<double> angle;
-    std::size_t frame_end = npos; // the frame's vertex where the sector ends
-    bool ccw = true;
-    std::size_t middle = 0; // the face holding the bisector
-    double fraction = 0.5;  // of its angle, from the sweep's side
-  };
-  std::vector<Junction_sector> junction_sectors(std::size_t v, std::size_t along, std::size_t next,
-                                                std::size_t prev) const;
-
-  // Where a sector's line starts: on its bisector, close to v (before the first level beyond
-  // `value`, `step` away); none when the bisector's face is not on the side of sigma.
-  std::optional<Eigen::Vector3d> sector_start(std::size_t v, const Junction_sector& sector, double value, int sigma,
-                                              double step) const;
+  // Where the line into a sector of junction v starts: (face, point) near the sector's bisector,
+  // in the face that holds it or else the nearest face of the sector on the side of sigma with a
+  // corner off the level (not flat), close to v (before the first level beyond `value`, `step`
+  // away); none when no face of the sector is on that side.
+  std::optional<std::pair<std::size_t, Eigen::Vector3d>> sector_start(std::size_t v, const Vertex_sector& sector,
+                                                                       double value, int sigma, double step) const;
 
   // the spacing at arc length s of an isoline (on segment j for the second form)
   double local_h_at(const Isoline& iso, double s) const

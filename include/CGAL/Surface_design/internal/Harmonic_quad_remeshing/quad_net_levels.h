@@ -170,7 +170,8 @@ inline void Quad_net_builder::choose_levels()
       // (a piece through a vertex of the spectacles is theirs: it crosses an edge at its end
       // held at the level, the vertex counting as above it; a piece that only passes through a
       // face next to them is another loop of the level, kept: dropping it left a band holding
-      // a handle on the rounded genus-100 slab)
+      // a handle on the rounded genus-100 slab; the comparison is exact, since the solve
+      // writes only the vertices that are not held)
       bool touches = false;
       for(std::size_t e : iso.point_edge)
       {
@@ -352,7 +353,9 @@ inline void Quad_net_builder::separate_saddles(const std::vector<double>& sorted
     // whether any isoline anywhere had a value between them: the levels added in one region
     // (wide bands, other saddles) then hid the saddles of a hole elsewhere, whose two saddles
     // stayed in one band, and the cell around the hole's wall held its handle: 6 of the 100
-    // handles of the straight-walled slab at h = sqrt(area / 250).)
+    // handles of the straight-walled slab at h = sqrt(area / 250). The slab is still a coarse
+    // stand-in for the saddle's band: an isoline crossing a far part of a large slab counts
+    // too; the topology check catches a net where that matters.)
     bool separated = false;
     for(std::size_t j = 0; j < slab.size() && !separated; ++j)
       for(const Face_level& l : m_levels_in_face[slab[j]])
@@ -360,7 +363,7 @@ inline void Quad_net_builder::separate_saddles(const std::vector<double>& sorted
     if(separated)
       continue;
     for(Isoline& iso : extract_isolines(m_m, m_u, c, &slab))
-      if(in_slab[iso.faces[0]] == k + 1 && worth_keeping(iso))
+      if(worth_keeping(iso)) // (a piece through a face of the slab stays in it)
       {
         include(std::move(iso));
         ++m_stats.saddle_levels;

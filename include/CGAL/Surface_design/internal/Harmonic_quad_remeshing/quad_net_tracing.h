@@ -118,93 +118,46 @@ inline void Quad_net_builder::spectacles_line(std::size_t from, double key, std:
   }
 }
 
-inline std::vector<Quad_net_builder::Junction_sector>
-Quad_net_builder::junction_sectors(std::size_t v, std::size_t along, std::size_t next, std::size_t prev) const
+inline std::optional<std::pair<std::size_t, Eigen::Vector3d>>
+Quad_net_builder::sector_start(std::size_t v, const Vertex_sector& sector, double value, int sigma, double step) const
 {
-  std::vector<Junction_sector> out;
-  for(const bool ccw : {true, false})
+  // the faces of the sector by their distance from the bisector's face
+  std::vector<std::size_t> order(sector.faces.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
+    const auto dx = x > sector.middle ? x - sector.middle : sector.middle - x;
+    const auto dy = y > sector.middle ? y - sector.middle : sector.middle - y;
+    return dx < dy;
+  });
+  for(const std::size_t k : order)
   {
-    // the face after (ccw) or before the edge from v to `along`, then face by face around v
-    Junction_sector sector;
-    std::size_t f = npos;
-    unsigned char corner = 0;
-    for(const auto& [g, i] : m_m.star[v])
-      if(m_m.tri[g][(i + (ccw ? 1 : 2)) % 3] == along)
-      {
-        f = g;
-        corner = i;
-      }
-    double total = 0.;
-    for(std::size_t guard = 0; f != npos && guard < m_m.star[v].size(); ++guard)
+    const auto [f, corner] = sector.faces[k];
+    const std::size_t a = m_m.tri[f][(corner + 1) % 3], b = m_m.tri[f][(corner + 2) % 3];
+    const double sa = sigma * (m_u[a] - value), sb = sigma * (m_u[b] - value);
+    if(sa < 0. || sb < 0. || !(sa > 0. || sb > 0.))
+      continue; // not the side of the bridge (squeezed between the curves), or flat at the level
+    const Eigen::Vector3d da = m_m.point[a] - m_m.point[v], db = m_m.point[b] - m_m.point[v];
+    // the fraction of the angle from a towards b (counter-clockwise); off the bisector's face, its middle
+    const double fraction = k == sector.middle ? sector.fraction : 0.5;
+    const double t = sector.ccw ? fraction : 1. - fraction;
+    const Eigen::Vector3d d = (1. - t) * da.normalized() + t * db.normalized();
+    // Close to v: the net's edge is the chord from the junction to where the line lands, so the
+    // start must lie before the first isoline beyond the spectacles (else the chord jumps over
+    // isolines, the curves of the net cross and the net gains a handle: found on a coarse slab
+    // whose faces are many h wide); inside f: less than half its shorter edge at v.
+    double lambda = (std::min)(0.1 * m_opt.edge_length, 0.5 * (std::min)(da.norm(), db.norm()));
+    const Eigen::Vector3d u_corners(m_u[m_m.tri[f][0]], m_u[m_m.tri[f][1]], m_u[m_m.tri[f][2]]);
+    Eigen::Vector3d start = m_m.point[v] + lambda * d;
+    for(int halving = 0; halving < 30 && step > 0. &&
+                         std::abs(m_m.barycentric(f, start).dot(u_corners) - value) >= 0.25 * step;
+        ++halving)
     {
-      const std::size_t a = m_m.tri[f][(corner + 1) % 3], b = m_m.tri[f][(corner + 2) % 3];
-      const Eigen::Vector3d da = m_m.point[a] - m_m.point[v], db = m_m.point[b] - m_m.point[v];
-      const double angle = std::atan2(da.cross(db).norm(), da.dot(db));
-      sector.faces.emplace_back(f, corner);
-      sector.angle.push_back(angle);
-      total += angle;
-      const std::size_t far = ccw ? b : a; // the edge where the sweep leaves f
-      if(far == next || far == prev)
-      {
-        sector.frame_end = far;
-        break;
-      }
-      const std::size_t g = m_m.neighbour[f][ccw ? (corner + 2) % 3 : corner];
-      if(g == npos)
-        break;
-      const unsigned char e = m_m.neighbour_edge[f][ccw ? (corner + 2) % 3 : corner];
-      // (local edge k runs from corner k to corner k + 1) counter-clockwise, f's edge b -> v
-      // runs v -> b in g: v is corner e there; clockwise, f's edge v -> a runs a -> v in g: v is
-      // corner e + 1
-      f = g;
-      corner = (unsigned char)(ccw ? e : (e + 1) % 3);
+      lambda *= 0.5;
+      start = m_m.point[v] + lambda * d;
     }
-    if(sector.frame_end == npos)
-      continue;
-    sector.ccw = ccw;
-    // the face holding the bisector, and the fraction of its corner angle before the bisector
-    double before = 0.;
-    for(std::size_t k = 0; k < sector.faces.size(); ++k)
-    {
-      if(before + sector.angle[k] >= 0.5 * total || k + 1 == sector.faces.size())
-      {
-        sector.middle = k;
-        sector.fraction = sector.angle[k] > 0. ? std::clamp((0.5 * total - before) / sector.angle[k], 0.05, 0.95) : 0.5;
-        break;
-      }
-      before += sector.angle[k];
-    }
-    out.push_back(std::move(sector));
+    return std::make_pair(f, start);
   }
-  return out;
-}
-
-inline std::optional<Eigen::Vector3d>
-Quad_net_builder::sector_start(std::size_t v, const Junction_sector& sector, double value, int sigma, double step) const
-{
-  const auto [f, corner] = sector.faces[sector.middle];
-  const std::size_t a = m_m.tri[f][(corner + 1) % 3], b = m_m.tri[f][(corner + 2) % 3];
-  if(sigma * (m_u[a] - value) < 0. || sigma * (m_u[b] - value) < 0.)
-    return std::nullopt; // not the side of the bridge (a face squeezed between the curves)
-  const Eigen::Vector3d da = m_m.point[a] - m_m.point[v], db = m_m.point[b] - m_m.point[v];
-  // the fraction of the angle from the sweep's start: from a towards b counter-clockwise
-  const double t = sector.ccw ? sector.fraction : 1. - sector.fraction;
-  const Eigen::Vector3d d = (1. - t) * da.normalized() + t * db.normalized();
-  // Close to v: the net's edge is the chord from the junction to where the line lands, so the
-  // start must lie before the first isoline beyond the spectacles (else the chord jumps over
-  // isolines, the curves of the net cross and the net gains a handle: found on a coarse slab
-  // whose faces are many h wide); inside f: less than half its shorter edge at v.
-  double lambda = (std::min)(0.1 * m_opt.edge_length, 0.5 * (std::min)(da.norm(), db.norm()));
-  const Eigen::Vector3d u_corners(m_u[m_m.tri[f][0]], m_u[m_m.tri[f][1]], m_u[m_m.tri[f][2]]);
-  Eigen::Vector3d start = m_m.point[v] + lambda * d;
-  for(int halving = 0; halving < 30 && step > 0. &&
-                       std::abs(m_m.barycentric(f, start).dot(u_corners) - value) >= 0.25 * step;
-      ++halving)
-  {
-    lambda *= 0.5;
-    start = m_m.point[v] + lambda * d;
-  }
-  return start;
+  return std::nullopt;
 }
 
 inline void Quad_net_builder::spectacles_lines(std::size_t k, const Gradient_walker& walker)
@@ -297,18 +250,20 @@ inline void Quad_net_builder::spectacles_lines(std::size_t k, const Gradient_wal
     const std::size_t at = std::size_t(std::find(frame.begin(), frame.end(), v) - frame.begin());
     const std::size_t next = frame[(at + 1) % frame.size()], prev = frame[(at + frame.size() - 1) % frame.size()];
     const std::size_t along = j == 0 ? sp.bridge[1] : sp.bridge[sp.bridge.size() - 2];
-    for(const Junction_sector& sector : junction_sectors(v, along, next, prev))
+    for(const bool ccw : {true, false})
     {
-      const std::optional<Eigen::Vector3d> start = sector_start(v, sector, sp.value, sp.sigma, step);
+      // the sector between the bridge and the frame's first vertex met turning from it
+      const Vertex_sector sector = vertex_sector(m_m, v, along, {next, prev}, ccw);
+      const auto start = sector.end == npos ? std::nullopt : sector_start(v, sector, sp.value, sp.sigma, step);
       if(!start)
         continue;
-      const std::size_t f = sector.faces[sector.middle].first;
+      const auto [f, p] = *start;
       const auto& t = m_m.tri[f];
-      const double start_value = m_m.barycentric(f, *start).dot(Eigen::Vector3d(m_u[t[0]], m_u[t[1]], m_u[t[2]]));
+      const double start_value = m_m.barycentric(f, p).dot(Eigen::Vector3d(m_u[t[0]], m_u[t[1]], m_u[t[2]]));
       // rotation key at the junction: between the bridge and the frame's next (prev) direction
-      const bool next_side = sector.frame_end == next;
+      const bool next_side = sector.end == next;
       const double key = sp.sigma > 0 ? (next_side ? 0.5 : 3.5) : (next_side ? 1.5 : 2.5);
-      spectacles_line(junction_code[std::size_t(j)], key, f, *start, start_value, sp.sigma, walker);
+      spectacles_line(junction_code[std::size_t(j)], key, f, p, start_value, sp.sigma, walker);
     }
   }
 }

@@ -39,7 +39,7 @@ struct Snap_statistics
 
 /// The points that snapping may pull the soup onto: the input's interior vertices, and points
 /// along its creases (interior edges whose faces' normals differ by more than 30 degrees), at
-/// most `spacing` apart. A net whose cells span a crease cuts it off between two of the input's
+/// most `spacing` apart (each crease edge cut into equal pieces). A net whose cells span a crease cuts it off between two of the input's
 /// vertices (the vertical edges of a slab's holes, many spacings long on a coarse input).
 inline std::vector<Eigen::Vector3d> snap_targets(const Trace_mesh& m, double spacing)
 {
@@ -66,7 +66,7 @@ inline std::vector<Eigen::Vector3d> snap_targets(const Trace_mesh& m, double spa
 /// The net passes over features narrower than its spacing: a pit or a spike, the apex of a cone,
 /// a sharp crease. Input vertices (interior ones: the boundary follows the input's, see
 /// `Quad_net_builder::boundary_detail`) and points along the input's creases (`snap_targets()`,
-/// 2 `tolerance` apart) farther than `tolerance` from the soup's surface, farthest first, pull
+/// at most 2 `tolerance` apart) farther than `tolerance` from the soup's surface, farthest first, pull
 /// the nearest corner of the soup face closest to them onto them, provided that
 ///  - that corner is not on the boundary and is at most `reach` away,
 ///  - no face around it turns over (its normal keeps a positive dot product with the old one),

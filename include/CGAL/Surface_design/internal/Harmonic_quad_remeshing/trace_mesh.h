@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -151,6 +152,75 @@ Trace_mesh make_trace_mesh(const Indices& idx, const VertexPointMap& vpm)
     m.boundary_loop.push_back(std::move(cycle));
   }
   return m;
+}
+
+
+/// The faces around vertex v between its edge to `from` and the first edge to one of `stops`,
+/// swept counter-clockwise (`ccw`) or clockwise, in the mesh's own order around v (which angles
+/// in a tangent plane do not give where the surface turns sharply at v), with their corner angles
+/// at v, and the face holding the bisector of the sector's angle.
+struct Vertex_sector
+{
+  std::vector<std::pair<std::size_t, unsigned char>> faces; ///< (face, corner of v), from `from`
+  std::vector<double> angle;                                ///< corner angle of each at v
+  std::size_t end = npos; ///< the vertex of `stops` where the sector ends (npos: none met)
+  bool ccw = true;
+  std::size_t middle = 0; ///< the face holding the bisector
+  double fraction = 0.5;  ///< of its angle before the bisector, from the sweep's side (0.05 to 0.95)
+};
+
+inline Vertex_sector vertex_sector(const Trace_mesh& m, std::size_t v, std::size_t from,
+                                   const std::array<std::size_t, 2>& stops, bool ccw)
+{
+  Vertex_sector sector;
+  sector.ccw = ccw;
+  // the face after (counter-clockwise) or before the edge from v to `from`
+  std::size_t f = npos;
+  unsigned char corner = 0;
+  for(const auto& [g, i] : m.star[v])
+    if(m.tri[g][(i + (ccw ? 1 : 2)) % 3] == from)
+    {
+      f = g;
+      corner = i;
+    }
+  double total = 0.;
+  for(std::size_t guard = 0; f != npos && guard < m.star[v].size(); ++guard)
+  {
+    const std::size_t a = m.tri[f][(corner + 1) % 3], b = m.tri[f][(corner + 2) % 3];
+    const Eigen::Vector3d da = m.point[a] - m.point[v], db = m.point[b] - m.point[v];
+    sector.faces.emplace_back(f, corner);
+    sector.angle.push_back(std::atan2(da.cross(db).norm(), da.dot(db)));
+    total += sector.angle.back();
+    const std::size_t far = ccw ? b : a; // the edge where the sweep leaves f
+    if(far == stops[0] || far == stops[1])
+    {
+      sector.end = far;
+      break;
+    }
+    const std::size_t edge = ccw ? (corner + 2) % 3 : corner;
+    const std::size_t g = m.neighbour[f][edge];
+    if(g == npos)
+      break;
+    // counter-clockwise, f's edge b -> v runs v -> b in g: v is corner e there; clockwise, f's
+    // edge v -> a runs a -> v in g: v is corner e + 1
+    const unsigned char e = m.neighbour_edge[f][edge];
+    f = g;
+    corner = (unsigned char)(ccw ? e : (e + 1) % 3);
+  }
+  if(sector.end == npos)
+    return sector;
+  double before = 0.;
+  for(std::size_t k = 0; k < sector.faces.size(); ++k)
+  {
+    if(before + sector.angle[k] >= 0.5 * total || k + 1 == sector.faces.size())
+    {
+      sector.middle = k;
+      sector.fraction = sector.angle[k] > 0. ? std::clamp((0.5 * total - before) / sector.angle[k], 0.05, 0.95) : 0.5;
+      break;
+    }
+    before += sector.angle[k];
+  }
+  return sector;
 }
 
 } // namespace harmonic_quad
