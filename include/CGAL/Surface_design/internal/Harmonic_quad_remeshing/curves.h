@@ -292,9 +292,8 @@ private:
     e.segment = l.segment;
     e.point = p;
     // (`l` is an element of m_levels[f]: every caller found it there)
-    const bool tie = m_curves != nullptr && std::any_of(m_levels[f].begin(), m_levels[f].end(), [&](const Face_level& k) {
-      return k.value == l.value && &k != &l;
-    });
+    const auto other_at_level = [&](const Face_level& k) { return k.value == l.value && &k != &l; };
+    const bool tie = m_curves != nullptr && std::any_of(m_levels[f].begin(), m_levels[f].end(), other_at_level);
     if(!tie)
       return e;
     auto distance = [&](const Face_level& k) {
@@ -303,7 +302,7 @@ private:
     };
     double best = distance(l);
     for(const Face_level& k : m_levels[f])
-      if(k.value == l.value && &k != &l)
+      if(other_at_level(k))
       {
         const double d = distance(k);
         if(d < best)

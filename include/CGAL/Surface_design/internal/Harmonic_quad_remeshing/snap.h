@@ -39,8 +39,9 @@ struct Snap_statistics
 
 /// The points that snapping may pull the soup onto: the input's interior vertices, and points
 /// along its creases (interior edges whose faces' normals differ by more than 30 degrees), at
-/// most `spacing` apart (each crease edge cut into equal pieces). A net whose cells span a crease cuts it off between two of the input's
-/// vertices (the vertical edges of a slab's holes, many spacings long on a coarse input).
+/// most `spacing` apart (each crease edge cut into equal pieces). A net whose cells span a crease
+/// cuts it off between two of the input's vertices (the vertical edges of a slab's holes, many
+/// spacings long on a coarse input).
 inline std::vector<Eigen::Vector3d> snap_targets(const Trace_mesh& m, double spacing)
 {
   std::vector<Eigen::Vector3d> out;
