@@ -63,6 +63,9 @@ struct Smoothest_direction_field_result
   std::size_t iterations = 0;
   /// False if the eigensolver stopped at the iteration limit before reaching the tolerance.
   bool converged = true;
+  /// True if the cotangent connection Laplacian was indefinite (possible for n = 4 on meshes with
+  /// obtuse triangles) and the field was computed with its negative edge weights set to 0.
+  bool weights_clamped = false;
 };
 
 
@@ -252,7 +255,7 @@ Smoothest_direction_field_result smoothest_direction_field(const TriangleMesh& t
   internal::validate_mesh(idx, vpm);
   const std::size_t nv = idx.number_of_vertices();
   const internal::Discrete_connection conn = internal::levi_civita_connection(idx, vpm);
-  const std::vector<double> weight = internal::cotangent_weights(idx, vpm);
+  std::vector<double> weight = internal::cotangent_weights(idx, vpm);
   const std::vector<double> mass = internal::vertex_areas(idx, internal::face_areas(idx, vpm));
   const internal::Boundary_loops loops = internal::boundary_loops(idx);
   const internal::Components comps = internal::connected_components(idx, loops);
@@ -282,56 +285,78 @@ Smoothest_direction_field_result smoothest_direction_field(const TriangleMesh& t
   // The system matrix: A + s M with s = eps (eigenproblem) or t * V / area (alignment);
   // Dirichlet rows and columns replaced by the identity. Vectors are complex, stored with
   // (Re, Im) interleaved in real vectors.
-  internal::Complex_sparse_matrix a = internal::complex_connection_laplacian(idx, conn, weight, n);
-  const internal::Complex_sparse_matrix a_energy = a;
-  double total_mass = 0.;
-  for(double m : mass)
-    total_mass += m;
-  const double eps_shift = 1e-8 * a.diagonal().real().sum() / total_mass;
-  const double mass_scale = double(nv) / total_mass; // m~ = mass_scale * m
-  std::vector<double> shift(nv);
-  for(std::size_t v = 0; v < nv; ++v)
-    shift[v] = (eigen_component[comps.vertex_component[v]] ? eps_shift : alignment * mass_scale) * mass[v];
+  // With cotangent weights, obtuse triangles can make A indefinite, the more so as n grows (for
+  // n = 4: kitten and camelhead among the shared meshes): its smallest eigenvector would then be
+  // a field of negative energy. The factorization detects it
+  // (a negative pivot), and the system is rebuilt with the negative weights set to 0.
   auto as_complex = [nv](Eigen::VectorXd& u) {
     return Eigen::Map<Eigen::VectorXcd>(reinterpret_cast<std::complex<double>*>(u.data()), Eigen::Index(nv));
   };
-
-  Eigen::VectorXd rhs_fixed = Eigen::VectorXd::Zero(Eigen::Index(2 * nv)); // constant part of the rhs
-  if(alignment > 0.)
-  {
-    std::vector<std::complex<double>> q = internal::principal_curvature_directions(idx, vpm, conn);
-    for(auto& z : q)
-      z = n == 2 ? z : (std::abs(z) > 0. ? std::pow(z, n / 2) / std::pow(std::abs(z), n / 2 - 1) : 0.);
-    double rms = 0.;
-    for(std::size_t v = 0; v < nv; ++v)
-      rms += mass[v] * std::norm(q[v]);
-    rms = std::sqrt(rms / total_mass);
-    if(!(rms > 0.))
-      throw Invalid_parameter("curvature_alignment_weight", "curvature alignment is undefined on this mesh: its curvature tensor "
-                                "vanishes everywhere (a planar surface has no principal directions)");
-    for(std::size_t v = 0; v < nv; ++v)
-      as_complex(rhs_fixed)[Eigen::Index(v)] = shift[v] * q[v] / rms;
-  }
-  if(boundary != Direction_field_boundary::free)
-  {
-    const Eigen::VectorXcd coupling = a * as_complex(fixed_value);
-    for(std::size_t v = 0; v < nv; ++v)
-    {
-      const Eigen::Index r = Eigen::Index(v);
-      as_complex(rhs_fixed)[r] = fixed[v] ? as_complex(fixed_value)[r] : as_complex(rhs_fixed)[r] - coupling[r];
-    }
-    a.prune([&fixed](Eigen::Index i, Eigen::Index j, const std::complex<double>&) {
-      return !fixed[std::size_t(i)] && !fixed[std::size_t(j)];
-    });
-  }
-  for(std::size_t v = 0; v < nv; ++v)
-    a.coeffRef(Eigen::Index(v), Eigen::Index(v)) += fixed[v] ? 1. : shift[v];
-  a.makeCompressed();
-
+  internal::Complex_sparse_matrix a_energy;
+  Eigen::VectorXd rhs_fixed;
   internal::Hermitian_system<Solver> system(internal::solver_traits(np), "connection Laplacian");
-  system.factor(std::move(a));
+  bool weights_clamped = false;
+  for(;;)
+  {
+    internal::Complex_sparse_matrix a = internal::complex_connection_laplacian(idx, conn, weight, n);
+    a_energy = a;
+    double total_mass = 0.;
+    for(double m : mass)
+      total_mass += m;
+    const double eps_shift = 1e-8 * a.diagonal().real().sum() / total_mass;
+    const double mass_scale = double(nv) / total_mass; // m~ = mass_scale * m
+    std::vector<double> shift(nv);
+    for(std::size_t v = 0; v < nv; ++v)
+      shift[v] = (eigen_component[comps.vertex_component[v]] ? eps_shift : alignment * mass_scale) * mass[v];
+
+    rhs_fixed = Eigen::VectorXd::Zero(Eigen::Index(2 * nv)); // constant part of the rhs
+    if(alignment > 0.)
+    {
+      std::vector<std::complex<double>> q = internal::principal_curvature_directions(idx, vpm, conn);
+      for(auto& z : q)
+        z = n == 2 ? z : (std::abs(z) > 0. ? std::pow(z, n / 2) / std::pow(std::abs(z), n / 2 - 1) : 0.);
+      double rms = 0.;
+      for(std::size_t v = 0; v < nv; ++v)
+        rms += mass[v] * std::norm(q[v]);
+      rms = std::sqrt(rms / total_mass);
+      if(!(rms > 0.))
+        throw Invalid_parameter("curvature_alignment_weight", "curvature alignment is undefined on this mesh: its curvature tensor "
+                                  "vanishes everywhere (a planar surface has no principal directions)");
+      for(std::size_t v = 0; v < nv; ++v)
+        as_complex(rhs_fixed)[Eigen::Index(v)] = shift[v] * q[v] / rms;
+    }
+    if(boundary != Direction_field_boundary::free)
+    {
+      const Eigen::VectorXcd coupling = a * as_complex(fixed_value);
+      for(std::size_t v = 0; v < nv; ++v)
+      {
+        const Eigen::Index r = Eigen::Index(v);
+        as_complex(rhs_fixed)[r] = fixed[v] ? as_complex(fixed_value)[r] : as_complex(rhs_fixed)[r] - coupling[r];
+      }
+      a.prune([&fixed](Eigen::Index i, Eigen::Index j, const std::complex<double>&) {
+        return !fixed[std::size_t(i)] && !fixed[std::size_t(j)];
+      });
+    }
+    for(std::size_t v = 0; v < nv; ++v)
+      a.coeffRef(Eigen::Index(v), Eigen::Index(v)) += fixed[v] ? 1. : shift[v];
+    a.makeCompressed();
+    try
+    {
+      system.factor(std::move(a));
+      break;
+    }
+    catch(const Linear_solver_failure&)
+    {
+      if(weights_clamped || *std::min_element(weight.begin(), weight.end()) >= 0.)
+        throw;
+      for(double& w : weight)
+        w = (std::max)(w, 0.);
+      weights_clamped = true;
+    }
+  }
 
   Smoothest_direction_field_result info;
+  info.weights_clamped = weights_clamped;
   info.eigenvalues.assign(nc, std::numeric_limits<double>::quiet_NaN());
   Eigen::VectorXd x = Eigen::VectorXd::Zero(Eigen::Index(2 * nv));
   if(!std::all_of(eigen_component.begin(), eigen_component.end(), [](bool b) { return b; }))

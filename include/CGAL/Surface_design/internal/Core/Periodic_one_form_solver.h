@@ -11,6 +11,7 @@
 #include <CGAL/Surface_design/internal/Core/angles.h>
 #include <CGAL/Surface_design/internal/Core/dec.h>
 #include <CGAL/Surface_design/internal/Solvers/Factored_system.h>
+#include <CGAL/Surface_design/internal/Solvers/integer_quadratic.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/Core/topology.h>
 
@@ -165,7 +166,7 @@ public:
           sum += m_weight[e] * m_xi[j][e] * (s.y[e] - omega[e]);
         g[Eigen::Index(j)] = sum;
       }
-      const Eigen::VectorXi c = integer_minimizer(m_Q, g);
+      const Eigen::VectorXi c = integer_quadratic_minimizer(m_Q, g);
       for(std::size_t j = 0; j < m; ++j)
       {
         const int cj = c[Eigen::Index(j)];
@@ -394,51 +395,6 @@ private:
         m_Q(Eigen::Index(i), Eigen::Index(j)) = m_Q(Eigen::Index(j), Eigen::Index(i)) = s;
       }
     m_xi_dirs = dirs;
-  }
-
-  // Integer c minimizing 2 g^T c + c^T Q c: best floor/ceil rounding of the relaxed optimum
-  // (exhaustive for up to 12 directions, plain rounding otherwise), then +-1 coordinate steps
-  // until none improves.
-  static Eigen::VectorXi integer_minimizer(const Eigen::MatrixXd& Q, const Eigen::VectorXd& g)
-  {
-    const Eigen::Index m = g.size();
-    const Eigen::VectorXd relaxed = -Q.ldlt().solve(g);
-    auto cost = [&](const Eigen::VectorXd& c) { return 2. * g.dot(c) + c.dot(Q * c); };
-    Eigen::VectorXd best(m);
-    for(Eigen::Index i = 0; i < m; ++i)
-      best[i] = std::round(relaxed[i]);
-    double best_cost = cost(best);
-    if(m <= 12)
-    {
-      Eigen::VectorXd c(m);
-      for(long mask = 0; mask < (1L << m); ++mask)
-      {
-        for(Eigen::Index i = 0; i < m; ++i)
-          c[i] = (mask >> i) & 1 ? std::ceil(relaxed[i]) : std::floor(relaxed[i]);
-        const double cc = cost(c);
-        if(cc < best_cost)
-        {
-          best_cost = cc;
-          best = c;
-        }
-      }
-    }
-    // coordinate descent: the change of cost for c_i += d is 2 d (g + Q c)_i + d^2 Q_ii
-    const double tolerance = 1e-12 * (std::abs(best_cost) + Q.diagonal().cwiseAbs().sum());
-    for(bool improved = true; improved;)
-    {
-      improved = false;
-      const Eigen::VectorXd grad = g + Q * best;
-      for(Eigen::Index i = 0; i < m && !improved; ++i)
-        for(int d : {-1, 1})
-          if(2. * d * grad[i] + Q(i, i) < -tolerance)
-          {
-            best[i] += d;
-            improved = true;
-            break;
-          }
-    }
-    return best.cast<int>();
   }
 
   struct Signed_edge

@@ -1,0 +1,624 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Stripe patterns on line fields and cross fields with exactly prescribed stripe singularities:
+// the exact solver of Noma & Kawahara on the branched cover of the field, solved on the base mesh.
+
+#ifndef CGAL_SURFACE_DESIGN_BRANCHED_STRIPE_PARAMETERIZER_H
+#define CGAL_SURFACE_DESIGN_BRANCHED_STRIPE_PARAMETERIZER_H
+
+#include <CGAL/Surface_design/edge_weighting.h>
+#include <CGAL/Surface_design/exceptions.h>
+#include <CGAL/Surface_design/Field_aligned_parameterizer.h>
+#include <CGAL/Surface_design/internal/Core/angles.h>
+#include <CGAL/Surface_design/internal/Core/Branched_one_form_solver.h>
+#include <CGAL/Surface_design/internal/Core/direction_field_cover.h>
+#include <CGAL/Surface_design/internal/Core/discrete_connection.h>
+#include <CGAL/Surface_design/internal/Core/geometry.h>
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/named_parameters.h>
+#include <CGAL/Surface_design/internal/Core/topology.h>
+#include <CGAL/Surface_design/internal/Core/validation.h>
+#include <CGAL/Surface_design/internal/Field_aligned_parameterization/stripe_interpolation.h>
+#include <CGAL/Surface_design/internal/Field_aligned_parameterization/stripe_relaxation.h>
+#include <CGAL/Surface_design/parameters.h>
+#include <CGAL/Surface_design/solver_traits.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_design {
+
+/// \ingroup PkgFieldAlignedParameterizationRef
+///
+/// Computes stripe patterns that follow an *n-direction field*, n = 1 (vector field), 2 (line
+/// field) or 4 (cross field), with stripe singularities exactly at prescribed faces with
+/// prescribed integer indices and nowhere else (or at the places the energy chooses,
+/// `place_automatic_singularities()`). A line field's stripes, like geometry-central's stripe
+/// patterns (Knöppel et al. 2015), branch at the field's ±1/2 singularities; a cross field carries
+/// two coupled families of stripes, the second along the field turned by 90 degrees, which
+/// exchange at its ±1/4 singularities.
+///
+/// **The cover.** The field's n directions at each vertex are its sheets; along each edge, sheet a
+/// continues as sheet a + r_e (the matching r_e: the direction closest after transport by the
+/// discrete Levi-Civita connection, the transport of the field's own indices). Around a face the
+/// matchings add up to n times the field's index modulo n: the face is *regular* when they add up
+/// to 0 and a *branch face* otherwise (an odd index numerator for a line field; ±1/4 or ±1/2 for a
+/// cross field). Sheet a + n/2 carries the opposite direction and the opposite stripe angle, so
+/// the pattern has d = n/2 unknown angles per vertex (one for n = 1).
+///
+/// **The problem.** Unknown: y, d values per edge, with y = d_P alpha (mod 2 pi), the difference
+/// of the stripe angles along the edge read on the sheets the matching connects. Minimize
+/// sum_e w_e |y_e - omega_e|^2 (omega_e: the field of each sheet integrated along e, as the vector
+/// case's eq. 12), where the weights of the edges of branch faces are dropped (as Knöppel et al.),
+/// subject to: around every regular face the walk of y returns to its start plus 2 pi k_f
+/// (k_f the prescribed stripe indices, a pair for a cross field). Branch faces carry no
+/// constraint: the value at the branch point is fixed by the sheets' symmetry (0 or pi for a line
+/// field: the branch point lies on a stripe or midway between two). The windings of loops (around
+/// handles, boundaries and pairs of branch points) are chosen to minimize the energy.
+///
+/// **How it is solved.** Exactly, as the vector case (`Field_aligned_parameterizer`): a particular
+/// solution with the prescribed integers built by peeling a dual spanning forest rooted at the
+/// branch faces and boundary loops, plus d_P f from one back-substitution with the twisted
+/// Laplacian d_P^T W d_P (off-diagonal blocks -w_e P_e), factored once per field in `set_field()`;
+/// the integer windings by one more back-substitution. Changing the singularities or the frequency
+/// costs O(|E|) and at most two back-substitutions.
+///
+/// **Signs.** A stripe index (and the sheet of a family) is read on the face's *reference
+/// direction*, `field_direction(f)`: flipping a line field's direction flips the stripe angle and
+/// the sign of its singularities. The library chooses each vertex's representative so that the
+/// field continues along a spanning tree; the face's is the one of the source of `halfedge(f)`.
+///
+/// **Not allowed.** A stripe singularity in a branch face (the stripe angle is not single-valued
+/// around it), or in a face with an edge on the boundary (see `Field_aligned_parameterizer`): both
+/// throw `Invalid_constraints`.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+/// \tparam VertexPointMap a readable property map from vertices to `Point_3` (default: the mesh's)
+/// \tparam SolverTraits a model of `SparseLinearAlgebraWithFactorTraits_d` (default
+///         `Default_solver_traits`)
+template <class TriangleMesh,
+          class VertexPointMap = typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type,
+          class SolverTraits = Default_solver_traits>
+class Branched_stripe_parameterizer
+{
+  using GT = boost::graph_traits<TriangleMesh>;
+  using Indices = internal::Mesh_indices<TriangleMesh>;
+  using Solver = internal::Branched_one_form_solver<TriangleMesh, SolverTraits>;
+  using Value = Eigen::Vector2d;
+
+public:
+  using vertex_descriptor = typename GT::vertex_descriptor;
+  using halfedge_descriptor = typename GT::halfedge_descriptor;
+  using face_descriptor = typename GT::face_descriptor;
+  using Point_3 = typename boost::property_traits<VertexPointMap>::value_type;
+  using Vector_3 = typename CGAL::Kernel_traits<Point_3>::Kernel::Vector_3;
+
+  /// Validates the mesh and computes its topology, connection and weights. The field is given
+  /// (and the system factored) by `set_field()`.
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{symmetry_order}
+  ///     \cgalParamDescription{n: 1 (vector field), 2 (line field) or 4 (cross field)}
+  ///     \cgalParamType{`int`}
+  ///     \cgalParamDefault{2}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{vertex_point_map} as `Field_aligned_parameterizer` \cgalParamNEnd
+  ///   \cgalParamNBegin{sparse_linear_solver}
+  ///     \cgalParamDescription{the sparse solver that factors the twisted Laplacian (d |V| unknowns) and the
+  ///                           relaxation of `place_automatic_singularities()` (2 d |V| unknowns)}
+  ///     \cgalParamType{`SolverTraits`}
+  ///     \cgalParamDefault{`SolverTraits()`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{weighting}
+  ///     \cgalParamDescription{the edge weights: `cotangent` (default) or `uniform`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{vertex_index_map, halfedge_index_map, edge_index_map, face_index_map} as
+  ///     `Field_aligned_parameterizer` \cgalParamNEnd
+  /// \cgalNamedParamsEnd
+  ///
+  /// \throws Invalid_mesh (empty, non-triangle, non-manifold, degenerate face, non-finite point)
+  /// \throws Invalid_parameter if `symmetry_order` is not 1, 2 or 4, or `weighting` is neither
+  ///         `cotangent` nor `uniform`
+  template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+  explicit Branched_stripe_parameterizer(const TriangleMesh& tm,
+                                         const NamedParameters& np = CGAL::parameters::default_values())
+    : m_tm(tm), m_vpm(internal::class_vertex_point_map<VertexPointMap>(tm, np)),
+      m_traits(internal::class_solver_traits<SolverTraits>(np))
+  {
+    m_n = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::symmetry_order), 2);
+    internal::check_cover_order(m_n, "symmetry_order");
+    const Edge_weighting weighting = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, internal_np::weighting), Edge_weighting::cotangent);
+    if(weighting != Edge_weighting::cotangent && weighting != Edge_weighting::uniform)
+      throw Invalid_parameter("weighting", std::string("the stripe energy needs symmetric edge weights (cotangent "
+                                                       "or uniform), got ") + to_string(weighting));
+    auto idx = std::make_shared<Indices>(tm, np);
+    internal::validate_mesh(*idx, m_vpm);
+    m_idx = idx;
+    m_topology = std::make_shared<internal::Topology>(internal::compute_topology(*m_idx));
+    m_connection = internal::levi_civita_connection(*m_idx, m_vpm);
+    m_cot = weighting == Edge_weighting::cotangent ? internal::halfedge_cotangents(*m_idx, m_vpm)
+                                                   : std::vector<double>(m_idx->number_of_halfedges(), 1.);
+    m_uniform = weighting == Edge_weighting::uniform;
+    m_length = internal::edge_lengths(*m_idx, m_vpm);
+    m_vertex_area = internal::vertex_areas(*m_idx, internal::face_areas(*m_idx, m_vpm));
+    m_face_boundary = std::vector<bool>(m_idx->number_of_faces(), false);
+    for(std::size_t h = 0; h < m_idx->number_of_halfedges(); ++h)
+    {
+      const auto hd = m_idx->halfedge(h);
+      if(m_idx->is_border(hd))
+        m_face_boundary[m_idx->index(face(opposite(hd, tm), tm))] = true;
+    }
+    m_index.assign(m_idx->number_of_faces(), Eigen::Vector2i::Zero());
+  }
+
+  const TriangleMesh& mesh() const { return m_tm; }
+  /// n: 1, 2 or 4.
+  int symmetry_order() const { return m_n; }
+  /// The number of stripe families: 2 for a cross field, 1 otherwise.
+  int number_of_families() const { return internal::sheet_values(m_n); }
+
+  /// \name The field
+  /// @{
+
+  /// Sets the field from one vector per vertex, any of the n directions (projected to the vertex
+  /// tangent planes; only directions matter), and factors the system. The stripe angle advances by
+  /// 2 pi `stripes_per_unit_length` per unit length along the field. Prescribed stripe
+  /// singularities are kept.
+  /// \throws Invalid_parameter if a vector is not finite or has no tangential component, or
+  ///         `stripes_per_unit_length` is not positive and finite
+  /// \throws Invalid_constraints if a prescribed singularity lies in a branch face of the new field,
+  ///         or if the field cannot carry stripes (see `internal::Branched_one_form_solver`)
+  /// \throws Linear_solver_failure if the factorization fails. Nothing changes when it throws.
+  template <class VertexVectorMap>
+  void set_field(const VertexVectorMap& field, double stripes_per_unit_length,
+                 One_form_convention convention = One_form_convention::projected)
+  {
+    check_frequency(stripes_per_unit_length);
+    if(convention != One_form_convention::projected && convention != One_form_convention::angle_rescaled)
+      throw Invalid_parameter("convention", "not a One_form_convention enumerator");
+    std::vector<double> angle(m_idx->number_of_vertices());
+    for(std::size_t v = 0; v < angle.size(); ++v)
+    {
+      const auto& x = get(field, m_idx->vertex(v));
+      const Eigen::Vector3d xv(CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z()));
+      const Eigen::Vector3d t = xv - xv.dot(m_connection.frames.normal[v]) * m_connection.frames.normal[v];
+      if(!t.allFinite() || !(t.norm() > 1e-12 * xv.norm()))
+        throw Invalid_parameter("field", "the field vector at vertex " + std::to_string(v) +
+                                           (t.allFinite() ? " has no tangential component" : " is not finite"));
+      angle[v] = m_connection.frames.to_angle(v, t);
+    }
+    internal::Direction_field_cover cover =
+      internal::direction_field_cover(*m_idx, m_connection, m_topology->tree, std::move(angle), m_n);
+    for(std::size_t f = 0; f < m_index.size(); ++f)
+      if(!cover.regular[f] && !m_index[f].isZero())
+        throw Invalid_constraints("face " + std::to_string(f) + " holds a stripe singularity and is a branch face of "
+                                  "the new field (index " + std::to_string(cover.index_numerator[f]) + "/" +
+                                  std::to_string(m_n) + "): move the singularity first");
+    // every system its own solver object (copies of Eigen's traits share one factorization)
+    auto solver = std::make_unique<Solver>(m_idx, m_topology, cover, weights(cover), internal::new_solver_like(m_traits),
+                                           "twisted Laplacian of the stripes");
+    m_solver = std::move(solver);
+    ++m_factorizations;
+    m_convention = convention;
+    m_frequency = stripes_per_unit_length;
+    m_solved = false;
+    m_relaxation.reset();
+    update_omega();
+  }
+
+  /// Changes the frequency only: no factorization.
+  /// \throws Invalid_parameter if it is not positive and finite; Invalid_constraints before `set_field()`
+  void set_frequency(double stripes_per_unit_length)
+  {
+    check_frequency(stripes_per_unit_length);
+    require_field();
+    m_frequency = stripes_per_unit_length;
+    m_relaxation.reset();
+    update_omega();
+  }
+  double frequency() const { return m_frequency; }
+
+  bool has_field() const { return bool(m_solver); }
+  /// Whether face f is a branch face of the field.
+  bool is_branch_face(face_descriptor f) const { return !cover().regular[checked_face(f)]; }
+  /// n times the field's index in face f.
+  int field_index_numerator(face_descriptor f) const { return cover().index_numerator[checked_face(f)]; }
+  /// The branch faces, by index.
+  std::vector<std::size_t> branch_faces() const
+  {
+    std::vector<std::size_t> out;
+    for(std::size_t f = 0; f < cover().regular.size(); ++f)
+      if(!cover().regular[f])
+        out.push_back(f);
+    return out;
+  }
+  /// The face's reference direction (unit): the direction its stripe indices and values refer to.
+  Vector_3 field_direction(face_descriptor f) const
+  {
+    const std::size_t v = reference_vertex(checked_face(f));
+    const Eigen::Vector3d x = m_connection.frames.to_vector(v, cover().angle[v]);
+    return Vector_3(x.x(), x.y(), x.z());
+  }
+  /// @}
+
+  /// \name Stripe singularities
+  /// @{
+
+  /// The index of family `family` (0, or 1 for the second family of a cross field) prescribed in f.
+  int index(face_descriptor f, int family = 0) const { return m_index[checked_face(f)][checked_family(family)]; }
+  /// Prescribes index k of family `family` in face f (on the face's reference direction).
+  /// \throws Invalid_constraints if f is a branch face or has an edge on the boundary and k != 0;
+  ///         nothing changes then
+  void set_index(face_descriptor f, int k, int family = 0) { set_index(checked_face(f), k, family); }
+  /// Same, with the face given by its index.
+  void set_index(std::size_t f, int k, int family = 0)
+  {
+    if(f >= m_index.size())
+      throw Invalid_constraints("face " + std::to_string(f) + " does not exist (the mesh has " +
+                                std::to_string(m_index.size()) + " faces)");
+    const int a = checked_family(family);
+    if(k != 0)
+      require_singularity_allowed(f);
+    m_index[f][a] = k;
+  }
+  void clear_indices() { std::fill(m_index.begin(), m_index.end(), Eigen::Vector2i::Zero()); }
+  /// Moves every index of face `from` to face `to` (added to the indices there).
+  /// \throws Invalid_constraints if `to` cannot hold a singularity; nothing changes then
+  void move_singularity(face_descriptor from, face_descriptor to)
+  {
+    const std::size_t a = checked_face(from), b = checked_face(to);
+    if(a == b || m_index[a].isZero())
+      return;
+    require_singularity_allowed(b);
+    m_index[b] += m_index[a];
+    m_index[a].setZero();
+  }
+  /// The faces with a non-zero prescribed index.
+  std::vector<std::size_t> singular_faces() const
+  {
+    std::vector<std::size_t> out;
+    for(std::size_t f = 0; f < m_index.size(); ++f)
+      if(!m_index[f].isZero())
+        out.push_back(f);
+    return out;
+  }
+
+  /// Replaces the prescribed singularities by the ones the energy wants, and returns their number.
+  /// 1. The candidates are the stripe singularities of the smallest eigenvector of the relaxed
+  ///    problem (Knöppel et al. 2015: complex values whose phases are the stripe angles, with the
+  ///    same weights, branch faces and sheets), read off as the integer turn of its phases around
+  ///    every regular face with no edge on the boundary.
+  /// 2. The relaxation lets the amplitude vanish where the exact pattern cannot, so some
+  ///    candidates raise the exact energy (most of them on cross fields at low frequencies): each
+  ///    candidate is dropped, in face order, when the exact energy without it is lower (one
+  ///    solve per candidate; on a closed component without twist a single one cannot go, by
+  ///    Stokes' theorem).
+  /// 3. If no singularity at all gives a lower exact energy, none are placed.
+  ///
+  /// The relaxation (one factorization of size 2 d |V| and a shift-invert Lanczos run) is cached
+  /// until the field or the frequency changes.
+  /// 	hrows Invalid_constraints before `set_field()`
+  std::size_t place_automatic_singularities()
+  {
+    require_field();
+    if(!m_relaxation)
+    {
+      ++m_factorizations;
+      m_relaxation = internal::relaxed_stripe_indices(*m_idx, *m_solver, m_omega, m_vertex_area,
+                                                      internal::new_solver_like(m_traits));
+    }
+    const int d = number_of_families();
+    auto exact_energy = [this](const std::vector<Eigen::Vector2i>& k) -> std::optional<double> {
+      try
+      {
+        return m_solver->solve(m_omega, k).energy;
+      }
+      catch(const Invalid_constraints&)
+      {
+        return std::nullopt; // Stokes' theorem on a closed component without twist
+      }
+    };
+    const std::vector<Eigen::Vector2i> none(m_index.size(), Eigen::Vector2i::Zero());
+    std::vector<Eigen::Vector2i> k = none;
+    for(std::size_t f = 0; f < k.size(); ++f)
+      if(cover().regular[f] && !m_face_boundary[f])
+        k[f] = (*m_relaxation)[f];
+    std::optional<double> best = exact_energy(k);
+    if(!best)
+      k = none;
+    else
+      for(std::size_t f = 0; f < k.size(); ++f)
+        for(int a = 0; a < d; ++a)
+          if(k[f][a] != 0)
+          {
+            const int kept = k[f][a];
+            k[f][a] = 0;
+            const std::optional<double> e = exact_energy(k);
+            if(e && *e < *best)
+              best = e;
+            else
+              k[f][a] = kept;
+          }
+    const std::optional<double> without = exact_energy(none);
+    if(best && without && *without <= *best)
+      k = none;
+    m_index = std::move(k);
+    m_solved = false;
+    return singular_faces().size();
+  }
+  /// @}
+
+  /// \name Solving and results
+  /// @{
+
+  /// Computes the pattern for the current field, frequency and singularities.
+  /// \throws Invalid_constraints before `set_field()`, or if the indices violate Stokes' theorem
+  ///         on a closed component whose field has neither singularity nor twist
+  void solve()
+  {
+    require_field();
+    typename Solver::Solution s = m_solver->solve(m_omega, m_index);
+    m_solution = std::move(s);
+    m_solved = true;
+  }
+  bool is_solved() const { return m_solved; }
+  /// The sparse factorizations done so far: one per `set_field()`, one per relaxation of
+  /// `place_automatic_singularities()`. Edits of the singularities and the frequency add none.
+  std::size_t number_of_factorizations() const { return m_factorizations; }
+  /// The energy sum_e w_e |y_e - omega_e|^2 of the last solve.
+  double energy() const { return solution().energy; }
+  /// The number of free integer windings (loops around handles, boundaries and pairs of branch
+  /// points) and how many of them the last solve moved off their starting value.
+  std::size_t number_of_free_windings() const { return solution().free_directions; }
+
+  /// The stripe angles of family `family` at the corners of face f, in the order source(h),
+  /// target(h), target(next(h)) for h = halfedge(f), on the face's reference direction, unwrapped
+  /// along h and next(h): in a regular face without singularity they vary linearly inside the face
+  /// and continuously across its edges.
+  std::array<double, 3> corner_values(face_descriptor f, int family = 0) const
+  {
+    const auto beta = walk(checked_face(f));
+    const int a = checked_family(family);
+    return {beta[0][a], beta[1][a], beta[2][a]};
+  }
+  /// The stripe index of family `family` in face f read from the solution (round of the walk
+  /// around the face over 2 pi; 0 in branch faces).
+  int stripe_index(face_descriptor f, int family = 0) const
+  {
+    const std::size_t i = checked_face(f);
+    const int a = checked_family(family);
+    if(!cover().regular[i])
+      return 0;
+    return int(std::lround(m_solver->curl(solution().y, i)[a] / internal::two_pi));
+  }
+  /// The stripe angle of family `family` at barycentric coordinates b (of the corners in the order
+  /// of `corner_values()`) in face f, with the interpolation of Knöppel et al.: linear in a regular
+  /// face, plus a winding term in a face with a stripe singularity, and piecewise linear on three
+  /// sub-triangles around the branch point (whose value is the fixed point of the sheets'
+  /// exchange) in a branch face. Continuous across every edge.
+  double value(face_descriptor f, const std::array<double, 3>& b, int family = 0) const
+  {
+    const std::size_t i = checked_face(f);
+    const int a = checked_family(family);
+    const auto beta = walk(i);
+    if(cover().regular[i])
+      return internal::regular_face_value({beta[0][a], beta[1][a], beta[2][a]}, stripe_index(f, a), b);
+    return internal::branch_face_value({beta[0][a], beta[1][a], beta[2][a], beta[3][a]}, branch_value(i)[a], b);
+  }
+  /// The stripe angles at the branch point of branch face f (on the face's reference direction).
+  std::array<double, 2> branch_point_value(face_descriptor f) const
+  {
+    const std::size_t i = checked_face(f);
+    if(cover().regular[i])
+      throw Invalid_constraints("face " + std::to_string(i) + " is not a branch face");
+    const Value c = branch_value(i);
+    return {c[0], c[1]};
+  }
+  /// @}
+
+  /// \name Internal data, for tests and benchmarks (unstable)
+  /// @{
+  const internal::Mesh_indices<TriangleMesh>& indices() const { return *m_idx; }
+  const internal::Topology& topology() const { return *m_topology; }
+  const internal::Direction_field_cover& cover() const { require_field(); return m_solver->cover(); }
+  const Solver& solver() const { require_field(); return *m_solver; }
+  /// y per edge index (d values), along the edge's orientation
+  const std::vector<Value>& one_form() const { return solution().y; }
+  const std::vector<Value>& target_one_form() const { require_field(); return m_omega; }
+  /// per vertex: the stripe angles on the vertex's representative
+  const std::vector<Value>& vertex_values() const { return solution().alpha; }
+  /// @}
+
+private:
+  static void check_frequency(double s)
+  {
+    if(!std::isfinite(s) || !(s > 0.))
+      throw Invalid_parameter("stripes_per_unit_length", "must be positive and finite, got " + std::to_string(s));
+  }
+  void require_field() const
+  {
+    if(!m_solver)
+      throw Invalid_constraints("set_field() has not been called");
+  }
+  const typename Solver::Solution& solution() const
+  {
+    if(!m_solved)
+      throw Invalid_constraints("solve() has not been called");
+    return m_solution;
+  }
+  std::size_t checked_face(face_descriptor f) const
+  {
+    const std::size_t i = m_idx->find(f);
+    if(i == internal::npos)
+      throw Invalid_constraints("the face is not a face of this mesh");
+    return i;
+  }
+  int checked_family(int family) const
+  {
+    if(family < 0 || family >= number_of_families())
+      throw Invalid_constraints("stripe family " + std::to_string(family) + " does not exist (a " +
+                                (m_n == 4 ? "cross field has families 0 and 1)" : "vector or line field has family 0)"));
+    return family;
+  }
+  void require_singularity_allowed(std::size_t f) const
+  {
+    if(m_face_boundary[f])
+      throw Invalid_constraints("face " + std::to_string(f) + " has an edge on the boundary: it cannot hold a stripe "
+                                "singularity (the boundary's winding absorbs it); choose a face with no edge on the "
+                                "boundary");
+    if(m_solver && !cover().regular[f])
+      throw Invalid_constraints("face " + std::to_string(f) + " is a branch face of the field (index " +
+                                std::to_string(cover().index_numerator[f]) + "/" + std::to_string(m_n) +
+                                "): the stripe angle is not single-valued around it, so it cannot hold a stripe "
+                                "singularity; choose a neighbouring face");
+  }
+  std::size_t reference_vertex(std::size_t f) const { return m_idx->source_index(halfedge(m_idx->face(f), m_tm)); }
+
+  // Edge weights with the contributions of branch faces dropped: the cotangent weight keeps the
+  // halves of its regular faces, the uniform weight 1 the share of its faces that are regular.
+  std::vector<double> weights(const internal::Direction_field_cover& cover) const
+  {
+    std::vector<double> w(m_idx->number_of_edges(), 0.);
+    for(std::size_t e = 0; e < w.size(); ++e)
+    {
+      const auto h = m_idx->oriented_halfedge(e);
+      int faces = 0, regular = 0;
+      for(const auto g : {h, opposite(h, m_tm)})
+        if(!m_idx->is_border(g))
+        {
+          ++faces;
+          if(cover.regular[m_idx->index(face(g, m_tm))])
+          {
+            ++regular;
+            w[e] += 0.5 * m_cot[m_idx->index(g)];
+          }
+        }
+      if(m_uniform)
+        w[e] = double(regular) / double(faces);
+    }
+    return w;
+  }
+
+  // omega per edge and sheet: the field of sheet a at i and of sheet a + r at j integrated along
+  // the edge i -> j (as the vector case's conventions).
+  void update_omega()
+  {
+    const auto& frames = m_connection.frames;
+    const internal::Direction_field_cover& c = cover();
+    const double nu = internal::two_pi * m_frequency;
+    m_omega.assign(m_idx->number_of_edges(), Value::Zero());
+    auto sheet_angle = [&](std::size_t v, int sheet) { return c.angle[v] + internal::two_pi * sheet / double(m_n); };
+    auto sheet_vector = [&](std::size_t v, int sheet) {
+      // sheet + n/2 is exactly the opposite of sheet
+      const int half = (std::max)(m_n / 2, 1);
+      const int base = m_n == 1 ? 0 : sheet % half;
+      const double sign = m_n == 1 || (sheet % m_n) < half ? 1. : -1.;
+      return Eigen::Vector3d(sign * frames.to_vector(v, sheet_angle(v, base)));
+    };
+    for(std::size_t e = 0; e < m_omega.size(); ++e)
+    {
+      const auto h = m_idx->oriented_halfedge(e);
+      const auto o = opposite(h, m_tm);
+      const std::size_t i = m_idx->source_index(h), j = m_idx->target_index(h);
+      for(int a = 0; a < c.d; ++a)
+      {
+        const int b = a + c.matching[e];
+        if(m_convention == One_form_convention::projected)
+        {
+          const Eigen::Vector3d d = internal::position(m_vpm, m_idx->vertex(j)) - internal::position(m_vpm, m_idx->vertex(i));
+          m_omega[e][a] = 0.5 * nu * (sheet_vector(i, a) + sheet_vector(j, b)).dot(d);
+        }
+        else
+          m_omega[e][a] = 0.5 * nu * m_length[e] *
+                          (std::cos(sheet_angle(i, a) - frames.angle[m_idx->index(h)]) -
+                           std::cos(sheet_angle(j, b) - frames.angle[m_idx->index(o)]));
+      }
+    }
+  }
+
+  // The walk around face f: beta[0..2] at its corners (unwrapped along its first two halfedges),
+  // beta[3] at the first corner again after the third halfedge.
+  std::array<Value, 4> walk(std::size_t f) const
+  {
+    const auto& sol = solution();
+    std::array<Value, 4> beta;
+    const std::size_t v0 = reference_vertex(f);
+    beta[0] = sol.alpha[v0];
+    Eigen::Matrix2d M = Eigen::Matrix2d::Identity();
+    std::size_t t = 0;
+    for(auto h : halfedges_around_face(halfedge(m_idx->face(f), m_tm), m_tm))
+    {
+      const std::size_t hi = m_idx->index(h);
+      beta[t + 1] = beta[t] + M * m_solver->along(sol.y, hi);
+      M = M * m_solver->transition_along(hi);
+      ++t;
+    }
+    return beta;
+  }
+
+  // The value at the branch point: the fixed point of x -> M x + t, where the walk returns to
+  // the first corner's values transformed by M (the product of the transitions) and shifted by t.
+  Value branch_value(std::size_t f) const
+  {
+    const auto beta = walk(f);
+    Eigen::Matrix2d M = Eigen::Matrix2d::Identity();
+    for(auto h : halfedges_around_face(halfedge(m_idx->face(f), m_tm), m_tm))
+      M = M * m_solver->transition_along(m_idx->index(h));
+    const int d = cover().d;
+    // beta[3] are the values of the sheets M maps to: beta[3] = M alpha_v0 + t
+    const Value t = beta[3] - M * beta[0];
+    const Eigen::MatrixXd A = Eigen::MatrixXd::Identity(d, d) - M.topLeftCorner(d, d);
+    Value c = Value::Zero();
+    c.head(d) = A.fullPivLu().solve(Eigen::VectorXd(t.head(d)));
+    return c;
+  }
+
+  const TriangleMesh& m_tm;
+  VertexPointMap m_vpm;
+  SolverTraits m_traits;
+  int m_n = 2;
+  bool m_uniform = false;
+  std::shared_ptr<const Indices> m_idx;
+  std::shared_ptr<const internal::Topology> m_topology;
+  internal::Discrete_connection m_connection;
+  std::vector<double> m_cot, m_length, m_vertex_area;
+  std::vector<bool> m_face_boundary;
+
+  std::unique_ptr<Solver> m_solver;
+  One_form_convention m_convention = One_form_convention::projected;
+  double m_frequency = 1.;
+  std::vector<Value> m_omega;
+  std::vector<Eigen::Vector2i> m_index;
+  std::optional<std::vector<Eigen::Vector2i>> m_relaxation;
+
+  std::size_t m_factorizations = 0;
+  bool m_solved = false;
+  typename Solver::Solution m_solution;
+};
+
+/// Deduces the point map and solver types from the named parameters.
+template <class TriangleMesh, class NamedParameters>
+Branched_stripe_parameterizer(const TriangleMesh&, const NamedParameters&)
+  -> Branched_stripe_parameterizer<TriangleMesh, internal::Const_vertex_point_map_t<TriangleMesh, NamedParameters>,
+                                   internal::Solver_traits_t<NamedParameters>>;
+template <class TriangleMesh>
+Branched_stripe_parameterizer(const TriangleMesh&) -> Branched_stripe_parameterizer<TriangleMesh>;
+
+} // namespace Surface_design
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_DESIGN_BRANCHED_STRIPE_PARAMETERIZER_H

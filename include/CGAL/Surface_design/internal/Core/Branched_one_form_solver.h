@@ -1,0 +1,553 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The closest periodic 1-form on the branched cover of an n-direction field, solved on the base
+// mesh: the stripe problem of Noma & Kawahara on line fields (n = 2) and cross fields (n = 4).
+
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_BRANCHED_ONE_FORM_SOLVER_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_CORE_BRANCHED_ONE_FORM_SOLVER_H
+
+#include <CGAL/Surface_design/exceptions.h>
+#include <CGAL/Surface_design/internal/Core/angles.h>
+#include <CGAL/Surface_design/internal/Core/direction_field_cover.h>
+#include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/topology.h>
+#include <CGAL/Surface_design/internal/Solvers/Factored_system.h>
+#include <CGAL/Surface_design/internal/Solvers/integer_quadratic.h>
+#include <CGAL/Surface_design/internal/Solvers/sparse_types.h>
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_design {
+namespace internal {
+
+/// Solves the stripe problem on the cover of an n-direction field (n = 1, 2, 4), with d values
+/// per vertex (the sheets 0 .. d-1; sheet a + n/2 is the negation of sheet a):
+///
+///   minimize sum_e w_e |y_e - omega_e|^2 over y in (R^d)^E
+///   subject to: y = d_P alpha + 2 pi m for some alpha in (R^d)^V and m in (Z^d)^E, and the
+///   twisted curl of y is 2 pi k_f in every regular face f,
+///
+/// where (d_P alpha)_e = P_e alpha_j - alpha_i along e = (i -> j), P_e the signed permutation of
+/// the sheets along e (`sheet_transition`). The twisted curl of a face starts at the source v0 of
+/// its first halfedge on the face's reference sheets (those of v0's representative):
+/// y(h0) + M1 y(h1) + M2 y(h2), M1 = P(h0), M2 = P(h0) P(h1), and y(h) = -P_e^T y_e on a halfedge
+/// against its edge. Branch faces (the product of the transitions around them is not the
+/// identity) carry no constraint: whatever y does there, the walk around the face returns to
+/// another sheet, and the value at the branch point is fixed by the sheets' symmetry (0 or pi for
+/// a line field).
+///
+/// **How.** With m = 0 on the primal spanning tree (the gauge of the cover makes P = I there), the
+/// feasible y are y* + d_P f + (integer combinations of free directions). y* = 2 pi m* is built
+/// by peeling a dual spanning forest whose roots are the unconstrained nodes (branch faces and
+/// boundary loops); the edges in neither the tree nor the forest are the free integer
+/// directions eta_j (one per edge and sheet), whose windings are chosen to minimize the energy.
+/// f solves L f = d_P^T W (omega - y*) with the twisted Laplacian L = d_P^T W d_P, factored once;
+/// L is definite on a component whose monodromy is non-trivial (no sheet value is invariant), and
+/// is pinned at the root elsewhere (where the problem is the vector field's, with Stokes' theorem).
+/// The weights of branch faces' edges are expected to be dropped by the caller (the energy of a
+/// regular face is then that of a P1 function in a local gauge: L is semi-definite for cotangent
+/// weights too).
+///
+/// **Windings.** g_j = <eta_j, y - omega>_W and Q_jk = <eta_j, xi_k>_W (xi_k = eta_k - d_P phi_k
+/// the harmonic part: y - omega and xi_k are W-orthogonal to d_P of anything), so that the
+/// integer step c minimizes 2 g^T c + c^T Q c; the corrected y is one more back-substitution with
+/// y* + 2 pi sum c_j eta_j. Directions whose harmonic part depends on the earlier ones (the global
+/// shift of alpha by pi makes one of them redundant on a twisted component) are left out.
+template <class TriangleMesh, class SolverTraits>
+class Branched_one_form_solver
+{
+public:
+  using Indices = Mesh_indices<TriangleMesh>;
+  using Value = Eigen::Vector2d; ///< the sheet values of an edge or vertex (second one unused for d = 1)
+  using Face_index = Eigen::Vector2i;
+
+  struct Solution
+  {
+    std::vector<Value> y;     ///< per edge, along its orientation
+    std::vector<Value> alpha; ///< per vertex: y = d_P alpha + 2 pi (integers) on every edge
+    double energy = 0.;
+    std::size_t free_directions = 0, winding_changes = 0;
+  };
+
+  /// \param weight per edge, with the contributions of branch faces already removed
+  Branched_one_form_solver(std::shared_ptr<const Indices> idx, std::shared_ptr<const Topology> topology,
+                           const Direction_field_cover& cover, std::vector<double> weight, SolverTraits traits,
+                           const std::string& name)
+    : m_idx_ptr(std::move(idx)), m_topology_ptr(std::move(topology)), m_idx(*m_idx_ptr), m_topology(*m_topology_ptr), m_cover(cover), m_weight(std::move(weight)), m_system(std::move(traits), name)
+  {
+    const std::size_t ne = m_idx.number_of_edges();
+    m_P.resize(ne);
+    m_ends.resize(ne);
+    for(std::size_t e = 0; e < ne; ++e)
+    {
+      m_P[e] = sheet_transition(m_cover.n, m_cover.matching[e]);
+      m_ends[e] = m_idx.edge_vertices(e);
+    }
+    find_twisted_components();
+    build_forest();
+    factor();
+  }
+
+  int values_per_vertex() const { return m_cover.d; }
+  const Direction_field_cover& cover() const { return m_cover; }
+  const std::vector<double>& weights() const { return m_weight; }
+  const Eigen::Matrix2d& transition(std::size_t e) const { return m_P[e]; }
+  /// Whether connected component c has a non-trivial monodromy (then no Stokes condition holds).
+  bool is_twisted(std::size_t c) const { return m_twisted[c]; }
+  std::size_t number_of_free_directions() const { return m_free.size(); }
+
+  /// The minimizer for `omega` (per edge) and the integer indices `k` (per face, read in regular
+  /// faces only; the faces' reference sheets as in the class documentation).
+  /// \throws Invalid_constraints if, on an untwisted closed component, the indices of a sheet do
+  ///         not sum to 0 (Stokes' theorem)
+  Solution solve(const std::vector<Value>& omega, const std::vector<Face_index>& k)
+  {
+    check_stokes(k);
+    Solution s;
+    std::vector<Value> ystar = particular_solution(k);
+    s.y = optimal_one_form(ystar, omega, &s.alpha);
+    s.free_directions = m_free.size();
+    if(!m_free.empty())
+    {
+      ensure_harmonic_basis();
+      const std::size_t m = m_kept.size();
+      Eigen::VectorXd g = Eigen::VectorXd::Zero(Eigen::Index(m));
+      for(std::size_t j = 0; j < m; ++j)
+        g[Eigen::Index(j)] = sparse_dot(m_eta[m_kept[j]], s.y, &omega);
+      const Eigen::VectorXi c = closest_integer_point(m_reduced, g);
+      bool changed = false;
+      for(std::size_t j = 0; j < m; ++j)
+        if(c[Eigen::Index(j)] != 0)
+        {
+          changed = true;
+          ++s.winding_changes;
+          for(const auto& [e, v] : m_eta[m_kept[j]])
+            ystar[e] += double(c[Eigen::Index(j)]) * v;
+        }
+      if(changed)
+        s.y = optimal_one_form(ystar, omega, &s.alpha);
+    }
+    s.energy = energy(s.y, omega);
+    return s;
+  }
+
+  double energy(const std::vector<Value>& y, const std::vector<Value>& omega) const
+  {
+    double sum = 0.;
+    for(std::size_t e = 0; e < y.size(); ++e)
+      sum += m_weight[e] * (y[e] - omega[e]).head(m_cover.d).squaredNorm();
+    return sum;
+  }
+
+  /// The value of y along halfedge index h (from its source's sheets): y_e along the edge,
+  /// -P_e^T y_e against it.
+  Value along(const std::vector<Value>& y, std::size_t h) const
+  {
+    const auto hd = m_idx.halfedge(h);
+    const std::size_t e = m_idx.edge_index(hd);
+    return m_idx.orientation_sign(hd) > 0 ? y[e] : Value(-(m_P[e].transpose() * y[e]));
+  }
+  /// The transition along halfedge index h.
+  Eigen::Matrix2d transition_along(std::size_t h) const
+  {
+    const auto hd = m_idx.halfedge(h);
+    const std::size_t e = m_idx.edge_index(hd);
+    return m_idx.orientation_sign(hd) > 0 ? m_P[e] : Eigen::Matrix2d(m_P[e].transpose());
+  }
+
+  /// The twisted curl of y around face f, on its reference sheets.
+  Value curl(const std::vector<Value>& y, std::size_t f) const
+  {
+    Value sum = Value::Zero();
+    Eigen::Matrix2d M = Eigen::Matrix2d::Identity();
+    for(auto h : halfedges_around_face(halfedge(m_idx.face(f), m_idx.mesh()), m_idx.mesh()))
+    {
+      const std::size_t hi = m_idx.index(h);
+      sum += M * along(y, hi);
+      M = M * transition_along(hi);
+    }
+    return sum;
+  }
+
+private:
+  // --- topology of the cover
+
+  // A component is twisted when the transport of the sheets around some cycle is not the
+  // identity. With the accumulated transition G_v along the tree, the cycle of a non-tree edge
+  // e = (i -> j) transports by G_i P_e G_j^T.
+  void find_twisted_components()
+  {
+    const Tree_cotree& t = m_topology.tree;
+    std::vector<Eigen::Matrix2d> G(m_idx.number_of_vertices(), Eigen::Matrix2d::Identity());
+    for(std::size_t v : t.vertex_order)
+      if(t.parent_halfedge[v] != npos)
+      {
+        const std::size_t h = t.parent_halfedge[v];
+        G[v] = G[m_idx.source_index(m_idx.halfedge(h))] * transition_along(h);
+      }
+    m_twisted.assign(m_topology.components.size(), false);
+    for(std::size_t e = 0; e < m_P.size(); ++e)
+    {
+      const auto [i, j] = m_ends[e];
+      const Eigen::Matrix2d hol = G[i] * m_P[e] * G[j].transpose();
+      if(!(hol - Eigen::Matrix2d::Identity()).isZero(1e-12))
+        m_twisted[m_topology.components.vertex_component[i]] = true;
+    }
+  }
+
+  // The dual forest: roots are the branch faces and the boundary loops (no closure to meet), and
+  // one face on each closed component without branch faces (its closure follows from the others
+  // by Stokes' theorem when the component is not twisted).
+  void build_forest()
+  {
+    const auto& tm = m_idx.mesh();
+    const Tree_cotree& t = m_topology.tree;
+    const Boundary_loops& loops = m_topology.boundary;
+    const std::size_t nf = m_idx.number_of_faces(), nd = nf + loops.size();
+    std::vector<std::size_t> parent_edge_of(nd, npos);
+    std::vector<bool> reached(nd, false), in_forest(m_idx.number_of_edges(), false);
+    std::vector<std::size_t> order;
+    order.reserve(nd);
+    auto dual_node = [&](std::size_t h) {
+      const auto hd = m_idx.halfedge(h);
+      return m_idx.is_border(hd) ? nf + loops.loop_of_halfedge[h] : m_idx.index(face(hd, tm));
+    };
+    auto grow = [&](std::size_t head) {
+      while(head < order.size())
+      {
+        const std::size_t node = order[head++];
+        auto visit = [&](std::size_t h) {
+          const std::size_t e = m_idx.edge_index(m_idx.halfedge(h));
+          if(t.edge_in_tree[e] || in_forest[e])
+            return;
+          const std::size_t other = dual_node(m_idx.index(opposite(m_idx.halfedge(h), tm)));
+          if(reached[other])
+            return;
+          reached[other] = true;
+          in_forest[e] = true;
+          parent_edge_of[other] = e;
+          order.push_back(other);
+        };
+        if(node < nf)
+          for(auto h : halfedges_around_face(halfedge(m_idx.face(node), tm), tm))
+            visit(m_idx.index(h));
+        else
+          for(std::size_t h : loops.loops[node - nf])
+            visit(h);
+      }
+    };
+    for(std::size_t f = 0; f < nf; ++f)
+      if(!m_cover.regular[f])
+      {
+        reached[f] = true;
+        order.push_back(f);
+      }
+    for(std::size_t l = 0; l < loops.size(); ++l)
+    {
+      reached[nf + l] = true;
+      order.push_back(nf + l);
+    }
+    grow(0);
+    m_stokes_component.assign(m_topology.components.size(), false);
+    for(std::size_t f = 0; f < nf; ++f)
+      if(!reached[f])
+      {
+        const std::size_t c = m_topology.components.face_component[f];
+        if(m_twisted[c])
+          throw Invalid_constraints(
+            "connected component " + std::to_string(c) + " is closed, its field has no singularity, and its sheets "
+            "are exchanged around a loop (a twisted field on a torus): stripes on such a field are not supported; "
+            "give the field a pair of singularities");
+        m_stokes_component[c] = true;
+        reached[f] = true;
+        const std::size_t head = order.size();
+        order.push_back(f);
+        grow(head);
+      }
+
+    // peeling steps, leaves first
+    for(auto it = order.rbegin(); it != order.rend(); ++it)
+    {
+      const std::size_t f = *it;
+      if(parent_edge_of[f] == npos)
+        continue; // a root
+      Peel_step step;
+      step.face = f;
+      step.others_begin = m_peel_others.size();
+      Eigen::Matrix2d M = Eigen::Matrix2d::Identity();
+      for(auto h : halfedges_around_face(halfedge(m_idx.face(f), tm), tm))
+      {
+        const std::size_t hi = m_idx.index(h), e = m_idx.edge_index(h);
+        // the contribution of y_e to the curl: M y_e along the edge, -M P_e^T y_e against it
+        const Eigen::Matrix2d C = m_idx.orientation_sign(h) > 0 ? M : Eigen::Matrix2d(-M * m_P[e].transpose());
+        if(e == parent_edge_of[f])
+        {
+          step.parent = e;
+          step.parent_inverse = C.transpose(); // C is a signed permutation
+        }
+        else
+          m_peel_others.push_back({e, C});
+        M = M * transition_along(hi);
+      }
+      step.others_end = m_peel_others.size();
+      m_peel.push_back(step);
+    }
+    for(std::size_t e = 0; e < in_forest.size(); ++e)
+      if(!t.edge_in_tree[e] && !in_forest[e])
+        for(int a = 0; a < m_cover.d; ++a)
+          m_free.push_back({e, a});
+  }
+
+  // L = d_P^T W d_P on d values per vertex; pinned: the root of every untwisted component, and
+  // vertices whose edges all have weight zero (every face around them branches).
+  void factor()
+  {
+    const int d = m_cover.d;
+    const std::size_t nv = m_idx.number_of_vertices();
+    std::vector<double> diagonal(nv, 0.);
+    for(std::size_t e = 0; e < m_weight.size(); ++e)
+    {
+      diagonal[m_ends[e].first] += std::abs(m_weight[e]);
+      diagonal[m_ends[e].second] += std::abs(m_weight[e]);
+    }
+    m_pinned.assign(nv, false);
+    for(std::size_t v = 0; v < nv; ++v)
+      m_pinned[v] = diagonal[v] == 0.;
+    for(std::size_t c = 0; c < m_twisted.size(); ++c)
+      if(!m_twisted[c])
+        m_pinned[m_topology.components.info[c].root_vertex] = true;
+
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(std::size_t(d * d) * (4 * m_weight.size()) + std::size_t(d) * nv);
+    auto add = [&](std::size_t i, std::size_t j, int a, int b, double value) {
+      if(m_pinned[i] || m_pinned[j])
+        value = 0.; // kept in the pattern
+      entries.emplace_back(Eigen::Index(i * std::size_t(d) + std::size_t(a)),
+                           Eigen::Index(j * std::size_t(d) + std::size_t(b)), value);
+    };
+    for(std::size_t e = 0; e < m_weight.size(); ++e)
+    {
+      const auto [i, j] = m_ends[e];
+      const double w = m_weight[e];
+      for(int a = 0; a < d; ++a)
+        for(int b = 0; b < d; ++b)
+        {
+          const double diag = a == b ? w : 0.;
+          add(i, i, a, b, diag);
+          add(j, j, a, b, diag);
+          add(i, j, a, b, -w * m_P[e](a, b));
+          add(j, i, b, a, -w * m_P[e](a, b));
+        }
+    }
+    for(std::size_t v = 0; v < nv; ++v)
+      if(m_pinned[v])
+        for(int a = 0; a < d; ++a)
+          entries.emplace_back(Eigen::Index(v * std::size_t(d) + std::size_t(a)),
+                               Eigen::Index(v * std::size_t(d) + std::size_t(a)), 1.);
+    const Eigen::Index size = Eigen::Index(nv * std::size_t(d));
+    Sparse_matrix L(size, size);
+    L.setFromTriplets(entries.begin(), entries.end());
+    L.makeCompressed();
+    m_system.factor(std::move(L));
+  }
+
+  void check_stokes(const std::vector<Face_index>& k) const
+  {
+    std::vector<Face_index> sum(m_topology.components.size(), Face_index::Zero());
+    for(std::size_t f = 0; f < k.size(); ++f)
+      if(m_cover.regular[f])
+        sum[m_topology.components.face_component[f]] += k[f];
+    for(std::size_t c = 0; c < sum.size(); ++c)
+      if(m_stokes_component[c] && !sum[c].head(m_cover.d).isZero())
+      {
+        std::ostringstream s;
+        s << "on connected component " << c << " (closed, its field without singularity or twist) the stripe indices"
+          << (m_cover.d == 2 ? " of each of the two stripe families" : "") << " must sum to 0 (Stokes' theorem), got "
+          << sum[c][0];
+        if(m_cover.d == 2)
+          s << " and " << sum[c][1];
+        throw Invalid_constraints(s.str());
+      }
+  }
+
+  // y* = 2 pi m*: the free edges at `free_values` (zero elsewhere off the forest), the forest
+  // edges peeled so that every constrained face gets its curl 2 pi k_f.
+  std::vector<Value> peel(std::vector<Value> y, const std::vector<Face_index>* k) const
+  {
+    for(const Peel_step& step : m_peel)
+    {
+      Value target = Value::Zero();
+      if(k)
+        target = two_pi * (*k)[step.face].template cast<double>();
+      for(std::size_t i = step.others_begin; i < step.others_end; ++i)
+        target -= m_peel_others[i].coefficient * y[m_peel_others[i].edge];
+      y[step.parent] = step.parent_inverse * target;
+      if(m_cover.d == 1)
+        y[step.parent][1] = 0.;
+    }
+    return y;
+  }
+
+  std::vector<Value> particular_solution(const std::vector<Face_index>& k) const
+  {
+    return peel(std::vector<Value>(m_idx.number_of_edges(), Value::Zero()), &k);
+  }
+
+  // y = ystar + d_P f, L f = d_P^T W (omega - ystar), f = 0 at pinned vertices. Since ystar is
+  // 2 pi times integers, f is the stripe angle: y = d_P f (mod 2 pi) on every edge (integrating y
+  // along a tree from 0 would not do on a twisted component, where the root's value matters).
+  std::vector<Value> optimal_one_form(const std::vector<Value>& ystar, const std::vector<Value>& omega,
+                                      std::vector<Value>* potential = nullptr) const
+  {
+    const std::size_t d = std::size_t(m_cover.d), ne = ystar.size();
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(Eigen::Index(m_pinned.size() * d));
+    for(std::size_t e = 0; e < ne; ++e)
+    {
+      const Value x = m_weight[e] * (omega[e] - ystar[e]);
+      const Value xj = m_P[e].transpose() * x;
+      for(std::size_t a = 0; a < d; ++a)
+      {
+        b[Eigen::Index(m_ends[e].first * d + a)] -= x[Eigen::Index(a)];
+        b[Eigen::Index(m_ends[e].second * d + a)] += xj[Eigen::Index(a)];
+      }
+    }
+    for(std::size_t v = 0; v < m_pinned.size(); ++v)
+      if(m_pinned[v])
+        for(std::size_t a = 0; a < d; ++a)
+          b[Eigen::Index(v * d + a)] = 0.;
+    const Eigen::VectorXd f = m_system.solve(b);
+    auto value = [&](std::size_t v) {
+      Value x = Value::Zero();
+      for(std::size_t a = 0; a < d; ++a)
+        x[Eigen::Index(a)] = f[Eigen::Index(v * d + a)];
+      return x;
+    };
+    std::vector<Value> y(ne);
+    for(std::size_t e = 0; e < ne; ++e)
+      y[e] = ystar[e] + m_P[e] * value(m_ends[e].second) - value(m_ends[e].first);
+    if(potential)
+    {
+      potential->resize(m_pinned.size());
+      for(std::size_t v = 0; v < m_pinned.size(); ++v)
+        (*potential)[v] = value(v);
+    }
+    return y;
+  }
+
+  using Sparse_form = std::vector<std::pair<std::size_t, Value>>;
+
+  // <eta, y - omega>_W (or <eta, y>_W without omega)
+  double sparse_dot(const Sparse_form& eta, const std::vector<Value>& y, const std::vector<Value>* omega) const
+  {
+    double s = 0.;
+    for(const auto& [e, v] : eta)
+      s += m_weight[e] * v.dot(omega ? Value(y[e] - (*omega)[e]) : y[e]);
+    return s;
+  }
+
+  // The free directions eta_j (sparse), their Gram matrix through the harmonic parts, and the
+  // subset whose harmonic parts are independent (incremental Cholesky with a relative threshold).
+  void ensure_harmonic_basis()
+  {
+    if(!m_eta.empty())
+      return;
+    const std::size_t m = m_free.size(), ne = m_idx.number_of_edges();
+    m_eta.resize(m);
+    for(std::size_t j = 0; j < m; ++j)
+    {
+      std::vector<Value> y(ne, Value::Zero());
+      y[m_free[j].edge][m_free[j].sheet] = two_pi;
+      y = peel(std::move(y), nullptr);
+      for(std::size_t e = 0; e < ne; ++e)
+        if(!y[e].isZero())
+          m_eta[j].emplace_back(e, y[e]);
+    }
+    const std::vector<Value> zero(ne, Value::Zero());
+    Eigen::MatrixXd full = Eigen::MatrixXd::Zero(Eigen::Index(m), Eigen::Index(m));
+    for(std::size_t k = 0; k < m; ++k)
+    {
+      std::vector<Value> eta(ne, Value::Zero());
+      for(const auto& [e, v] : m_eta[k])
+        eta[e] = v;
+      const std::vector<Value> xi = optimal_one_form(eta, zero, nullptr);
+      for(std::size_t j = 0; j < m; ++j)
+        full(Eigen::Index(j), Eigen::Index(k)) = sparse_dot(m_eta[j], xi, nullptr);
+    }
+    full = 0.5 * (full + full.transpose()).eval();
+    // keep j when its harmonic part is not (numerically) in the span of the kept ones
+    Eigen::MatrixXd chol = Eigen::MatrixXd::Zero(Eigen::Index(m), Eigen::Index(m));
+    for(std::size_t j = 0; j < m; ++j)
+    {
+      const Eigen::Index r = Eigen::Index(m_kept.size());
+      Eigen::VectorXd q = Eigen::VectorXd::Zero(r);
+      for(Eigen::Index i = 0; i < r; ++i)
+        q[i] = full(Eigen::Index(m_kept[std::size_t(i)]), Eigen::Index(j));
+      const Eigen::VectorXd z =
+        r > 0 ? Eigen::VectorXd(chol.topLeftCorner(r, r).triangularView<Eigen::Lower>().solve(q)) : q;
+      const double diag = full(Eigen::Index(j), Eigen::Index(j));
+      const double rest = diag - z.squaredNorm();
+      if(!(diag > 0.) || !(rest > 1e-9 * diag))
+        continue;
+      chol.row(r).head(r) = z.transpose();
+      chol(r, r) = std::sqrt(rest);
+      m_kept.push_back(j);
+    }
+    const Eigen::Index mk = Eigen::Index(m_kept.size());
+    m_Q.resize(mk, mk);
+    for(Eigen::Index i = 0; i < mk; ++i)
+      for(Eigen::Index j = 0; j < mk; ++j)
+        m_Q(i, j) = full(Eigen::Index(m_kept[std::size_t(i)]), Eigen::Index(m_kept[std::size_t(j)]));
+    m_reduced = reduce_integer_quadratic(m_Q);
+  }
+
+  struct Free_direction
+  {
+    std::size_t edge;
+    int sheet;
+  };
+  struct Peel_other
+  {
+    std::size_t edge;
+    Eigen::Matrix2d coefficient;
+  };
+  struct Peel_step
+  {
+    std::size_t face = 0, parent = 0;
+    Eigen::Matrix2d parent_inverse;
+    std::size_t others_begin = 0, others_end = 0;
+  };
+
+  std::shared_ptr<const Indices> m_idx_ptr;
+  std::shared_ptr<const Topology> m_topology_ptr;
+  const Indices& m_idx;
+  const Topology& m_topology;
+  Direction_field_cover m_cover;
+  std::vector<double> m_weight;
+  mutable Factored_system<SolverTraits> m_system;
+  std::vector<Eigen::Matrix2d> m_P;
+  std::vector<std::pair<std::size_t, std::size_t>> m_ends;
+  std::vector<bool> m_twisted, m_stokes_component, m_pinned;
+  std::vector<Peel_step> m_peel;
+  std::vector<Peel_other> m_peel_others;
+  std::vector<Free_direction> m_free;
+  std::vector<Sparse_form> m_eta;
+  std::vector<std::size_t> m_kept;
+  Eigen::MatrixXd m_Q;
+  Reduced_integer_quadratic m_reduced;
+};
+
+} // namespace internal
+} // namespace Surface_design
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_CORE_BRANCHED_ONE_FORM_SOLVER_H

@@ -1,0 +1,680 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Stripes on line and cross fields: exact prescribed singularities read back independently,
+// continuity across every edge, the cover (Riemann-Hurwitz), branch-point values, analytic cases,
+// the vector case unchanged, automatic singularities, factor once, bad input.
+
+#include <test_support.h>
+
+#include <CGAL/Surface_design/Branched_stripe_parameterizer.h>
+#include <CGAL/Surface_design/direction_fields.h>
+#include <CGAL/Surface_design/Field_aligned_parameterizer.h>
+#include <CGAL/Surface_design/mesh_generators.h>
+
+#include <CGAL/Bbox_3.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <boost/property_map/function_property_map.hpp>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <numeric>
+#include <set>
+
+namespace SD = CGAL::Surface_design;
+namespace SDI = CGAL::Surface_design::internal;
+
+namespace {
+
+using SDI::pi;
+using SDI::two_pi;
+using test::Vpm;
+template <class Mesh, class Solver = SD::Default_solver_traits>
+using Bsp = SD::Branched_stripe_parameterizer<Mesh, Vpm<Mesh>, Solver>;
+template <class Mesh>
+using Vector_of = typename CGAL::Kernel_traits<typename boost::property_traits<Vpm<Mesh>>::value_type>::Kernel::Vector_3;
+
+template <class Mesh>
+using Face = typename boost::graph_traits<Mesh>::face_descriptor;
+template <class Mesh>
+using Vertex = typename boost::graph_traits<Mesh>::vertex_descriptor;
+
+// A tube or an annulus as a polar grid: ring i (of nr + 1) at parameter i / nr, nt segments
+// around, the quads split along alternating diagonals. `place(s, theta)` gives the point.
+template <class Mesh>
+Mesh polar_grid(std::size_t nr, std::size_t nt, const std::function<std::array<double, 3>(double, double)>& place)
+{
+  test::Soup_points points;
+  test::Soup_triangles triangles;
+  for(std::size_t i = 0; i <= nr; ++i)
+    for(std::size_t j = 0; j < nt; ++j)
+      points.push_back(place(double(i) / double(nr), two_pi * double(j) / double(nt)));
+  auto id = [nt](std::size_t i, std::size_t j) { return i * nt + j % nt; };
+  for(std::size_t i = 0; i < nr; ++i)
+    for(std::size_t j = 0; j < nt; ++j)
+      if((i + j) % 2 == 0)
+      {
+        triangles.push_back({id(i, j), id(i, j + 1), id(i + 1, j + 1)});
+        triangles.push_back({id(i, j), id(i + 1, j + 1), id(i + 1, j)});
+      }
+      else
+      {
+        triangles.push_back({id(i, j), id(i, j + 1), id(i + 1, j)});
+        triangles.push_back({id(i, j + 1), id(i + 1, j + 1), id(i + 1, j)});
+      }
+  return test::from_soup<Mesh>(points, triangles);
+}
+
+template <class Mesh>
+Mesh make_case(const std::string& name)
+{
+  Mesh mesh;
+  if(name == "torus")
+    SD::make_torus(mesh, 36, 12, 1., 0.35, true);
+  else if(name == "sphere")
+    SD::make_sphere(mesh, 8);
+  else
+    mesh = test::load_mesh<Mesh>(name);
+  return mesh;
+}
+
+template <class Mesh>
+double diagonal(const Mesh& mesh)
+{
+  CGAL::Bbox_3 box;
+  for(auto v : vertices(mesh))
+    box += get(CGAL::vertex_point, mesh, v).bbox();
+  return std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                   CGAL::square(box.zmax() - box.zmin()));
+}
+
+template <class Mesh>
+std::vector<Vector_of<Mesh>> smoothest(const Mesh& mesh, int n)
+{
+  const SDI::Mesh_indices<Mesh> idx(mesh);
+  std::vector<Vector_of<Mesh>> by_index(num_vertices(mesh));
+  std::map<Vertex<Mesh>, Vector_of<Mesh>> map;
+  SD::smoothest_direction_field(mesh, boost::make_assoc_property_map(map), SD::parameters::symmetry_order(n));
+  for(std::size_t v = 0; v < idx.number_of_vertices(); ++v)
+    by_index[v] = map.at(idx.vertex(v));
+  return by_index;
+}
+
+// The field as a vertex -> vector map over the mesh's own vertex descriptors.
+template <class Mesh>
+auto field_map(const Mesh& mesh, const std::vector<Vector_of<Mesh>>& by_index)
+{
+  auto idx = std::make_shared<SDI::Mesh_indices<Mesh>>(mesh);
+  return boost::make_function_property_map<Vertex<Mesh>>(
+    [idx, &by_index](Vertex<Mesh> v) { return by_index[idx->index(v)]; });
+}
+
+// --- the independent readings of a pattern, from `value(f, b, family)` alone
+
+using Value_function = std::function<double(std::size_t face, const std::array<double, 3>& b, int family)>;
+
+// The barycentric coordinates, in the corner order source(h), target(h), target(next(h)) of
+// h = halfedge(f), of the point at parameter t from vertex a to vertex b of f.
+template <class Mesh>
+std::array<double, 3> on_edge(const Mesh& mesh, Face<Mesh> f, Vertex<Mesh> a, Vertex<Mesh> b, double t)
+{
+  const auto h = halfedge(f, mesh);
+  const Vertex<Mesh> corner[3] = {source(h, mesh), target(h, mesh), target(next(h, mesh), mesh)};
+  std::array<double, 3> out{0., 0., 0.};
+  for(int i = 0; i < 3; ++i)
+  {
+    if(corner[i] == a)
+      out[std::size_t(i)] += 1. - t;
+    if(corner[i] == b)
+      out[std::size_t(i)] += t;
+  }
+  return out;
+}
+
+// The winding of the pattern around face f: the sum of the wrapped steps of its value along a
+// dense walk around the face's boundary, over 2 pi. Returns the winding and the distance of the
+// sum to the nearest multiple of 2 pi.
+inline std::pair<int, double> winding_around(const Value_function& value, std::size_t f, int family)
+{
+  const int samples = 24;
+  double sum = 0., previous = value(f, {1., 0., 0.}, family);
+  for(int edge = 0; edge < 3; ++edge)
+    for(int s = 1; s <= samples; ++s)
+    {
+      std::array<double, 3> b{0., 0., 0.};
+      const double t = double(s) / samples;
+      b[std::size_t(edge)] = 1. - t;
+      b[std::size_t((edge + 1) % 3)] = t;
+      const double current = value(f, b, family);
+      sum += SDI::wrap_angle(current - previous);
+      previous = current;
+    }
+  const double k = std::round(sum / two_pi);
+  return {int(k), std::abs(sum - two_pi * k)};
+}
+
+// The largest jump of the pattern across an interior edge: values sampled inside the edge from
+// both faces, compared up to the symmetry of the field (sign for a line field, a quarter turn of
+// the two families for a cross field) and 2 pi.
+template <class Mesh>
+double largest_jump(const Mesh& mesh, const SDI::Mesh_indices<Mesh>& idx, const Value_function& value, int families)
+{
+  double worst = 0.;
+  for(auto e : edges(mesh))
+  {
+    const auto h = halfedge(e, mesh);
+    if(is_border_edge(h, mesh))
+      continue;
+    const Face<Mesh> f = face(h, mesh), g = face(opposite(h, mesh), mesh);
+    const std::size_t fi = idx.index(f), gi = idx.index(g);
+    const Vertex<Mesh> a = source(h, mesh), b = target(h, mesh);
+    std::vector<std::array<double, 2>> from_f, from_g;
+    for(int s = 0; s < 5; ++s)
+    {
+      const double t = 0.1 + 0.2 * s;
+      std::array<double, 2> x{0., 0.}, y{0., 0.};
+      for(int c = 0; c < families; ++c)
+      {
+        x[std::size_t(c)] = value(fi, on_edge(mesh, f, a, b, t), c);
+        y[std::size_t(c)] = value(gi, on_edge(mesh, g, a, b, t), c);
+      }
+      from_f.push_back(x);
+      from_g.push_back(y);
+    }
+    // the symmetries: (u, v) -> (u, v), (v, -u), (-u, -v), (-v, u); for one family: u -> +-u
+    double best = 1e300;
+    for(int r = 0; r < 4; ++r)
+    {
+      if(families == 1 && r % 2 == 1)
+        continue;
+      double dev = 0.;
+      std::array<double, 2> offset{0., 0.};
+      for(std::size_t s = 0; s < from_f.size(); ++s)
+      {
+        const std::array<double, 2> y = from_g[s];
+        std::array<double, 2> q = r == 0 ? y : r == 1 ? std::array<double, 2>{y[1], -y[0]}
+                                             : r == 2 ? std::array<double, 2>{-y[0], -y[1]}
+                                                      : std::array<double, 2>{-y[1], y[0]};
+        for(int c = 0; c < families; ++c)
+        {
+          const double d = from_f[s][std::size_t(c)] - q[std::size_t(c)];
+          if(s == 0)
+            offset[std::size_t(c)] = two_pi * std::round(d / two_pi);
+          dev = (std::max)(dev, std::abs(d - offset[std::size_t(c)]));
+        }
+      }
+      best = (std::min)(best, dev);
+    }
+    worst = (std::max)(worst, best);
+  }
+  return worst;
+}
+
+template <class Parameterizer>
+Value_function value_of(const Parameterizer& p)
+{
+  return [&p](std::size_t f, const std::array<double, 3>& b, int family) {
+    return p.value(p.indices().face(f), b, family);
+  };
+}
+
+// Regular faces with no vertex on the boundary, spread over the mesh, at least `gap` faces apart
+// in index order, not next to a branch face.
+template <class Parameterizer>
+std::vector<std::size_t> free_faces(const Parameterizer& p, std::size_t count)
+{
+  const auto& idx = p.indices();
+  const auto& tm = idx.mesh();
+  std::vector<bool> near_branch(idx.number_of_faces(), false);
+  for(std::size_t f : p.branch_faces())
+    for(auto h : halfedges_around_face(halfedge(idx.face(f), tm), tm))
+      for(auto g : faces_around_target(h, tm))
+        if(g != boost::graph_traits<typename std::decay_t<decltype(tm)>>::null_face())
+          near_branch[idx.index(g)] = true;
+  std::vector<std::size_t> out;
+  const std::size_t nf = idx.number_of_faces();
+  for(std::size_t i = 0; i < nf && out.size() < count; ++i)
+  {
+    const std::size_t f = (i * 7919 + nf / 3) % nf;
+    bool boundary = false;
+    for(auto h : halfedges_around_face(halfedge(idx.face(f), tm), tm))
+      boundary = boundary || is_border(opposite(h, tm), tm) || is_border(h, tm) ||
+                 bool(CGAL::is_border(target(h, tm), tm));
+    if(boundary || near_branch[f])
+      continue;
+    bool spread = true;
+    for(std::size_t g : out)
+      spread = spread && (g > f ? g - f : f - g) > nf / (2 * count + 2);
+    if(spread)
+      out.push_back(f);
+  }
+  return out;
+}
+
+// Everything the pattern promises, read independently: the winding around every regular face
+// is the prescribed index (0 almost everywhere), the values do not jump across any edge, and the
+// branch points sit at the symmetric values.
+template <class Parameterizer>
+void check_pattern(const Parameterizer& p)
+{
+  const auto& idx = p.indices();
+  const auto& tm = idx.mesh();
+  const Value_function value = value_of(p);
+  const int families = p.number_of_families();
+  std::size_t singular = 0;
+  for(std::size_t f = 0; f < idx.number_of_faces(); ++f)
+  {
+    const auto fd = idx.face(f);
+    if(p.is_branch_face(fd))
+    {
+      const auto c = p.branch_point_value(fd);
+      const int quarter = ((p.field_index_numerator(fd) % 4) + 4) % 2; // odd numerator of a cross field
+      for(int a = 0; a < families; ++a)
+      {
+        INFO("branch face " << f << " family " << a << " value " << c[std::size_t(a)]);
+        REQUIRE(std::abs(SDI::wrap_angle(2. * c[std::size_t(a)])) < 1e-9); // 0 or pi
+      }
+      if(families == 2 && quarter == 1) // a quarter turn: (0, 0) or (pi, pi)
+        REQUIRE(std::abs(SDI::wrap_angle(c[0] - c[1])) < 1e-9);
+      continue;
+    }
+    for(int a = 0; a < families; ++a)
+    {
+      const auto [k, residual] = winding_around(value, f, a);
+      INFO("face " << f << " family " << a);
+      REQUIRE(residual < 1e-8);
+      REQUIRE(k == p.index(fd, a));
+      REQUIRE(k == p.stripe_index(fd, a));
+      singular += k != 0 ? 1 : 0;
+    }
+  }
+  std::size_t prescribed = 0;
+  for(std::size_t f : p.singular_faces())
+    for(int a = 0; a < families; ++a)
+      prescribed += p.index(idx.face(f), a) != 0 ? 1 : 0;
+  REQUIRE(singular == prescribed);
+  REQUIRE(largest_jump(tm, idx, value, families) < 1e-9);
+}
+
+} // namespace
+
+TEMPLATE_TEST_CASE("Line and cross field stripes: exactly the prescribed singularities, continuous elsewhere",
+                   "[branched_stripes]", SD_MESH_TYPES)
+{
+  // genus 0, 1, 2, a disk, an obtuse scan
+  for(const std::string name : {"sphere", "torus", "eight.off", "hemisphere.off", "bunny_1k.off"})
+    for(int n : {2, 4})
+    {
+      INFO(name << ", n = " << n);
+      const TestType mesh = make_case<TestType>(name);
+      const test::Mesh_snapshot before(mesh);
+      const auto field = smoothest(mesh, n);
+      Bsp<TestType> p(mesh, SD::parameters::symmetry_order(n));
+      REQUIRE(p.number_of_families() == (n == 4 ? 2 : 1));
+      p.set_field(field_map(mesh, field), 12. / diagonal(mesh));
+      p.solve();
+      check_pattern(p); // no singularity prescribed: none anywhere
+      // pairs of opposite indices (a closed component without twist needs the sum 0)
+      const std::vector<std::size_t> faces_ = free_faces(p, 4);
+      REQUIRE(faces_.size() == 4);
+      p.set_index(faces_[0], 1);
+      p.set_index(faces_[1], -1);
+      p.set_index(faces_[2], 2, n == 4 ? 1 : 0);
+      p.set_index(faces_[3], -2, n == 4 ? 1 : 0);
+      p.solve();
+      check_pattern(p);
+      REQUIRE(test::Mesh_snapshot(mesh) == before);
+    }
+}
+
+TEMPLATE_TEST_CASE("The cover is a closed surface and obeys Riemann-Hurwitz", "[branched_stripes]", SD_MESH_TYPES)
+{
+  for(const std::string name : {"torus", "eight.off", "hemisphere.off"})
+    for(int n : {2, 4})
+    {
+      INFO(name << ", n = " << n);
+      const TestType mesh = make_case<TestType>(name);
+      const auto field = smoothest(mesh, n);
+      Bsp<TestType> p(mesh, SD::parameters::symmetry_order(n));
+      p.set_field(field_map(mesh, field), 5. / diagonal(mesh));
+      const auto& idx = p.indices();
+      const auto& cover = p.cover();
+      // the field's indices, from the direction-field package (an independent reading)
+      std::map<Face<TestType>, int> numerator;
+      SD::direction_field_singularities(mesh, field_map(mesh, field), boost::make_assoc_property_map(numerator),
+                                        SD::parameters::symmetry_order(n));
+      long index_sum = 0;
+      std::size_t branch = 0;
+      for(std::size_t f = 0; f < idx.number_of_faces(); ++f)
+      {
+        const int k = numerator.at(idx.face(f));
+        index_sum += k;
+        REQUIRE(cover.index_numerator[f] == k);
+        // regular exactly when the transitions around the face compose to the identity
+        Eigen::Matrix2d M = Eigen::Matrix2d::Identity();
+        for(auto h : halfedges_around_face(halfedge(idx.face(f), mesh), mesh))
+          M = M * p.solver().transition_along(idx.index(h));
+        REQUIRE(M.isIdentity(0.) == (((k % n) + n) % n == 0));
+        REQUIRE(cover.regular[f] == M.isIdentity(0.));
+        branch += cover.regular[f] ? 0 : 1;
+      }
+      const long chi = long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh));
+      if(name != "hemisphere.off")
+        REQUIRE(index_sum == n * chi); // Poincare-Hopf
+      // the explicit cover: n sheets per vertex, regular faces lifted n times, branch faces split
+      // at the centroid, whose preimages are the orbits of the face's total matching R
+      const std::size_t nv = idx.number_of_vertices();
+      std::vector<std::array<std::size_t, 3>> triangles;
+      std::size_t next_vertex = nv * std::size_t(n);
+      long ramification = 0;
+      auto matching_along = [&](std::size_t h) {
+        const auto hd = idx.halfedge(h);
+        const int r = cover.matching[idx.edge_index(hd)];
+        return idx.orientation_sign(hd) > 0 ? r : (n - r) % n;
+      };
+      for(std::size_t f = 0; f < idx.number_of_faces(); ++f)
+      {
+        std::array<std::size_t, 3> v, r;
+        std::size_t t = 0;
+        for(auto h : halfedges_around_face(halfedge(idx.face(f), mesh), mesh))
+        {
+          v[t] = idx.source_index(h);
+          r[t++] = std::size_t(matching_along(idx.index(h)));
+        }
+        const std::size_t R = (r[0] + r[1] + r[2]) % std::size_t(n);
+        std::vector<std::size_t> centre(static_cast<std::size_t>(n), 0);
+        if(R != 0)
+        {
+          const std::size_t preimages = std::size_t(std::gcd(int(R), n));
+          ramification += n - long(preimages);
+          for(std::size_t s = 0; s < std::size_t(n); ++s)
+            centre[s] = next_vertex + s % preimages; // s and s + R share the point
+          next_vertex += preimages;
+        }
+        for(std::size_t s = 0; s < std::size_t(n); ++s)
+        {
+          const std::size_t s1 = (s + r[0]) % std::size_t(n), s2 = (s1 + r[1]) % std::size_t(n),
+                            s3 = (s2 + r[2]) % std::size_t(n);
+          const std::size_t a = v[0] * std::size_t(n) + s, b = v[1] * std::size_t(n) + s1,
+                            c = v[2] * std::size_t(n) + s2, a3 = v[0] * std::size_t(n) + s3;
+          if(R == 0)
+            triangles.push_back({a, b, c});
+          else
+          {
+            triangles.push_back({a, b, centre[s]});
+            triangles.push_back({b, c, centre[s]});
+            triangles.push_back({c, a3, centre[s]});
+          }
+        }
+      }
+      // every lifted interior edge bounds two lifted triangles, once each way
+      std::map<std::pair<std::size_t, std::size_t>, int> uses;
+      for(const auto& t : triangles)
+        for(int i = 0; i < 3; ++i)
+          ++uses[{t[std::size_t(i)], t[std::size_t((i + 1) % 3)]}];
+      std::size_t border_uses = 0;
+      for(const auto& [edge, count] : uses)
+      {
+        REQUIRE(count == 1);
+        if(!uses.count({edge.second, edge.first}))
+          ++border_uses;
+      }
+      std::size_t border_edges = 0;
+      for(auto h : halfedges(mesh))
+        border_edges += is_border(h, mesh) ? 1 : 0;
+      REQUIRE(border_uses == border_edges * std::size_t(n));
+      const long cover_chi = long(next_vertex) - long((uses.size() + border_uses) / 2) + long(triangles.size());
+      REQUIRE(cover_chi == n * chi - ramification); // Riemann-Hurwitz
+      REQUIRE(branch == p.branch_faces().size());
+      if(n == 2 && name != "hemisphere.off")
+        REQUIRE(branch % 2 == 0); // the cover's genus 2g - 1 + B/2 is an integer
+    }
+}
+
+TEMPLATE_TEST_CASE("n = 1 gives the vector field stripes of Field_aligned_parameterizer", "[branched_stripes]",
+                   SD_MESH_TYPES)
+{
+  for(const std::string name : {"torus", "eight.off", "hemisphere.off"})
+  {
+    INFO(name);
+    const TestType mesh = make_case<TestType>(name);
+    const auto field = smoothest(mesh, 1);
+    const double frequency = 15. / diagonal(mesh);
+    Bsp<TestType> p(mesh, SD::parameters::symmetry_order(1));
+    p.set_field(field_map(mesh, field), frequency);
+    const std::size_t count = p.place_automatic_singularities();
+    INFO(count << " automatic singularities");
+    SD::Field_aligned_parameterizer<TestType, Vpm<TestType>> fap(mesh);
+    fap.set_field(field_map(mesh, field), frequency);
+    for(std::size_t f : p.singular_faces())
+      fap.set_index(f, p.index(p.indices().face(f)));
+    p.solve();
+    fap.solve();
+    check_pattern(p);
+    REQUIRE(std::abs(p.energy() - fap.energy()) <= 1e-9 * (1. + fap.energy()));
+    for(std::size_t e = 0; e < fap.one_form().size(); ++e)
+      REQUIRE(std::abs(p.one_form()[e][0] - fap.one_form()[e]) <= 1e-9 * (1. + std::abs(fap.one_form()[e])));
+  }
+}
+
+TEST_CASE("Analytic: a cylinder's rings and a flat annulus around a +1/2 line-field singularity",
+          "[branched_stripes]")
+{
+  using Mesh = test::Surface_mesh;
+  const double R = 1.;
+  const Mesh tube = polar_grid<Mesh>(12, 48, [R](double s, double t) {
+    return std::array<double, 3>{R * std::cos(t), R * std::sin(t), 2. * s};
+  });
+  // rings: a line field along the axis, integrable: the stripes are alpha = 2 pi nu z exactly
+  {
+    const std::vector<Vector_of<Mesh>> axis(num_vertices(tube), Vector_of<Mesh>(0., 0., 1.));
+    Bsp<Mesh> p(tube, SD::parameters::symmetry_order(2));
+    p.set_field(field_map(tube, axis), 1.3);
+    p.solve();
+    REQUIRE(p.branch_faces().empty());
+    REQUIRE(p.energy() < 1e-20);
+    check_pattern(p);
+  }
+  // around: a circumferential line field at 2.3 stripes per unit length wants 2.3 * 2 pi R
+  // = 14.45 stripes around; the pattern takes 14 (integer), alpha = 14 theta
+  {
+    std::vector<Vector_of<Mesh>> around;
+    for(auto v : vertices(tube))
+    {
+      const auto q = tube.point(v);
+      around.emplace_back(-q.y(), q.x(), 0.);
+    }
+    for(int n : {2, 4})
+    {
+      Bsp<Mesh> p(tube, SD::parameters::symmetry_order(n));
+      p.set_field(field_map(tube, around), 2.3);
+      p.solve();
+      check_pattern(p);
+      // the turn of the stripe angle along a ring
+      const auto& idx = p.indices();
+      double turn = 0.;
+      for(std::size_t j = 0; j < 48; ++j)
+      {
+        const auto a = Vertex<Mesh>(std::uint32_t(j)), b = Vertex<Mesh>(std::uint32_t((j + 1) % 48));
+        const auto h = halfedge(a, b, tube).first;
+        const std::size_t e = idx.edge_index(h);
+        turn += idx.orientation_sign(h) * p.one_form()[e][0];
+      }
+      REQUIRE(std::abs(std::abs(turn) - 14. * two_pi) < 1e-9);
+    }
+  }
+  // the annulus 0.3 <= r <= 1 around a +1/2 line field: the sheets exchange around the hole
+  const Mesh annulus = polar_grid<Mesh>(14, 64, [](double s, double t) {
+    const double r = 0.3 + 0.7 * s;
+    return std::array<double, 3>{r * std::cos(t), r * std::sin(t), 0.};
+  });
+  std::vector<Vector_of<Mesh>> half;
+  for(auto v : vertices(annulus))
+  {
+    const auto q = annulus.point(v);
+    const double theta = std::atan2(q.y(), q.x());
+    half.emplace_back(std::cos(theta / 2.), std::sin(theta / 2.), 0.);
+  }
+  Bsp<Mesh> p(annulus, SD::parameters::symmetry_order(2));
+  p.set_field(field_map(annulus, half), 4.);
+  REQUIRE(p.branch_faces().empty());
+  REQUIRE(p.solver().is_twisted(0));
+  p.solve();
+  check_pattern(p);
+  // isolines perpendicular to the field: the gradient of alpha along it (the convention)
+  const auto& idx = p.indices();
+  double aligned = 0., area = 0.;
+  for(auto f : faces(annulus))
+  {
+    const auto c = p.corner_values(f);
+    const auto h = halfedge(f, annulus);
+    const auto p0 = annulus.point(source(h, annulus)), p1 = annulus.point(target(h, annulus)),
+               p2 = annulus.point(target(next(h, annulus), annulus));
+    // the gradient of the linear function with values c at p0, p1, p2 (in the plane z = 0)
+    const double x1 = p1.x() - p0.x(), y1 = p1.y() - p0.y(), x2 = p2.x() - p0.x(), y2 = p2.y() - p0.y();
+    const double det = x1 * y2 - x2 * y1;
+    const double gx = ((c[1] - c[0]) * y2 - (c[2] - c[0]) * y1) / det;
+    const double gy = (x1 * (c[2] - c[0]) - x2 * (c[1] - c[0])) / det;
+    const auto d = p.field_direction(f);
+    const double cosine = std::abs(gx * d.x() + gy * d.y()) / std::hypot(gx, gy);
+    aligned += std::abs(det) * cosine;
+    area += std::abs(det);
+  }
+  (void)idx;
+  REQUIRE(aligned / area > 0.97);
+}
+
+TEMPLATE_TEST_CASE("Automatic singularities: where the energy wants them, then exact", "[branched_stripes]",
+                   SD_MESH_TYPES)
+{
+  const TestType mesh = make_case<TestType>("bunny_1k.off");
+  for(int n : {2, 4})
+  {
+    INFO("n = " << n);
+    const auto field = smoothest(mesh, n);
+    Bsp<TestType> p(mesh, SD::parameters::symmetry_order(n));
+    p.set_field(field_map(mesh, field), 20. / diagonal(mesh));
+    p.solve();
+    const double without = p.energy();
+    const std::size_t count = p.place_automatic_singularities();
+    REQUIRE(count > 0);
+    REQUIRE(count == p.singular_faces().size());
+    p.solve();
+    check_pattern(p);
+    INFO(count << " singularities: energy " << p.energy() << " against " << without << " without");
+    // the pruned candidates never raise the energy; on a line field they lower it a lot
+    REQUIRE(p.energy() <= without);
+    if(n == 2)
+      REQUIRE(p.energy() < 0.5 * without);
+    for(std::size_t f : p.singular_faces())
+      REQUIRE_FALSE(p.is_branch_face(p.indices().face(f)));
+  }
+}
+
+TEST_CASE("Edits are back-substitutions and equal a fresh solve; both solvers agree", "[branched_stripes]")
+{
+  using Mesh = test::Surface_mesh;
+  const Mesh mesh = make_case<Mesh>("eight.off");
+  const auto field = smoothest(mesh, 4);
+  const double frequency = 10. / diagonal(mesh);
+  Bsp<Mesh> editor(mesh, SD::parameters::symmetry_order(4));
+  editor.set_field(field_map(mesh, field), frequency);
+  REQUIRE(editor.number_of_factorizations() == 1);
+  editor.solve();
+  const auto faces_ = free_faces(editor, 4);
+  editor.set_index(faces_[0], 1);
+  editor.set_index(faces_[1], -1, 1);
+  editor.solve();
+  editor.move_singularity(editor.indices().face(faces_[0]), editor.indices().face(faces_[2]));
+  editor.set_frequency(1.2 * frequency);
+  editor.solve();
+  REQUIRE(editor.number_of_factorizations() == 1); // the edits were back-substitutions
+  Bsp<Mesh> fresh(mesh, SD::parameters::symmetry_order(4));
+  fresh.set_field(field_map(mesh, field), 1.2 * frequency);
+  fresh.set_index(faces_[2], 1);
+  fresh.set_index(faces_[1], -1, 1);
+  fresh.solve();
+  REQUIRE(std::abs(editor.energy() - fresh.energy()) <= 1e-9 * fresh.energy());
+  for(std::size_t e = 0; e < fresh.one_form().size(); ++e)
+    REQUIRE((editor.one_form()[e] - fresh.one_form()[e]).norm() <= 1e-9 * (1. + fresh.one_form()[e].norm()));
+#if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
+  Bsp<Mesh, SD::Cholmod_solver_traits> other(mesh, SD::parameters::symmetry_order(4));
+  other.set_field(field_map(mesh, field), 1.2 * frequency);
+  other.set_index(faces_[2], 1);
+  other.set_index(faces_[1], -1, 1);
+  other.solve();
+  for(std::size_t e = 0; e < fresh.one_form().size(); ++e)
+    REQUIRE((other.one_form()[e] - fresh.one_form()[e]).norm() <= 1e-8 * (1. + fresh.one_form()[e].norm()));
+#else
+  SD_CHOLMOD_UNAVAILABLE("the comparison of the branched stripes of both solvers");
+#endif
+}
+
+TEST_CASE("The readings catch a broken pattern", "[branched_stripes][oracle]")
+{
+  using Mesh = test::Surface_mesh;
+  const Mesh mesh = make_case<Mesh>("torus");
+  const auto field = smoothest(mesh, 2);
+  Bsp<Mesh> p(mesh, SD::parameters::symmetry_order(2));
+  p.set_field(field_map(mesh, field), 8. / diagonal(mesh));
+  p.solve();
+  const Value_function good = value_of(p);
+  REQUIRE(largest_jump(mesh, p.indices(), good, 1) < 1e-9);
+  // a bump of 0.3 in one face: the jump reading sees it
+  const Value_function bumped = [&](std::size_t f, const std::array<double, 3>& b, int family) {
+    return good(f, b, family) + (f == 17 ? 0.3 * b[0] * b[1] * b[2] * 27. + 0.3 * b[0] : 0.);
+  };
+  REQUIRE(largest_jump(mesh, p.indices(), bumped, 1) > 0.05);
+  // a vortex painted into one face: the winding reading sees it
+  const Value_function vortex = [&](std::size_t f, const std::array<double, 3>& b, int family) {
+    return good(f, b, family) + (f == 17 ? SDI::barycentric_argument(b) : 0.);
+  };
+  REQUIRE(winding_around(vortex, 17, 0).first == 1);
+  REQUIRE(winding_around(good, 17, 0).first == 0);
+}
+
+TEMPLATE_TEST_CASE("Bad input is refused clearly and changes nothing", "[branched_stripes]", SD_MESH_TYPES)
+{
+  const TestType mesh = make_case<TestType>("hemisphere.off");
+  const test::Mesh_snapshot before(mesh);
+  REQUIRE_THROWS_AS(Bsp<TestType>(mesh, SD::parameters::symmetry_order(3)), SD::Invalid_parameter);
+  REQUIRE_THROWS_AS(Bsp<TestType>(mesh, SD::parameters::weighting(SD::Edge_weighting::mean_value)),
+                    SD::Invalid_parameter);
+  const auto field = smoothest(mesh, 2);
+  Bsp<TestType> p(mesh);
+  REQUIRE(p.symmetry_order() == 2);
+  REQUIRE_THROWS_AS(p.solve(), SD::Invalid_constraints);
+  for(double bad : {0., -1., std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+    REQUIRE_THROWS_AS(p.set_field(field_map(mesh, field), bad), SD::Invalid_parameter);
+  std::vector<Vector_of<TestType>> broken = field;
+  broken[5] = Vector_of<TestType>(std::numeric_limits<double>::quiet_NaN(), 0., 0.);
+  REQUIRE_THROWS_AS(p.set_field(field_map(mesh, broken), 1.), SD::Invalid_parameter);
+  REQUIRE_FALSE(p.has_field());
+  p.set_field(field_map(mesh, field), 6. / diagonal(mesh));
+  const auto& idx = p.indices();
+  // a face with an edge on the boundary, a branch face, a family that does not exist
+  std::size_t boundary_face = SDI::npos;
+  for(std::size_t f = 0; f < idx.number_of_faces() && boundary_face == SDI::npos; ++f)
+    for(auto h : halfedges_around_face(halfedge(idx.face(f), mesh), mesh))
+      if(is_border(opposite(h, mesh), mesh))
+        boundary_face = f;
+  REQUIRE_THROWS_AS(p.set_index(boundary_face, 1), SD::Invalid_constraints);
+  REQUIRE_THROWS_AS(p.set_index(idx.number_of_faces(), 1), SD::Invalid_constraints);
+  REQUIRE_THROWS_AS(p.set_index(std::size_t(0), 1, 1), SD::Invalid_constraints);
+  REQUIRE_THROWS_AS(p.set_frequency(-2.), SD::Invalid_parameter);
+  if(!p.branch_faces().empty())
+    REQUIRE_THROWS_AS(p.set_index(p.branch_faces().front(), 1), SD::Invalid_constraints);
+  REQUIRE(p.singular_faces().empty());
+  // Stokes on a closed surface without twist: a vector field's stripes with one +1
+  const TestType closed = make_case<TestType>("torus");
+  const auto smooth = smoothest(closed, 1);
+  Bsp<TestType> q(closed, SD::parameters::symmetry_order(1));
+  q.set_field(field_map(closed, smooth), 1.);
+  q.set_index(std::size_t(40), 1);
+  REQUIRE_THROWS_AS(q.solve(), SD::Invalid_constraints);
+  REQUIRE_FALSE(q.is_solved());
+  REQUIRE(test::Mesh_snapshot(mesh) == before);
+}
