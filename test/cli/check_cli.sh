@@ -101,6 +101,19 @@ refuse stripes "$WORK/huge.off" --output "$O/h.ply"
 refuse stripes "$WORK/missing.off" --output "$O/m.ply"
 refuse stripes
 accept stripes "$B1K" --singularity 100:1 --singularity 400:-1 --output "$O/ok.ply"
+# line and cross fields
+for args in "--field smoothest:3" "--field smoothest:" "--field smoothest:x" "--field principal:-1" \
+            "--field principal:nan" "--field trivial4:5:0" "--field trivial2:5:1,5:1" "--field trivial8:5:1" \
+            "--field smoothest:2 --winding 0:1" "--field smoothest:2 --singularity 100:1:1" \
+            "--field smoothest:4 --singularity 100:1:2" "--singularity 100:1:1" "--singularity 100:1:-1" \
+            "--singularity 100:1:x" "--field smoothest:4 --no-automatic --no-automatic"; do
+  # shellcheck disable=SC2086
+  refuse stripes "$B1K" $args --output "$O/s.ply"
+done
+accept stripes "$B1K" --field smoothest:2 --output "$O/line.ply" --picture "$O/line.png"
+accept stripes "$B1K" --field smoothest:4 --singularity 100:1 --singularity 400:-1:1 --output "$O/cross.ply"
+accept stripes "$DATA/hemisphere.off" --field principal --no-automatic --output "$O/principal.ply"
+accept stripes "$DATA/torus.off" --field trivial4:10:1,500:-1 --output "$O/trivial.ply"
 
 }
 

@@ -102,7 +102,7 @@ def check_ply(data):
     if fmt == "ascii":
         lines = body.decode().split("\n")
         at = 0
-        faces, positions = [], []
+        faces, positions, face_rows = [], [], []
         for name, count, props in elements:
             for _ in range(count):
                 if at >= len(lines):
@@ -114,7 +114,15 @@ def check_ply(data):
                 for prop in props:
                     if prop[0] == "list":
                         n = int(values[k])
-                        row.append([int(x) for x in values[k + 1:k + 1 + n]])
+                        items = values[k + 1:k + 1 + n]
+                        if len(items) != n:
+                            raise Bad(f"a {name} list announces {n} values, gives {len(items)}")
+                        if prop[2] in ("char", "uchar", "short", "ushort", "int", "uint", "int8", "uint8", "int32"):
+                            row.append([int(x) for x in items])
+                        else:
+                            floats = [float(x) for x in items]
+                            finite(floats, prop[3])
+                            row.append(floats)
                         k += 1 + n
                     else:
                         row.append(float(values[k]))
@@ -124,8 +132,11 @@ def check_ply(data):
                     positions.append(row)
                 elif name == "face":
                     faces.append(row[0])
+                    face_rows.append(dict(zip([prop[-1] for prop in props], row)))
         if any(line.strip() for line in lines[at:]):
             raise Bad("data after the last element")
+        if face_rows and "corner_alpha" in face_rows[0]:
+            check_stripe_corners(faces, face_rows)
     elif fmt == "binary_little_endian":
         at = 0
         faces, positions = [], []
@@ -154,6 +165,35 @@ def check_ply(data):
         raise Bad(f"unsupported PLY format {fmt}")
     check_faces(faces, counts.get("vertex", 0))
     return counts.get("vertex", 0), counts.get("face", 0)
+
+
+def check_stripe_corners(faces, rows):
+    """A stripe pattern's per-corner angles (corner_alpha, and corner_beta for a cross field) are
+    one continuous pattern: at every vertex, the corners of all faces around it agree modulo 2 pi,
+    up to the field's symmetry (a sign for a line field, a quarter turn of the two families for a
+    cross field)."""
+    two_pi = 2 * math.pi
+    cross = "corner_beta" in rows[0]
+    at_vertex = {}
+    for face, row in zip(faces, rows):
+        alpha = row["corner_alpha"]
+        beta = row["corner_beta"] if cross else [0.0] * len(alpha)
+        if len(alpha) != len(face) or len(beta) != len(face):
+            raise Bad(f"corner_alpha of {len(alpha)} values on a face of {len(face)} corners")
+        for v, a, b in zip(face, alpha, beta):
+            at_vertex.setdefault(v, []).append((a, b))
+
+    def wrapped(x):
+        return abs((x + math.pi) % two_pi - math.pi)
+
+    symmetries = [lambda a, b: (a, b), lambda a, b: (-a, -b)]
+    if cross:
+        symmetries += [lambda a, b: (b, -a), lambda a, b: (-b, a)]
+    for v, values in at_vertex.items():
+        a0, b0 = values[0]
+        for a, b in values[1:]:
+            if min(max(wrapped(x - a0), wrapped(y - b0)) for x, y in (f(a, b) for f in symmetries)) > 1e-3:
+                raise Bad(f"the stripe pattern jumps at vertex {v}: corner angles {a0:.6g} and {a:.6g}")
 
 
 def check_vtk(data):
@@ -270,6 +310,13 @@ def self_test():
     ply_header = b"ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty double x\nproperty double y\n" \
         b"property double z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
     ply_body = struct.pack("<9d", 0, 0, 0, 1, 0, 0, 0, 1, 0) + struct.pack("<B3i", 3, 0, 1, 2)
+    # two triangles sharing the edge 1-2; the second one's corner at vertex 2 is alpha + jump
+    # (minus sign: the sheets of a line field), so any jump but 0 or pi breaks the pattern
+    stripes_ply = lambda jump: ("ply\nformat ascii 1.0\nelement vertex 4\nproperty double x\nproperty double y\n"
+                                "property double z\nelement face 2\nproperty list uchar int vertex_indices\n"
+                                "property list uchar float corner_alpha\nend_header\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n"
+                                f"3 0 1 2 3 0.1 0.2 0.3\n3 2 1 3 3 {-0.3 + jump} -0.2 7\n"
+                                ).encode()
     vtk = b"# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0\n1 0 0\n0 1 0\n" \
         b"POLYGONS 1 4\n3 0 1 2\nPOINT_DATA 3\nSCALARS z float 1\nLOOKUP_TABLE default\n0\n1\n2\n" \
         b"NORMALS normals float\n0 0 1\n0 0 1\n0 0 1\n"
@@ -280,6 +327,7 @@ def self_test():
             "b.ply": b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
                      b"element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
             "a.svg": b"<svg xmlns='http://www.w3.org/2000/svg'><path d='M0 0L1 1'/></svg>",
+            "stripes.ply": stripes_ply(0.0),
             "a.png": png,
             "a.vtk": vtk}
     bad = {"empty.off": b"",
@@ -288,6 +336,7 @@ def self_test():
            "range.off": b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n",
            "repeat.obj": b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2\n",
            "short.ply": ply_header + ply_body[:-4],
+           "jump.ply": stripes_ply(0.5),
            "long.ply": ply_header + ply_body + b"\0",
            "open.svg": b"<svg xmlns='http://www.w3.org/2000/svg'><path d='M0 0L1 1'/>",
            "blank.svg": b"<svg xmlns='http://www.w3.org/2000/svg'></svg>",

@@ -576,8 +576,9 @@ private:
 struct Ply_property
 {
   std::string name;
-  std::string type; // "double" (float64) or "int"
+  std::string type; // "double" (float64), "float" (float32) or "int"
   std::vector<double> values;
+  std::size_t list_size = 0; // > 0: a list of that many values per element, `values` flattened
 };
 
 /// Writes an ASCII PLY: vertices (x y z + extra properties), faces (vertex_indices + extras) and,
@@ -592,24 +593,36 @@ inline void write_ply(const std::string& path, const Mesh& mesh, const std::vect
     throw std::runtime_error("cannot write " + path);
   out << "ply\nformat ascii 1.0\ncomment written by CGAL Surface Design\n";
   out << "element vertex " << num_vertices(mesh) << "\nproperty double x\nproperty double y\nproperty double z\n";
+  auto declare = [&out](const Ply_property& p) {
+    out << "property " << (p.list_size > 0 ? "list uchar " : "") << p.type << ' ' << p.name << '\n';
+  };
   for(const auto& p : vertex_props)
-    out << "property " << p.type << ' ' << p.name << '\n';
+    declare(p);
   out << "element face " << num_faces(mesh) << "\nproperty list uchar int vertex_indices\n";
   for(const auto& p : face_props)
-    out << "property " << p.type << ' ' << p.name << '\n';
+    declare(p);
   if(!edges.empty())
   {
     out << "element edge " << edges.size() << "\nproperty int vertex1\nproperty int vertex2\n";
     for(const auto& p : edge_props)
-      out << "property " << p.type << ' ' << p.name << '\n';
+      declare(p);
   }
   out << "end_header\n" << std::setprecision(17);
-  auto value = [&out](const Ply_property& p, std::size_t i) {
+  auto scalar = [&out](const Ply_property& p, double x) {
     out << ' ';
     if(p.type == "int")
-      out << static_cast<long>(p.values[i]);
+      out << static_cast<long>(x);
+    else if(p.type == "float")
+      out << std::setprecision(9) << static_cast<float>(x) << std::setprecision(17);
     else
-      out << p.values[i];
+      out << x;
+  };
+  auto value = [&out, &scalar](const Ply_property& p, std::size_t i) {
+    if(p.list_size == 0)
+      return scalar(p, p.values[i]);
+    out << ' ' << p.list_size;
+    for(std::size_t k = 0; k < p.list_size; ++k)
+      scalar(p, p.values[i * p.list_size + k]);
   };
   for(auto v : vertices(mesh))
   {

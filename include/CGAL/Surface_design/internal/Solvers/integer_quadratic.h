@@ -168,9 +168,10 @@ inline Reduced_integer_quadratic reduce_integer_quadratic(const Eigen::MatrixXd&
 /// depth-first enumeration of the lattice points inside the ellipsoid of the best point found so
 /// far (Schnorr-Euchner: coordinates visited from the last one, the nearest values first), in the
 /// LLL-reduced basis of `reduced`. Exact unless more than `max_nodes` nodes are needed, in which
-/// case the best point found is returned; starts from the rounding of `integer_quadratic_minimizer`
-/// in the reduced basis, so it never does worse than that. Unlike rounding in the given basis, it
-/// finds the optimum on skewed lattices (a bad basis of the loops).
+/// case the best point found is returned (the budget shrinks as 1/m above 100 unknowns, each node
+/// costing O(m)); starts from the rounded optimum improved by +-1 coordinate steps in the reduced
+/// basis, so it never does worse than that. Unlike rounding in the given basis, it finds the
+/// optimum on skewed lattices (a bad basis of the loops).
 inline Eigen::VectorXi closest_integer_point(const Reduced_integer_quadratic& reduced, const Eigen::VectorXd& g0,
                                             std::size_t max_nodes = 200000)
 {
@@ -183,21 +184,41 @@ inline Eigen::VectorXi closest_integer_point(const Reduced_integer_quadratic& re
   auto back = [&U](const Eigen::VectorXi& c) -> Eigen::VectorXi {
     return (U * c.cast<double>()).array().round().cast<int>().matrix();
   };
-  Eigen::VectorXi best = integer_quadratic_minimizer(Q, g);
   if(!reduced.definite)
-    return back(best);
+    return back(integer_quadratic_minimizer(Q, g));
   const Eigen::MatrixXd& R = reduced.R;
-  const Eigen::VectorXd center = -Q.ldlt().solve(g);
+  // c* = -Q^-1 g by the cached factor (no O(m^3) work per call)
+  const Eigen::VectorXd center =
+    -R.triangularView<Eigen::Upper>().solve(R.transpose().triangularView<Eigen::Lower>().solve(g));
   auto distance = [&](const Eigen::VectorXd& c) {
     const Eigen::VectorXd d = c - center;
     return d.dot(Q * d);
   };
+  // start: the rounded optimum, then +-1 coordinate steps while one lowers the cost
+  // (the change for c_i += t is 2 t (Q (c - c*))_i + t^2 Q_ii)
+  Eigen::VectorXd start = center.array().round().matrix();
+  Eigen::VectorXd residual = Q * (start - center);
+  for(bool improved = true; improved;)
+  {
+    improved = false;
+    for(Eigen::Index i = 0; i < m; ++i)
+      for(int t : {-1, 1})
+        if(2. * t * residual[i] + Q(i, i) < -1e-12 * Q(i, i))
+        {
+          start[i] += t;
+          residual += double(t) * Q.col(i);
+          improved = true;
+          break;
+        }
+  }
+  Eigen::VectorXi best = start.cast<int>();
   double radius = distance(best.cast<double>()) * (1. + 1e-12) + 1e-300;
   // partial[i] = sum over rows >= i of (R (c - center))_row^2
   Eigen::VectorXd c = Eigen::VectorXd::Zero(m), partial = Eigen::VectorXd::Zero(m + 1);
   Eigen::VectorXd mid = Eigen::VectorXd::Zero(m);
   std::vector<double> step(std::size_t(m), 0.), dir(std::size_t(m), 0.);
   std::size_t nodes = 0;
+  const std::size_t budget = (std::min)(max_nodes, max_nodes * 100 / std::size_t(m));
   auto enter = [&](Eigen::Index i) {
     // the unconstrained best c_i given c_{i+1..m-1}
     double s = 0.;
@@ -218,7 +239,7 @@ inline Eigen::VectorXi closest_integer_point(const Reduced_integer_quadratic& re
   };
   Eigen::Index i = m - 1;
   enter(i);
-  while(++nodes <= max_nodes)
+  while(++nodes <= budget)
   {
     const double r = R(i, i) * (c[i] - mid[i]);
     const double d2 = partial[i + 1] + r * r;
