@@ -93,6 +93,10 @@ inline const std::vector<Preset>& presets()
      {"bundled:bunny_8k.off", "bundled:kitten.off", "shared:bunny_60k.off", "shared:bunny_loop1_239k.off",
       "shared:bunny_loop2_955k.off.gz"},
      {"field_stripes"}},
+    {"line_field_stripes", "stripes on line and cross fields end to end, on the sizes of geometry-central's "
+                           "figures: bunny_8k, the kitten, bunny_60k, bunny_loop1_239k",
+     {"bundled:bunny_8k.off", "bundled:kitten.off", "shared:bunny_60k.off", "shared:bunny_loop1_239k.off"},
+     {"line_field_stripes", "cross_field_stripes"}},
     {"editor", "the stripe editor's per-edit latency at 1k, 8k, 60k and 239k faces",
      {"bundled:bunny_1k.off", "bundled:bunny_8k.off", "shared:bunny_60k.off", "shared:bunny_loop1_239k.off"},
      {"editor"}},

@@ -48,6 +48,14 @@ const std::vector<Workload>& workloads()
      "the same stripes by the paper's face-space solver (positive cotangent weights only); "
      "phases factor, field, solve, resolve, full",
      &stripes_face_space_workload},
+    {"line_field_stripes",
+     "smoothest line field, then the branched stripes along it (Branched_stripe_parameterizer); phases "
+     "field, stripes, full, automatic, edit",
+     &line_field_stripes_workload},
+    {"cross_field_stripes",
+     "smoothest cross field, then the two coupled families of stripes; phases field, stripes, full, "
+     "automatic, edit",
+     &cross_field_stripes_workload},
     {"field_stripes",
      "smoothest vector field, then the stripes along it; phases field, stripes, full (one ordering and "
      "analysis shared by the two systems: default and supernodal), full, analyses not shared",

@@ -12,6 +12,7 @@
 
 #include "harness.h"
 
+#include <CGAL/Surface_design/Branched_stripe_parameterizer.h>
 #include <CGAL/Surface_design/Field_aligned_parameterizer.h>
 #include <CGAL/Surface_design/direction_fields.h>
 #include "Face_space_stripe_solver.h"
@@ -284,6 +285,75 @@ void run_field_stripes(const Mesh& mesh, Run& run)
     check_solution(*fap, "stripes", run);
 }
 
+/// Stripes on the smoothest n-direction field (n = 2: line field, 4: cross field), the pipeline
+/// of geometry-central's stripe patterns on line fields. Phases: `field` (the smoothest n-field),
+/// `stripes` (Branched_stripe_parameterizer: cover, weights, factorization, then one solve with
+/// no stripe singularity; the first solve includes the harmonic parts of the free windings),
+/// `full` = field + stripes; `automatic` (the relaxation and its pruning, then the solve);
+/// `edit` (a +1/-1 pair added, re-solved: back-substitutions only). The frequency: 40 stripes
+/// across the bounding box diagonal. Checks: the Lanczos runs converged, and every regular face's
+/// stripe index read from the solution equals the prescribed one.
+template <class SolverTraits>
+void run_branched_stripes(const Mesh& mesh, int n, Run& run)
+{
+  using Branched = SD::Branched_stripe_parameterizer<Mesh, Vertex_point_map, SolverTraits>;
+  auto [field_traits, stripe_traits] = traits_pair<SolverTraits>(true);
+  std::vector<Kernel::Vector_3> field(num_vertices(mesh));
+  SD::Smoothest_direction_field_result info;
+  run.phase("field", [&] {
+    info = SD::smoothest_direction_field(mesh, CGAL::make_property_map(field),
+                                         SD::parameters::symmetry_order(n).sparse_linear_solver(field_traits));
+  });
+  CGAL::Bbox_3 box;
+  for(auto v : vertices(mesh))
+    box += mesh.point(v).bbox();
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+  std::optional<Branched> stripes;
+  run.phase("stripes", [&] {
+    stripes.emplace(mesh, SD::parameters::symmetry_order(n).sparse_linear_solver(stripe_traits));
+    stripes->set_field(CGAL::make_property_map(field), 40. / diagonal);
+    stripes->solve();
+  });
+  run.sum_phase("full", {"field", "stripes"});
+  std::size_t count = 0;
+  run.phase("automatic", [&] {
+    count = stripes->place_automatic_singularities();
+    stripes->solve();
+  });
+  // an edit: a +1/-1 pair in two regular faces without boundary edge, a tenth of the faces apart
+  const auto& idx = stripes->indices();
+  std::vector<std::size_t> chosen;
+  for(std::size_t i = 0; i < idx.number_of_faces() && chosen.size() < 2; i += idx.number_of_faces() / 10 + 1)
+  {
+    const auto f = idx.face(i);
+    bool border = false;
+    for(auto h : halfedges_around_face(halfedge(f, mesh), mesh))
+      border = border || is_border(opposite(h, mesh), mesh);
+    if(!border && !stripes->is_branch_face(f) && stripes->index(f) == 0)
+      chosen.push_back(i);
+  }
+  run.phase("edit", [&] {
+    if(chosen.size() == 2)
+    {
+      stripes->set_index(chosen[0], 1);
+      stripes->set_index(chosen[1], -1);
+    }
+    stripes->solve();
+  });
+  if(run.checks_enabled())
+  {
+    run.check("field: Lanczos not converged", info.converged ? 0. : 1., 0.5);
+    std::size_t wrong = 0;
+    for(auto f : faces(mesh))
+      for(int a = 0; a < stripes->number_of_families(); ++a)
+        wrong += stripes->stripe_index(f, a) == stripes->index(f, a) ? 0 : 1;
+    run.check("faces whose stripe index differs from the prescribed one", double(wrong), 0.5);
+    run.check("automatic singularities (reported, not bounded)", double(count), 1e300);
+    run.check("branch faces (reported, not bounded)", double(stripes->branch_faces().size()), 1e300);
+  }
+}
+
 /// The face-space formulation needs W^-1: every cotangent weight positive (the condition the
 /// solver's constructor enforces). Checked on its own first, so that an inapplicable mesh costs
 /// no factorization.
@@ -359,6 +429,22 @@ inline void field_stripes_workload(const Mesh& mesh, const std::string& solver, 
 {
   with_solver_traits(solver, [&](auto tag) {
     stripes_detail::run_field_stripes<typename decltype(tag)::type>(mesh, run);
+  });
+}
+
+/// Stripes on the smoothest line field (see `run_branched_stripes`).
+inline void line_field_stripes_workload(const Mesh& mesh, const std::string& solver, Run& run)
+{
+  with_solver_traits(solver, [&](auto tag) {
+    stripes_detail::run_branched_stripes<typename decltype(tag)::type>(mesh, 2, run);
+  });
+}
+
+/// Stripes on the smoothest cross field: two families (see `run_branched_stripes`).
+inline void cross_field_stripes_workload(const Mesh& mesh, const std::string& solver, Run& run)
+{
+  with_solver_traits(solver, [&](auto tag) {
+    stripes_detail::run_branched_stripes<typename decltype(tag)::type>(mesh, 4, run);
   });
 }
 
