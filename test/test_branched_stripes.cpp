@@ -76,6 +76,11 @@ Mesh make_case(const std::string& name)
     SD::make_torus(mesh, 36, 12, 1., 0.35, true);
   else if(name == "sphere")
     SD::make_sphere(mesh, 8);
+  else if(name == "band") // 800 faces of a sphere between two circles: two boundary loops
+    mesh = polar_grid<Mesh>(10, 40, [](double s, double t) {
+      const double r = 0.05 + 0.95 * s, z = std::sqrt(1. - 0.9 * r * r);
+      return std::array<double, 3>{r * std::cos(t), r * std::sin(t), z};
+    });
   else
     mesh = test::load_mesh<Mesh>(name);
   return mesh;
@@ -304,8 +309,10 @@ void check_pattern(const Parameterizer& p)
 TEMPLATE_TEST_CASE("Line and cross field stripes: exactly the prescribed singularities, continuous elsewhere",
                    "[branched_stripes]", SD_MESH_TYPES)
 {
-  // genus 0, 1, 2, a disk, an obtuse scan
-  for(const std::string name : {"sphere", "torus", "eight.off", "hemisphere.off", "bunny_1k.off"})
+  // genus 0, 1, 2, a disk, an obtuse scan (under the sanitizers a band of 800 faces with two
+  // boundary loops instead of the 4000-face disk: the readings sample every face and edge)
+  const char* disk = CGAL_SURFACE_DESIGN_TESTS_UNDER_SANITIZERS ? "band" : "hemisphere.off";
+  for(const std::string name : {"sphere", "torus", "eight.off", disk, "bunny_1k.off"})
     for(int n : {2, 4})
     {
       INFO(name << ", n = " << n);
@@ -330,9 +337,11 @@ TEMPLATE_TEST_CASE("Line and cross field stripes: exactly the prescribed singula
     }
 }
 
-TEMPLATE_TEST_CASE("The cover is a closed surface and obeys Riemann-Hurwitz", "[branched_stripes]", SD_MESH_TYPES)
+TEMPLATE_TEST_CASE("The cover is a closed surface and obeys Riemann-Hurwitz", "[branched_stripes]",
+                   SD_MESH_TYPES)
 {
-  for(const std::string name : {"torus", "eight.off", "hemisphere.off"})
+  const char* disk = CGAL_SURFACE_DESIGN_TESTS_UNDER_SANITIZERS ? "band" : "hemisphere.off";
+  for(const std::string name : {"torus", "eight.off", disk})
     for(int n : {2, 4})
     {
       INFO(name << ", n = " << n);
@@ -362,7 +371,7 @@ TEMPLATE_TEST_CASE("The cover is a closed surface and obeys Riemann-Hurwitz", "[
         branch += cover.regular[f] ? 0 : 1;
       }
       const long chi = long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh));
-      if(name != "hemisphere.off")
+      if(name != "hemisphere.off" && name != "band")
         REQUIRE(index_sum == n * chi); // Poincare-Hopf
       // the explicit cover: n sheets per vertex, regular faces lifted n times, branch faces split
       // at the centroid, whose preimages are the orbits of the face's total matching R
@@ -429,15 +438,18 @@ TEMPLATE_TEST_CASE("The cover is a closed surface and obeys Riemann-Hurwitz", "[
       const long cover_chi = long(next_vertex) - long((uses.size() + border_uses) / 2) + long(triangles.size());
       REQUIRE(cover_chi == n * chi - ramification); // Riemann-Hurwitz
       REQUIRE(branch == p.branch_faces().size());
-      if(n == 2 && name != "hemisphere.off")
+      if(n == 2 && name != "hemisphere.off" && name != "band")
         REQUIRE(branch % 2 == 0); // the cover's genus 2g - 1 + B/2 is an integer
     }
 }
 
-TEMPLATE_TEST_CASE("n = 1 gives the vector field stripes of Field_aligned_parameterizer", "[branched_stripes]",
-                   SD_MESH_TYPES)
+// A cross-check of two methods (the forest and the tree-cotree solvers), not of genericity: on
+// Surface_mesh only (the other tests run on every mesh type), which keeps the build time down.
+TEST_CASE("n = 1 gives the vector field stripes of Field_aligned_parameterizer", "[branched_stripes]")
 {
-  for(const std::string name : {"torus", "eight.off", "hemisphere.off"})
+  using TestType = test::Surface_mesh;
+  const char* disk = CGAL_SURFACE_DESIGN_TESTS_UNDER_SANITIZERS ? "band" : "hemisphere.off";
+  for(const std::string name : {"torus", "eight.off", disk})
   {
     INFO(name);
     const TestType mesh = make_case<TestType>(name);
