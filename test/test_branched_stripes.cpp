@@ -11,6 +11,8 @@
 #include <CGAL/Surface_design/direction_fields.h>
 #include <CGAL/Surface_design/Field_aligned_parameterizer.h>
 #include <CGAL/Surface_design/mesh_generators.h>
+#include <CGAL/Surface_design/Trivial_connection.h>
+#include <CGAL/Surface_design/internal/Solvers/integer_quadratic.h>
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -20,6 +22,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <set>
@@ -284,6 +287,35 @@ void check_pattern(const Parameterizer& p)
       }
       if(families == 2 && quarter == 1) // a quarter turn: (0, 0) or (pi, pi)
         REQUIRE(std::abs(SDI::wrap_angle(c[0] - c[1])) < 1e-9);
+      // the segment from the first corner to the branch point is a cut: on its two sides the
+      // pattern is on two sheets, so the values there must be one sheet map apart (only the
+      // fixed point of the exchange at the branch point makes that hold all along the segment)
+      for(double t : {0.25, 0.6})
+      {
+        const double e = 1e-10; // the values move by about e times the corner values (tens of radians)
+        const std::array<double, 3> on{1. - t + t / 3., t / 3., t / 3.};
+        std::array<double, 2> x{0., 0.}, y{0., 0.};
+        for(int a = 0; a < families; ++a)
+        {
+          x[std::size_t(a)] = value(f, {on[0], on[1] + e, on[2] - e}, a); // the side of corner 1
+          y[std::size_t(a)] = value(f, {on[0], on[1] - e, on[2] + e}, a); // the side of corner 2
+        }
+        double best = 1e300;
+        for(int r = 0; r < 4; ++r)
+        {
+          if(families == 1 && r % 2 == 1)
+            continue;
+          const std::array<double, 2> q = r == 0 ? y : r == 1 ? std::array<double, 2>{y[1], -y[0]}
+                                                     : r == 2 ? std::array<double, 2>{-y[0], -y[1]}
+                                                              : std::array<double, 2>{-y[1], y[0]};
+          double dev = 0.;
+          for(int a = 0; a < families; ++a)
+            dev = (std::max)(dev, std::abs(SDI::wrap_angle(x[std::size_t(a)] - q[std::size_t(a)])));
+          best = (std::min)(best, dev);
+        }
+        INFO("branch face " << f << " across its cut at " << t);
+        REQUIRE(best < 1e-6);
+      }
       continue;
     }
     for(int a = 0; a < families; ++a)
@@ -302,6 +334,26 @@ void check_pattern(const Parameterizer& p)
       prescribed += p.index(idx.face(f), a) != 0 ? 1 : 0;
   REQUIRE(singular == prescribed);
   REQUIRE(largest_jump(tm, idx, value, families) < 1e-9);
+  // optimality over the continuous part: d_P^T W (y - omega) = 0 at every vertex not pinned,
+  // relative to the size of the terms it sums
+  const auto& solver = p.solver();
+  const auto& y = p.one_form();
+  const auto& omega = p.target_one_form();
+  std::vector<Eigen::Vector2d> gradient(idx.number_of_vertices(), Eigen::Vector2d::Zero());
+  double scale = 0.;
+  for(std::size_t e = 0; e < y.size(); ++e)
+  {
+    const auto ij = idx.edge_vertices(e);
+    const Eigen::Vector2d r = solver.weights()[e] * (y[e] - omega[e]);
+    gradient[ij.first] -= r;
+    gradient[ij.second] += solver.transition(e).transpose() * r;
+    scale = (std::max)(scale, std::abs(solver.weights()[e]) * (y[e].norm() + omega[e].norm()));
+  }
+  double worst = 0.;
+  for(std::size_t v = 0; v < gradient.size(); ++v)
+    if(!solver.is_pinned(v))
+      worst = (std::max)(worst, gradient[v].head(families).cwiseAbs().maxCoeff());
+  REQUIRE(worst <= 1e-9 * scale);
 }
 
 } // namespace
@@ -689,4 +741,105 @@ TEMPLATE_TEST_CASE("Bad input is refused clearly and changes nothing", "[branche
   REQUIRE_THROWS_AS(q.solve(), SD::Invalid_constraints);
   REQUIRE_FALSE(q.is_solved());
   REQUIRE(test::Mesh_snapshot(mesh) == before);
+}
+
+TEST_CASE("The closest lattice point: LLL and enumeration against brute force", "[branched_stripes][lattice]")
+{
+  // skewed bases: plain rounding of the relaxed optimum misses, the reduced search does not
+  for(int trial = 0; trial < 40; ++trial)
+  {
+    const int m = 2 + trial % 3;
+    Eigen::MatrixXd B(m, m); // a skewed basis: near-parallel columns
+    for(int i = 0; i < m; ++i)
+      for(int j = 0; j < m; ++j)
+        B(i, j) = (i == j ? 1. : 0.) + 0.93 * std::sin(1.7 * (trial + 1) * (i + 1) + 0.3 * j) * (j > 0 ? 1. : 0.) +
+                  (i == 0 ? 3. * j : 0.);
+    const Eigen::MatrixXd Q = B.transpose() * B;
+    Eigen::VectorXd g(m);
+    for(int i = 0; i < m; ++i)
+      g[i] = 7.3 * std::cos(2.1 * trial + i);
+    auto cost = [&](const Eigen::VectorXi& c) {
+      const Eigen::VectorXd x = c.cast<double>();
+      return 2. * g.dot(x) + x.dot(Q * x);
+    };
+    const SDI::Reduced_integer_quadratic reduced = SDI::reduce_integer_quadratic(Q);
+    // U is unimodular: integer entries and determinant +-1
+    REQUIRE((reduced.U.array() - reduced.U.array().round()).abs().maxCoeff() == 0.);
+    REQUIRE(std::abs(std::abs(reduced.U.determinant()) - 1.) < 1e-9);
+    const Eigen::VectorXi found = SDI::closest_integer_point(reduced, g);
+    // brute force around the relaxed optimum
+    const Eigen::VectorXd center = -Q.ldlt().solve(g);
+    double best = std::numeric_limits<double>::infinity();
+    const int R = 12;
+    Eigen::VectorXi c(m);
+    std::function<void(int)> search = [&](int i) {
+      if(i == m)
+      {
+        best = (std::min)(best, cost(c));
+        return;
+      }
+      for(int k = -R; k <= R; ++k)
+      {
+        c[i] = int(std::round(center[i])) + k;
+        search(i + 1);
+      }
+    };
+    if(m <= 3)
+      search(0);
+    INFO("trial " << trial << ", m = " << m);
+    REQUIRE(cost(found) <= best + 1e-9 * (1. + std::abs(best)));
+  }
+}
+
+TEST_CASE("Twisted fields without singularity and singularities in new branch faces are refused", "[branched_stripes]")
+{
+  using Mesh = test::Surface_mesh;
+  Mesh torus;
+  SD::make_torus(torus, 36, 12, 1., 0.35, true);
+  // a line field that turns by a half turn along the torus's major circle: no singularity, but
+  // its two directions exchange around that loop
+  std::vector<Vector_of<Mesh>> twisted;
+  for(auto v : vertices(torus))
+  {
+    const auto q = torus.point(v);
+    const double phi = std::atan2(q.y(), q.x()), rho = std::hypot(q.x(), q.y());
+    const double theta = std::atan2(q.z(), rho - 1.);
+    const Eigen::Vector3d along(-std::sin(phi), std::cos(phi), 0.);
+    const Eigen::Vector3d around(-std::sin(theta) * std::cos(phi), -std::sin(theta) * std::sin(phi), std::cos(theta));
+    const Eigen::Vector3d x = std::cos(phi / 2.) * along + std::sin(phi / 2.) * around;
+    twisted.emplace_back(x.x(), x.y(), x.z());
+  }
+  Bsp<Mesh> p(torus, SD::parameters::symmetry_order(2));
+  REQUIRE_THROWS_AS(p.set_field(field_map(torus, twisted), 2.), SD::Invalid_constraints);
+  REQUIRE_FALSE(p.has_field());
+
+  // a sphere's line field, then one with +1/2 singularities at four chosen faces: a stripe
+  // singularity prescribed in one of them refuses the new field and keeps the old one
+  Mesh sphere;
+  SD::make_sphere(sphere, 8);
+  const auto smooth = smoothest(sphere, 2);
+  Bsp<Mesh> q(sphere, SD::parameters::symmetry_order(2));
+  q.set_field(field_map(sphere, smooth), 3.);
+  const auto faces_ = free_faces(q, 4);
+  q.set_index(faces_[0], 1);
+  q.set_index(faces_[1], -1);
+  const std::vector<std::size_t> branch_before = q.branch_faces();
+  SD::Trivial_connection tc(sphere, SD::parameters::symmetry_order(2));
+  for(std::size_t f : {faces_[0], faces_[2], faces_[3], (faces_[1] + 1) % num_faces(sphere)})
+    tc.set_index(f, 1); // four +1/2: 2 chi
+  tc.solve();
+  std::vector<Vector_of<Mesh>> prescribed(num_vertices(sphere));
+  tc.field(CGAL::make_property_map(prescribed));
+  REQUIRE_THROWS_AS(q.set_field(field_map(sphere, prescribed), 3.), SD::Invalid_constraints);
+  REQUIRE(q.branch_faces() == branch_before);
+  REQUIRE(q.index(q.indices().face(faces_[0])) == 1);
+  q.solve();
+  check_pattern(q);
+  // without the singularity there, the new field is accepted and its branch faces are the four
+  q.set_index(faces_[0], 0);
+  q.set_index(faces_[1], 0);
+  q.set_field(field_map(sphere, prescribed), 3.);
+  REQUIRE(q.branch_faces().size() == 4);
+  q.solve();
+  check_pattern(q);
 }

@@ -90,6 +90,24 @@ struct Options
 
 using program::parse_pair;
 
+// The symmetry order N of the field a --field spec gives (1, 2 or 4).
+int field_order(const std::string& spec)
+{
+  if(spec == "smoothest:1" || spec == "smoothest:2" || spec == "smoothest:4")
+    return spec.back() - '0';
+  if(spec.rfind("smoothest:", 0) == 0)
+    throw program::Usage_error("--field smoothest:N takes N = 1 (vector field), 2 (line field) or 4 (cross field), got " +
+                               spec.substr(10));
+  if(spec == "principal" || spec.rfind("principal:", 0) == 0)
+    return 2;
+  if(spec.rfind("trivial2:", 0) == 0)
+    return 2;
+  if(spec.rfind("trivial4:", 0) == 0)
+    return 4;
+  return 1;
+}
+
+
 Options parse(int argc, char** argv)
 {
   Options o;
@@ -139,6 +157,11 @@ Options parse(int argc, char** argv)
     .picture(o.picture, o.up)
     .parse(argc, argv);
   program::check_paths_and_picture({{"INPUT", o.input}, {"--output", o.output}}, o.picture, p.given("--up"));
+  if(!o.automatic && !o.singularities.empty())
+    throw program::Usage_error("--no-automatic with --singularity: prescribed singularities are never automatic");
+  if(!o.automatic && field_order(o.field) == 1)
+    throw program::Usage_error("--no-automatic applies to line and cross fields (--field smoothest:2, smoothest:4, "
+                               "principal, trivial2:, trivial4:): a vector field's singularities are never automatic");
   return o;
 }
 
@@ -161,23 +184,6 @@ std::vector<std::string> split_list(const std::string& list, const std::string& 
 
 using program::eigen;
 using program::vertex_normals;
-
-// The symmetry order N of the field a --field spec gives (1, 2 or 4).
-int field_order(const std::string& spec)
-{
-  if(spec == "smoothest:1" || spec == "smoothest:2" || spec == "smoothest:4")
-    return spec.back() - '0';
-  if(spec.rfind("smoothest:", 0) == 0)
-    throw program::Usage_error("--field smoothest:N takes N = 1 (vector field), 2 (line field) or 4 (cross field), got " +
-                               spec.substr(10));
-  if(spec == "principal" || spec.rfind("principal:", 0) == 0)
-    return 2;
-  if(spec.rfind("trivial2:", 0) == 0)
-    return 2;
-  if(spec.rfind("trivial4:", 0) == 0)
-    return 4;
-  return 1;
-}
 
 // The field the stripes follow, one vector per vertex (any of the N directions); `solver` for
 // the fields that solve.

@@ -106,7 +106,8 @@ for args in "--field smoothest:3" "--field smoothest:" "--field smoothest:x" "--
             "--field principal:nan" "--field trivial4:5:0" "--field trivial2:5:1,5:1" "--field trivial8:5:1" \
             "--field smoothest:2 --winding 0:1" "--field smoothest:2 --singularity 100:1:1" \
             "--field smoothest:4 --singularity 100:1:2" "--singularity 100:1:1" "--singularity 100:1:-1" \
-            "--singularity 100:1:x" "--field smoothest:4 --no-automatic --no-automatic"; do
+            "--singularity 100:1:x" "--field smoothest:4 --no-automatic --no-automatic" "--no-automatic" \
+            "--field smoothest:2 --no-automatic --singularity 100:1" "--field smoothest:2 --singularity 100:2000000"; do
   # shellcheck disable=SC2086
   refuse stripes "$B1K" $args --output "$O/s.ply"
 done

@@ -228,6 +228,7 @@ public:
     require_field();
     m_frequency = stripes_per_unit_length;
     m_relaxation.reset();
+    m_solved = false;
     update_omega();
   }
   double frequency() const { return m_frequency; }
@@ -273,9 +274,20 @@ public:
     const int a = checked_family(family);
     if(k != 0)
       require_singularity_allowed(f);
+    if(k > max_index || k < -max_index)
+      throw Invalid_constraints("stripe index " + std::to_string(k) + " at face " + std::to_string(f) +
+                                " is out of range (at most " + std::to_string(max_index) + " in absolute value)");
     m_index[f][a] = k;
+    m_solved = false;
   }
-  void clear_indices() { std::fill(m_index.begin(), m_index.end(), Eigen::Vector2i::Zero()); }
+  /// The largest absolute stripe index accepted (far beyond what a mesh resolves; it keeps the
+  /// sums of indices exact).
+  static constexpr int max_index = 1 << 20;
+  void clear_indices()
+  {
+    std::fill(m_index.begin(), m_index.end(), Eigen::Vector2i::Zero());
+    m_solved = false;
+  }
   /// Moves every index of face `from` to face `to` (added to the indices there).
   /// \throws Invalid_constraints if `to` cannot hold a singularity; nothing changes then
   void move_singularity(face_descriptor from, face_descriptor to)
@@ -284,8 +296,13 @@ public:
     if(a == b || m_index[a].isZero())
       return;
     require_singularity_allowed(b);
-    m_index[b] += m_index[a];
+    const Eigen::Vector2i sum = m_index[b] + m_index[a];
+    if(sum.cwiseAbs().maxCoeff() > max_index)
+      throw Invalid_constraints("moving the singularity of face " + std::to_string(a) + " to face " + std::to_string(b) +
+                                " would give an index beyond " + std::to_string(max_index));
+    m_index[b] = sum;
     m_index[a].setZero();
+    m_solved = false;
   }
   /// The faces with a non-zero prescribed index.
   std::vector<std::size_t> singular_faces() const
@@ -317,9 +334,9 @@ public:
     require_field();
     if(!m_relaxation)
     {
-      ++m_factorizations;
       m_relaxation = internal::relaxed_stripe_indices(*m_idx, *m_solver, m_omega, m_vertex_area,
                                                       internal::new_solver_like(m_traits));
+      ++m_factorizations;
     }
     const int d = number_of_families();
     auto exact_energy = [this](const std::vector<Eigen::Vector2i>& k) -> std::optional<double> {
