@@ -190,17 +190,7 @@ public:
     check_frequency(stripes_per_unit_length);
     if(convention != One_form_convention::projected && convention != One_form_convention::angle_rescaled)
       throw Invalid_parameter("convention", "not a One_form_convention enumerator");
-    std::vector<double> angle(m_idx->number_of_vertices());
-    for(std::size_t v = 0; v < angle.size(); ++v)
-    {
-      const auto& x = get(field, m_idx->vertex(v));
-      const Eigen::Vector3d xv(CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z()));
-      const Eigen::Vector3d t = xv - xv.dot(m_connection.frames.normal[v]) * m_connection.frames.normal[v];
-      if(!t.allFinite() || !(t.norm() > 1e-12 * xv.norm()))
-        throw Invalid_parameter("field", "the field vector at vertex " + std::to_string(v) +
-                                           (t.allFinite() ? " has no tangential component" : " is not finite"));
-      angle[v] = m_connection.frames.to_angle(v, t);
-    }
+    std::vector<double> angle = internal::field_angles(*m_idx, m_connection.frames, field);
     internal::Direction_field_cover cover =
       internal::direction_field_cover(*m_idx, m_connection, m_topology->tree, std::move(angle), m_n);
     for(std::size_t f = 0; f < m_index.size(); ++f)

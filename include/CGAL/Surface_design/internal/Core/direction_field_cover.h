@@ -102,7 +102,6 @@ Direction_field_cover direction_field_cover(const Indices& idx, const Discrete_c
                                             std::vector<double> angle, int n)
 {
   check_cover_order(n, "symmetry_order");
-  const auto& tm = idx.mesh();
   Direction_field_cover cover;
   cover.n = n;
   cover.d = sheet_values(n);
@@ -114,19 +113,10 @@ Direction_field_cover direction_field_cover(const Indices& idx, const Discrete_c
   cover.matching.resize(idx.number_of_edges());
   for(std::size_t e = 0; e < cover.matching.size(); ++e)
     cover.matching[e] = field_matching(idx, c, cover.angle, n, idx.index(idx.oriented_halfedge(e)));
-  cover.index_numerator.resize(idx.number_of_faces());
+  cover.index_numerator = field_index_numerators(idx, c, cover.angle, n);
   cover.regular.resize(idx.number_of_faces());
   for(std::size_t f = 0; f < cover.regular.size(); ++f)
-  {
-    // n times the index: the turn of the field relative to the transport, plus n K_f
-    double sum = n * c.curvature[f];
-    for(auto h : halfedges_around_face(halfedge(idx.face(f), tm), tm))
-      sum += wrap_angle(n * (cover.angle[idx.target_index(h)] - cover.angle[idx.source_index(h)] -
-                             c.transport(idx, idx.index(h))));
-    const int k = int(std::lround(sum / two_pi));
-    cover.index_numerator[f] = k;
-    cover.regular[f] = ((k % n) + n) % n == 0;
-  }
+    cover.regular[f] = ((cover.index_numerator[f] % n) + n) % n == 0;
   return cover;
 }
 

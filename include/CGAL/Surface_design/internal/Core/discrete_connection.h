@@ -1,12 +1,13 @@
 // Copyright (c) 2026 The CGAL Surface Design authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The discrete Levi-Civita connection between the angle-rescaled vertex frames, and its face
-// curvatures.
+// The discrete Levi-Civita connection between the angle-rescaled vertex frames, its face
+// curvatures, and the indices of n-direction fields it transports.
 
 #ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_DISCRETE_CONNECTION_H
 #define CGAL_SURFACE_DESIGN_INTERNAL_CORE_DISCRETE_CONNECTION_H
 
+#include <CGAL/Surface_design/internal/Core/angles.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>
 #include <CGAL/Surface_design/internal/Core/vertex_frames.h>
 
@@ -58,6 +59,29 @@ Discrete_connection levi_civita_connection(const Indices& idx, const VertexPoint
     for(auto h : halfedges_around_face(halfedge(idx.face(f), tm), tm))
       c.curvature[f] += c.frames.scale[idx.target_index(h)] * corner[idx.index(h)];
   return c;
+}
+
+/// Singularity index of an n-direction field given by one angle per vertex (any of its n
+/// directions, in the vertex frames), per face, as an integer numerator: the index is
+/// numerator / n. Around face f, n times the field turns, relative to the transport, by
+/// sum_h wrap(n (a_j - a_i - rho_ij)) (each term the smallest turn between the n-fold
+/// directions), and the transport itself turns by n K_f:
+/// index_f = (sum_h wrap(...) + n K_f) / (2 pi n).
+template <class Indices>
+std::vector<int> field_index_numerators(const Indices& idx, const Discrete_connection& c,
+                                        const std::vector<double>& angle, int n)
+{
+  const auto& tm = idx.mesh();
+  std::vector<int> k(idx.number_of_faces());
+  for(std::size_t f = 0; f < k.size(); ++f)
+  {
+    double sum = n * c.curvature[f];
+    for(auto h : halfedges_around_face(halfedge(idx.face(f), tm), tm))
+      sum += wrap_angle(n * (angle[idx.target_index(h)] - angle[idx.source_index(h)] -
+                             c.transport(idx, idx.index(h))));
+    k[f] = int(std::lround(sum / two_pi));
+  }
+  return k;
 }
 
 } // namespace internal

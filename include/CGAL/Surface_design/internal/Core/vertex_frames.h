@@ -8,6 +8,7 @@
 #ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_VERTEX_FRAMES_H
 #define CGAL_SURFACE_DESIGN_INTERNAL_CORE_VERTEX_FRAMES_H
 
+#include <CGAL/Surface_design/exceptions.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>
 
 #include <Eigen/Core>
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -209,6 +211,26 @@ Vertex_frames vertex_frames(const Indices& idx, const VertexPointMap& vpm,
   }
   fr.star_begin[nv] = fr.star_psi.size();
   return fr;
+}
+
+/// The rescaled angle, per vertex, of the tangential part of `field`'s vector there.
+/// \throws Invalid_parameter (`field`) if a vector is not finite or has no tangential component
+template <class Indices, class VertexVectorMap>
+std::vector<double> field_angles(const Indices& idx, const Vertex_frames& frames, const VertexVectorMap& field)
+{
+  std::vector<double> angle(idx.number_of_vertices());
+  for(std::size_t v = 0; v < angle.size(); ++v)
+  {
+    const auto& x = get(field, idx.vertex(v));
+    const Eigen::Vector3d xv(CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z()));
+    const Eigen::Vector3d t = xv - xv.dot(frames.normal[v]) * frames.normal[v];
+    if(!(t.norm() > 1e-12 * xv.norm()) || !t.allFinite())
+      throw Invalid_parameter("field", "the field vector at vertex " + std::to_string(v) +
+                                (t.allFinite() ? " has no tangential component" : " is not finite") +
+                                ": the direction, and the index of the faces around it, are undefined");
+    angle[v] = frames.to_angle(v, t);
+  }
+  return angle;
 }
 
 } // namespace internal

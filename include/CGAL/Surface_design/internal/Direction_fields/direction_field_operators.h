@@ -89,24 +89,6 @@ std::vector<std::complex<double>> principal_curvature_directions(const Indices& 
   return q;
 }
 
-template <class Indices, class VertexVectorMap>
-std::vector<double> field_angles(const Indices& idx, const Vertex_frames& frames, const VertexVectorMap& field)
-{
-  std::vector<double> angle(idx.number_of_vertices());
-  for(std::size_t v = 0; v < angle.size(); ++v)
-  {
-    const auto& x = get(field, idx.vertex(v));
-    const Eigen::Vector3d xv(CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z()));
-    const Eigen::Vector3d t = xv - xv.dot(frames.normal[v]) * frames.normal[v];
-    if(!(t.norm() > 1e-12 * xv.norm()) || !t.allFinite())
-      throw Invalid_parameter("field", "the field vector at vertex " + std::to_string(v) +
-                                (t.allFinite() ? " has no tangential component" : " is not finite") +
-                                ": the direction, and the index of the faces around it, are undefined");
-    angle[v] = frames.to_angle(v, t);
-  }
-  return angle;
-}
-
 /// Writes, per vertex, the direction of angle `angle[v]` (rescaled, in the vertex frame) scaled
 /// by `magnitude[v]` (unit when `magnitude` is empty).
 template <class Indices, class VertexVectorMap>
@@ -127,29 +109,6 @@ inline void check_symmetry_order(int n)
     throw Invalid_parameter("symmetry_order", "the symmetry order n of a direction field must be at least 1 "
                                               "(1: vector field, 2: line field, 4: cross field), got " +
                                                 std::to_string(n));
-}
-
-/// Singularity index of an n-direction field given by one angle per vertex (any of its n
-/// directions, in the vertex frames), per face, as an integer numerator: the index is
-/// numerator / n. Around face f, n times the field turns, relative to the transport, by
-/// sum_h wrap(n (a_j - a_i - rho_ij)) (each term the smallest turn between the n-fold
-/// directions), and the transport itself turns by n K_f:
-/// index_f = (sum_h wrap(...) + n K_f) / (2 pi n).
-template <class Indices>
-std::vector<int> field_index_numerators(const Indices& idx, const Discrete_connection& c,
-                                        const std::vector<double>& angle, int n)
-{
-  const auto& tm = idx.mesh();
-  std::vector<int> k(idx.number_of_faces());
-  for(std::size_t f = 0; f < k.size(); ++f)
-  {
-    double sum = n * c.curvature[f];
-    for(auto h : halfedges_around_face(halfedge(idx.face(f), tm), tm))
-      sum += wrap_angle(n * (angle[idx.target_index(h)] - angle[idx.source_index(h)] -
-                             c.transport(idx, idx.index(h))));
-    k[f] = int(std::lround(sum / two_pi));
-  }
-  return k;
 }
 
 } // namespace internal
