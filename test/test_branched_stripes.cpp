@@ -26,6 +26,7 @@
 #include <map>
 #include <numeric>
 #include <set>
+#include <sstream>
 
 namespace SD = CGAL::Surface_design;
 namespace SDI = CGAL::Surface_design::internal;
@@ -356,6 +357,131 @@ void check_pattern(const Parameterizer& p)
   REQUIRE(worst <= 1e-9 * scale);
 }
 
+// The isolines, read independently of how they were built:
+// - every piece lies in its face, and in a face where the angle is linear (regular without
+//   singularity, or a branch face) its midpoint is at the line's level modulo 2 pi;
+// - on every edge the lines cross exactly as often as the angle along the edge (from the one-form
+//   and the vertex values, not from the faces) passes a multiple of pi;
+// - lines end only on the boundary, at mesh vertices, or in branch and singular faces.
+// Returns what is wrong ("" if nothing) and counts the open lines.
+template <class Parameterizer, class Lines>
+std::string isoline_problem(const Parameterizer& p, const Lines& lines, std::size_t& open)
+{
+  const auto& idx = p.indices();
+  const auto& tm = idx.mesh();
+  using Mesh = std::decay_t<decltype(tm)>;
+  using P3 = Eigen::Vector3d;
+  const auto point = [&](Vertex<Mesh> v) {
+    const auto q = get(CGAL::vertex_point, tm, v);
+    return P3(q.x(), q.y(), q.z());
+  };
+  const double scale = diagonal(tm);
+  std::vector<std::vector<double>> on_edge_t(idx.number_of_edges());
+  const auto singular = [&](Face<Mesh> f) {
+    for(int a = 0; a < p.number_of_families(); ++a)
+      if(p.stripe_index(f, a) != 0)
+        return true;
+    return false;
+  };
+  // barycentric coordinates of x in f (corner order of value()), and the distance to its plane
+  const auto barycentric = [&](Face<Mesh> f, const P3& x) {
+    const auto h = halfedge(f, tm);
+    const P3 a = point(source(h, tm)), b = point(target(h, tm)), c = point(target(next(h, tm), tm));
+    Eigen::Matrix<double, 3, 2> A;
+    A << b - a, c - a;
+    const Eigen::Vector2d l = (A.transpose() * A).ldlt().solve(A.transpose() * (x - a));
+    return std::make_pair(std::array<double, 3>{1. - l[0] - l[1], l[0], l[1]}, (A * l + a - x).norm());
+  };
+  open = 0;
+  std::ostringstream problem;
+  for(const auto& line : lines)
+  {
+    const std::size_t np = line.points.size();
+    if(np < 2 || line.faces.size() != (line.closed ? np : np - 1) || !(line.level == 0. || line.level == pi))
+      return "a line with " + std::to_string(np) + " points, " + std::to_string(line.faces.size()) + " faces";
+    for(std::size_t i = 0; i < line.faces.size(); ++i)
+    {
+      const Face<Mesh> f = line.faces[i];
+      const P3 x = P3(line.points[i].x(), line.points[i].y(), line.points[i].z());
+      const auto& q = line.points[(i + 1) % np];
+      const P3 y(q.x(), q.y(), q.z());
+      const auto [b, off] = barycentric(f, 0.5 * (x + y));
+      if(off > 1e-9 * scale || *std::min_element(b.begin(), b.end()) < -1e-9)
+        problem << "a piece outside its face " << idx.index(f) << "; ";
+      if(!singular(f))
+      {
+        // a line of a cross field changes family where the field's two families are exchanged
+        double off_level = 1e300;
+        for(int family = 0; family < p.number_of_families(); ++family)
+          off_level = (std::min)(off_level, std::abs(SDI::wrap_angle(p.value(f, b, family) - line.level)));
+        if(off_level > 1e-7)
+          problem << "a piece in face " << idx.index(f) << " off its level by " << off_level << "; ";
+      }
+      // the ends of the piece on the edges of its face
+      for(const P3& z : {x, y})
+        for(auto g : halfedges_around_face(halfedge(f, tm), tm))
+        {
+          const std::size_t e = idx.edge_index(g);
+          const auto ends = idx.edge_vertices(e);
+          const P3 a = point(idx.vertex(ends.first)), c = point(idx.vertex(ends.second));
+          const double t = (z - a).dot(c - a) / (c - a).squaredNorm();
+          if(t > 1e-9 && t < 1. - 1e-9 && (a + t * (c - a) - z).norm() < 1e-10 * scale)
+            on_edge_t[e].push_back(t);
+        }
+    }
+    if(line.closed)
+      continue;
+    ++open;
+    for(const bool last : {false, true})
+    {
+      const Face<Mesh> f = last ? line.faces.back() : line.faces.front();
+      const auto& q = last ? line.points.back() : line.points.front();
+      const P3 z(q.x(), q.y(), q.z());
+      bool allowed = p.is_branch_face(f) || singular(f);
+      for(auto g : halfedges_around_face(halfedge(f, tm), tm))
+      {
+        allowed = allowed || (point(target(g, tm)) - z).norm() < 1e-12 * scale;
+        if(is_border_edge(g, tm))
+        {
+          const P3 a = point(source(g, tm)), c = point(target(g, tm));
+          const double t = (z - a).dot(c - a) / (c - a).squaredNorm();
+          allowed = allowed || (a + t * (c - a) - z).norm() < 1e-10 * scale;
+        }
+      }
+      if(!allowed)
+        problem << "an open line ends in the regular face " << idx.index(f) << "; ";
+    }
+  }
+  // the crossings of every edge: the multiples of pi strictly between the angle at its first end
+  // and that angle plus the one-form along it, family by family
+  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+  {
+    auto& t = on_edge_t[e];
+    std::sort(t.begin(), t.end());
+    t.erase(std::unique(t.begin(), t.end(), [](double u, double v) { return v - u < 1e-8; }), t.end());
+    long expected = 0;
+    for(int a = 0; a < p.number_of_families(); ++a)
+    {
+      // (ends closer than 1e-9 to a multiple of pi are on it: the lines pass through the vertex)
+      const double a0 = p.vertex_values()[idx.edge_vertices(e).first][a] / pi;
+      const double a1 = a0 + p.one_form()[e][a] / pi;
+      const double lo = (std::min)(a0, a1) + 1e-9 / pi, hi = (std::max)(a0, a1) - 1e-9 / pi;
+      expected += (std::max)(0L, long(std::ceil(hi) - std::floor(lo)) - 1);
+    }
+    if(long(t.size()) != expected)
+      problem << "edge " << e << " crossed " << t.size() << " times, not " << expected << "; ";
+  }
+  return problem.str();
+}
+
+template <class Parameterizer>
+std::size_t check_isolines(const Parameterizer& p)
+{
+  std::size_t open = 0;
+  REQUIRE(isoline_problem(p, p.isolines(), open) == "");
+  return open;
+}
+
 } // namespace
 
 TEMPLATE_TEST_CASE("Line and cross field stripes: exactly the prescribed singularities, continuous elsewhere",
@@ -376,6 +502,7 @@ TEMPLATE_TEST_CASE("Line and cross field stripes: exactly the prescribed singula
       p.set_field(field_map(mesh, field), 12. / diagonal(mesh));
       p.solve();
       check_pattern(p); // no singularity prescribed: none anywhere
+      check_isolines(p);
       // pairs of opposite indices (a closed component without twist needs the sum 0)
       const std::vector<std::size_t> faces_ = free_faces(p, 4);
       REQUIRE(faces_.size() == 4);
@@ -385,6 +512,7 @@ TEMPLATE_TEST_CASE("Line and cross field stripes: exactly the prescribed singula
       p.set_index(faces_[3], -2, n == 4 ? 1 : 0);
       p.solve();
       check_pattern(p);
+      check_isolines(p);
       REQUIRE(test::Mesh_snapshot(mesh) == before);
     }
 }
@@ -521,6 +649,24 @@ TEST_CASE("n = 1 gives the vector field stripes of Field_aligned_parameterizer",
     REQUIRE(std::abs(p.energy() - fap.energy()) <= 1e-9 * (1. + fap.energy()));
     for(std::size_t e = 0; e < fap.one_form().size(); ++e)
       REQUIRE(std::abs(p.one_form()[e][0] - fap.one_form()[e]) <= 1e-9 * (1. + std::abs(fap.one_form()[e])));
+    // the isolines, read from the branched solution, and the vector stripes' own: the same lines
+    check_isolines(p);
+    const auto mine = fap.isolines(), theirs = p.isolines();
+    const auto summary = [](const auto& lines) {
+      std::array<double, 3> out{0., 0., 0.}; // open lines, closed lines, length
+      for(const auto& line : lines)
+      {
+        out[line.closed ? 1 : 0] += 1.;
+        for(std::size_t i = 0; i + 1 < line.points.size() + (line.closed ? 1 : 0); ++i)
+          out[2] += std::sqrt(CGAL::squared_distance(line.points[i], line.points[(i + 1) % line.points.size()]));
+      }
+      return out;
+    };
+    const auto a = summary(mine), b = summary(theirs);
+    REQUIRE(a[0] == b[0]);
+    REQUIRE(a[1] == b[1]);
+    REQUIRE(std::abs(a[2] - b[2]) <= 1e-6 * b[2]);
+    REQUIRE(b[2] > 0.);
   }
 }
 
@@ -541,6 +687,29 @@ TEST_CASE("Analytic: a cylinder's rings and a flat annulus around a +1/2 line-fi
     REQUIRE(p.branch_faces().empty());
     REQUIRE(p.energy() < 1e-20);
     check_pattern(p);
+    // the isolines are the rings z = const where 2 pi 1.3 z + alpha_0 is a multiple of pi
+    REQUIRE(check_isolines(p) == 0);
+    const auto lines = p.isolines();
+    const double a0 = p.value(*faces(tube).begin(), {1., 0., 0.}) - two_pi * 1.3 * tube.point(source(halfedge(*faces(tube).begin(), tube), tube)).z();
+    std::set<long> heights;
+    for(const auto& line : lines)
+    {
+      const double z = line.points.front().z();
+      double length = 0.;
+      for(std::size_t i = 0; i < line.points.size(); ++i)
+      {
+        REQUIRE(std::abs(line.points[i].z() - z) < 1e-9);
+        length += std::sqrt(CGAL::squared_distance(line.points[i], line.points[(i + 1) % line.points.size()]));
+      }
+      REQUIRE(length <= two_pi * R);
+      REQUIRE(length >= two_pi * R * std::cos(pi / 48.));
+      const double m = (two_pi * 1.3 * z + a0) / pi;
+      REQUIRE(std::abs(m - std::round(m)) < 1e-9);
+      heights.insert(std::lround(m));
+    }
+    REQUIRE(heights.size() == lines.size());
+    // every multiple of pi the angle reaches on the tube (z in [0, 2]) has its ring
+    REQUIRE(long(lines.size()) == long(std::floor((two_pi * 2.6 + a0) / pi + 1e-9) - std::ceil(a0 / pi - 1e-9)) + 1);
   }
   // around: a circumferential line field at 2.3 stripes per unit length wants 2.3 * 2 pi R
   // = 14.45 stripes around; the pattern takes 14 (integer), alpha = 14 theta
@@ -568,6 +737,19 @@ TEST_CASE("Analytic: a cylinder's rings and a flat annulus around a +1/2 line-fi
         turn += idx.orientation_sign(h) * p.one_form()[e][0];
       }
       REQUIRE(std::abs(std::abs(turn) - 14. * two_pi) < 1e-9);
+      // the lines of the family along the axis: 28 segments from rim to rim (14 at 0, 14 at pi)
+      check_isolines(p);
+      std::size_t axial = 0;
+      // (a cross field's rings at z = 0 may lie on the rim, where the axial lines cut them)
+      for(const auto& line : p.isolines())
+        if(!line.closed && std::abs(line.points.back().z() - line.points.front().z()) > 1e-9)
+        {
+          ++axial;
+          const double z0 = line.points.front().z(), z1 = line.points.back().z();
+          REQUIRE((std::abs(z0) < 1e-12 || std::abs(z0 - 2.) < 1e-12));
+          REQUIRE(std::abs(std::abs(z1 - z0) - 2.) < 1e-12);
+        }
+      REQUIRE(axial == 28);
     }
   }
   // the annulus 0.3 <= r <= 1 around a +1/2 line field: the sheets exchange around the hole
@@ -675,6 +857,34 @@ TEST_CASE("Edits are back-substitutions and equal a fresh solve; both solvers ag
 #else
   SD_CHOLMOD_UNAVAILABLE("the comparison of the branched stripes of both solvers");
 #endif
+}
+
+TEST_CASE("The isoline reading catches missing, cut and displaced lines", "[branched_stripes][oracle]")
+{
+  using Mesh = test::Surface_mesh;
+  const Mesh mesh = make_case<Mesh>("torus");
+  Bsp<Mesh> p(mesh, SD::parameters::symmetry_order(2));
+  p.set_field(field_map(mesh, smoothest(mesh, 2)), 8. / diagonal(mesh));
+  p.solve();
+  const auto lines = p.isolines();
+  std::size_t open = 0;
+  REQUIRE(isoline_problem(p, lines, open) == "");
+  REQUIRE(open == 0); // a torus without singularities: closed lines only
+  REQUIRE(lines.size() >= 4);
+  auto missing = lines;
+  missing.pop_back();
+  REQUIRE_THAT(isoline_problem(p, missing, open), Catch::Matchers::Contains("crossed"));
+  auto cut = lines;
+  cut[0].closed = false;
+  cut[0].faces.pop_back();
+  REQUIRE_THAT(isoline_problem(p, cut, open), Catch::Matchers::Contains("ends in the regular face"));
+  auto moved = lines;
+  // a point pulled towards the centroid of its first piece's face: inside the face, off the line
+  const auto h = halfedge(moved[1].faces[0], mesh);
+  const auto centroid = CGAL::centroid(mesh.point(source(h, mesh)), mesh.point(target(h, mesh)),
+                                       mesh.point(target(next(h, mesh), mesh)));
+  moved[1].points[0] = CGAL::barycenter(moved[1].points[0], 0.7, centroid, 0.3);
+  REQUIRE_THAT(isoline_problem(p, moved, open), Catch::Matchers::Contains("off its level"));
 }
 
 TEST_CASE("The readings catch a broken pattern", "[branched_stripes][oracle]")

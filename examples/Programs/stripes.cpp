@@ -75,12 +75,14 @@ const char* usage =
   "                            field's direction in the face), field_index (the field's index);\n"
   "                            cross fields: also corner_beta, stripe_index_beta (second family);\n"
   "                            vector fields: also vertex alpha, face index, edge omega/dalpha\n"
+  "  --isolines OUT.obj        the isolines at 0 and pi (the centre lines of the dark and light\n"
+  "                            stripes) as OBJ polylines, groups level_0 and level_pi\n"
   "  --picture OUT.png         picture of the stripes (cos alpha), rendered with f3d\n"
   "  --up +Y|+Z|...            up direction of the picture (default +Y)\n";
 
 struct Options
 {
-  std::string input, field = "axis:0,1,0", output, picture, up = "+Y", solver = "default";
+  std::string input, field = "axis:0,1,0", output, isolines, picture, up = "+Y", solver = "default";
   std::optional<double> scale;
   std::vector<std::array<long, 3>> singularities; // face, index, family
   bool automatic = true;
@@ -154,9 +156,11 @@ Options parse(int argc, char** argv)
                               : SD::One_form_convention::angle_rescaled;
            })
     .output("--output", o.output, {".ply"})
+    .output("--isolines", o.isolines, {".obj"})
     .picture(o.picture, o.up)
     .parse(argc, argv);
-  program::check_paths_and_picture({{"INPUT", o.input}, {"--output", o.output}}, o.picture, p.given("--up"));
+  program::check_paths_and_picture({{"INPUT", o.input}, {"--output", o.output}, {"--isolines", o.isolines}}, o.picture,
+                                   p.given("--up"));
   if(!o.automatic && !o.singularities.empty())
     throw program::Usage_error("--no-automatic with --singularity: prescribed singularities are never automatic");
   if(!o.automatic && field_order(o.field) == 1)
@@ -456,6 +460,7 @@ int run_vector_field(const Options& o, Mesh& mesh, const std::vector<Vector>& fi
                        {index_prop, corner_alpha, stripe_index, fx, fy, fz, findex}, edge_vertices, {omega, dalpha});
   }
 
+  isoline_output(o, fap, clock, outputs);
   if(!o.picture.empty())
   {
     double largest = 0.;
@@ -470,6 +475,56 @@ int run_vector_field(const Options& o, Mesh& mesh, const std::vector<Vector>& fi
       [](Mesh::Face_index) { return false; }, outputs, o);
   }
   return 0;
+}
+
+// The isolines as OBJ polylines (a closed line repeats its first vertex), in two groups by level.
+template <class Lines>
+void write_isolines(const std::string& path, const Lines& lines)
+{
+  std::ofstream out(path);
+  out << "# stripe isolines: " << lines.size() << " polylines; level_0 and level_pi: the stripe angle modulo 2 pi\n";
+  out.precision(17);
+  for(const auto& line : lines)
+    for(const auto& q : line.points)
+      out << "v " << q.x() << ' ' << q.y() << ' ' << q.z() << '\n';
+  for(const bool zero : {true, false})
+  {
+    out << "g " << (zero ? "level_0" : "level_pi") << '\n';
+    std::size_t first = 1;
+    for(const auto& line : lines)
+    {
+      if((line.level == 0.) == zero)
+      {
+        out << 'l';
+        for(std::size_t i = 0; i < line.points.size(); ++i)
+          out << ' ' << first + i;
+        if(line.closed)
+          out << ' ' << first;
+        out << '\n';
+      }
+      first += line.points.size();
+    }
+  }
+  if(!out)
+    throw std::runtime_error("cannot write " + path);
+}
+
+// Reports and writes the isolines of a solved pattern (vector or branched stripes).
+template <class Parameterizer>
+void isoline_output(const Options& o, const Parameterizer& p, program::Stopwatch& clock, program::Output_files& outputs)
+{
+  if(o.isolines.empty())
+    return;
+  const auto lines = p.isolines();
+  std::size_t closed = 0, points = 0;
+  for(const auto& line : lines)
+  {
+    closed += line.closed ? 1 : 0;
+    points += line.points.size();
+  }
+  write_isolines(outputs.stage(o.isolines), lines);
+  std::cout << "isolines: " << lines.size() << " polylines (" << closed << " closed), " << points << " points ("
+            << clock.lap() << " ms)\n";
 }
 
 template <class Solver>
@@ -551,6 +606,7 @@ int run_branched(const Options& o, const Mesh& mesh, const std::vector<Vector>& 
     program::write_ply(outputs.stage(o.output), mesh, {}, props);
   }
 
+  isoline_output(o, bsp, clock, outputs);
   if(!o.picture.empty())
   {
     double largest = 0.;

@@ -28,7 +28,7 @@ refuse() {
   fi
 }
 
-# accept PROGRAM ARGS...: must exit 0 and write every file named after --output, --pattern and
+# accept PROGRAM ARGS...: must exit 0 and write every file named after --output, --pattern, --isolines and
 # --picture; every file it wrote must be non-empty and parse
 accept() {
   rm -rf "$WORK/out" && mkdir -p "$WORK/out"
@@ -43,7 +43,7 @@ accept() {
   fi
   local named=() previous="" arg
   for arg in "$@"; do
-    case "$previous" in --output|--pattern|--picture) named+=("$arg") ;; esac
+    case "$previous" in --output|--pattern|--picture|--isolines) named+=("$arg") ;; esac
     previous="$arg"
   done
   local written=()
@@ -107,14 +107,16 @@ for args in "--field smoothest:3" "--field smoothest:" "--field smoothest:x" "--
             "--field smoothest:2 --winding 0:1" "--field smoothest:2 --singularity 100:1:1" \
             "--field smoothest:4 --singularity 100:1:2" "--singularity 100:1:1" "--singularity 100:1:-1" \
             "--singularity 100:1:x" "--field smoothest:4 --no-automatic --no-automatic" "--no-automatic" \
-            "--field smoothest:2 --no-automatic --singularity 100:1" "--field smoothest:2 --singularity 100:2000000"; do
+            "--field smoothest:2 --no-automatic --singularity 100:1" "--field smoothest:2 --singularity 100:2000000" \
+            "--isolines $O/i.txt" "--isolines $O/s.ply" "--isolines /nonexistent/i.obj" "--isolines"; do
   # shellcheck disable=SC2086
   refuse stripes "$B1K" $args --output "$O/s.ply"
 done
-accept stripes "$B1K" --field smoothest:2 --output "$O/line.ply" --picture "$O/line.png"
+accept stripes "$B1K" --field smoothest:2 --output "$O/line.ply" --picture "$O/line.png" --isolines "$O/line.obj"
+accept stripes "$B1K" --singularity 100:1 --singularity 400:-1 --isolines "$O/vector.obj"
 accept stripes "$B1K" --field smoothest:4 --singularity 100:1 --singularity 400:-1:1 --output "$O/cross.ply"
 accept stripes "$DATA/hemisphere.off" --field principal --no-automatic --output "$O/principal.ply"
-accept stripes "$DATA/torus.off" --field trivial4:10:1,500:-1 --output "$O/trivial.ply"
+accept stripes "$DATA/torus.off" --field trivial4:10:1,500:-1 --output "$O/trivial.ply" --isolines "$O/trivial.obj"
 
 }
 

@@ -63,7 +63,7 @@ def check_off(data):
 
 
 def check_obj(data):
-    nv, faces = 0, []
+    nv, faces, polylines = 0, [], []
     for line in data.decode().splitlines():
         items = line.split()
         if not items:
@@ -73,9 +73,18 @@ def check_obj(data):
             nv += 1
         elif items[0] == "f":
             faces.append([int(x.split("/")[0]) - 1 for x in items[1:]])
+        elif items[0] == "l":
+            polylines.append([int(x.split("/")[0]) - 1 for x in items[1:]])
     if nv == 0:
         raise Bad("no vertex")
     check_faces(faces, nv)
+    for line in polylines:  # a polyline: at least two points, indices in range, no zero-length step
+        if len(line) < 2 or min(line) < 0 or max(line) >= nv:
+            raise Bad(f"a polyline of {len(line)} points with indices out of range (0..{nv - 1}): {line[:8]}")
+        if any(a == b for a, b in zip(line, line[1:])):
+            raise Bad(f"a polyline that repeats a point in a row: {line[:8]}")
+    if not faces and not polylines:
+        raise Bad("neither faces nor polylines")
     return nv, len(faces)
 
 
@@ -323,6 +332,7 @@ def self_test():
     good = {"a.off": b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
             "b.off": b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 255 0 0\n",
             "a.obj": b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+            "lines.obj": b"v 0 0 0\nv 1 0 0\nv 0 1 0\ng level_0\nl 1 2 3 1\n",
             "a.ply": ply_header + ply_body,
             "b.ply": b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
                      b"element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
@@ -335,6 +345,9 @@ def self_test():
            "nan.off": b"OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n",
            "range.off": b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n",
            "repeat.obj": b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2\n",
+           "range_line.obj": b"v 0 0 0\nv 1 0 0\nl 1 3\n",
+           "stutter_line.obj": b"v 0 0 0\nv 1 0 0\nl 1 2 2\n",
+           "points.obj": b"v 0 0 0\nv 1 0 0\n",
            "short.ply": ply_header + ply_body[:-4],
            "jump.ply": stripes_ply(0.5),
            "long.ply": ply_header + ply_body + b"\0",

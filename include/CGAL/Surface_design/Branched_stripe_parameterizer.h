@@ -20,6 +20,7 @@
 #include <CGAL/Surface_design/internal/Core/topology.h>
 #include <CGAL/Surface_design/internal/Core/validation.h>
 #include <CGAL/Surface_design/internal/Field_aligned_parameterization/stripe_interpolation.h>
+#include <CGAL/Surface_design/internal/Field_aligned_parameterization/stripe_isolines.h>
 #include <CGAL/Surface_design/internal/Field_aligned_parameterization/stripe_relaxation.h>
 #include <CGAL/Surface_design/parameters.h>
 #include <CGAL/Surface_design/solver_traits.h>
@@ -434,6 +435,44 @@ public:
       throw Invalid_constraints("face " + std::to_string(i) + " is not a branch face");
     const Value c = branch_value(i);
     return {c[0], c[1]};
+  }
+
+  /// One isoline: `points` (a polyline on the surface, the first point not repeated when
+  /// `closed`), `faces` (faces[i] is crossed from points[i] to the next point), `level` (0 or pi:
+  /// the angle along the line modulo 2 pi) and `family` (of the face where the line starts: a line
+  /// of a cross field follows its family where the two are exchanged).
+  using Isoline = internal::Stripe_isoline<Point_3, face_descriptor>;
+
+  /// The isolines of the stripe angles at 0 and pi (modulo 2 pi), of every family: the centre
+  /// lines of the dark and of the light stripes of cos(angle), the lines a plotter, a laser or a
+  /// quad extraction follows. They follow the interpolation of `value()`: straight in a regular
+  /// face, through or around the branch point in a branch face, and on a grid of
+  /// `singular_face_subdivision`² triangles in a face with a stripe singularity (where the
+  /// angle is not linear). Lines end only on the boundary, at branch points and singularities,
+  /// and where several lines meet (a mesh vertex exactly at a level).
+  /// \throws Invalid_constraints before `solve()`; Invalid_parameter if
+  ///         `singular_face_subdivision` is not in [1, 64]
+  std::vector<Isoline> isolines(int singular_face_subdivision = 8) const
+  {
+    internal::check_isoline_subdivision(singular_face_subdivision);
+    solution();
+    internal::Stripe_isoline_builder builder(m_idx->number_of_vertices(), m_idx->number_of_edges());
+    for(std::size_t f = 0; f < m_idx->number_of_faces(); ++f)
+    {
+      const auto face = internal::stripe_isoline_face(*m_idx, m_vpm, f);
+      const auto beta = walk(f);
+      for(int a = 0; a < number_of_families(); ++a)
+      {
+        if(!cover().regular[f])
+          internal::add_branch_face_isolines(builder, face, a, {beta[0][a], beta[1][a], beta[2][a], beta[3][a]},
+                                             branch_value(f)[a]);
+        else
+          internal::add_regular_face_isolines(builder, face, a, {beta[0][a], beta[1][a], beta[2][a]},
+                                              int(std::lround(m_solver->curl(solution().y, f)[a] / internal::two_pi)),
+                                              singular_face_subdivision);
+      }
+    }
+    return internal::stripe_isolines_of<Point_3>(builder, *m_idx);
   }
   /// @}
 

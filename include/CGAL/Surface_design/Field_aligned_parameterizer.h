@@ -17,6 +17,7 @@
 #include <CGAL/Surface_design/internal/Core/Periodic_one_form_solver.h>
 #include <CGAL/Surface_design/internal/Core/topology.h>
 #include <CGAL/Surface_design/internal/Core/validation.h>
+#include <CGAL/Surface_design/internal/Field_aligned_parameterization/stripe_isolines.h>
 #include <CGAL/Surface_design/internal/Field_aligned_parameterization/target_one_form.h>
 #include <CGAL/Surface_design/parameters.h>
 #include <CGAL/Surface_design/solver_traits.h>
@@ -448,6 +449,35 @@ public:
       u += dalpha(next(h0, m_tm));
       put(out, next(h0, m_tm), u);
     }
+  }
+
+  /// One isoline: `points` (a polyline on the surface, the first point not repeated when
+  /// `closed`), `faces` (faces[i] is crossed from points[i] to the next point), `level` (0 or pi:
+  /// alpha along the line modulo 2 pi), `family` (always 0 here).
+  using Isoline = internal::Stripe_isoline<typename boost::property_traits<VertexPointMap>::value_type, face_descriptor>;
+
+  /// The isolines of alpha at 0 and pi (modulo 2 pi): the centre lines of the dark and of the
+  /// light stripes of cos(alpha), as polylines for plotters, lasers and vector graphics. Straight
+  /// in every face without singularity (alpha is linear there); in a face with index k != 0,
+  /// alpha is interpolated with a winding term about the centroid (Knöppel et al. 2015, sec. 6)
+  /// sampled on a grid of `singular_face_subdivision`² triangles. Lines end only on the
+  /// boundary, in singular faces, and where several lines meet (a vertex exactly at a level).
+  /// \throws Invalid_constraints before `solve()`; Invalid_parameter if
+  ///         `singular_face_subdivision` is not in [1, 64]
+  std::vector<Isoline> isolines(int singular_face_subdivision = 8) const
+  {
+    internal::check_isoline_subdivision(singular_face_subdivision);
+    require_solved();
+    internal::Stripe_isoline_builder builder(indices().number_of_vertices(), indices().number_of_edges());
+    for(std::size_t f = 0; f < indices().number_of_faces(); ++f)
+    {
+      const halfedge_descriptor h = halfedge(indices().face(f), m_tm);
+      const double c0 = m_alpha[indices().source_index(h)], c1 = c0 + dalpha(h), c2 = c1 + dalpha(next(h, m_tm));
+      const double turn = c2 + dalpha(next(next(h, m_tm), m_tm)) - c0;
+      internal::add_regular_face_isolines(builder, internal::stripe_isoline_face(indices(), m_vpm, f), 0, {c0, c1, c2},
+                                          int(std::lround(turn / internal::two_pi)), singular_face_subdivision);
+    }
+    return internal::stripe_isolines_of<typename boost::property_traits<VertexPointMap>::value_type>(builder, indices());
   }
 
   /// The energy sum_e w_e (dalpha_e - omega_e)^2 of the last solve (with the field of that
