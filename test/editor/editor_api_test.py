@@ -66,8 +66,9 @@ def windings(server):
     return found, alpha, faces, index
 
 
-def singularities(state):
-    return {f: k for f, k in state["singularities"]}
+def singularities(state, family=0):
+    """Face -> index of one stripe family (the state lists [face, index, family])."""
+    return {f: k for f, k, a in state["singularities"] if a == family}
 
 
 def expect_refused(server, request, words, what):
@@ -137,6 +138,148 @@ def hostile_requests(server):
     check("an edit from the editor's own page", status == 200, status)
     status, _, _ = server.request("POST", "api/edit", '{"op": "state"}', content_type="application/json; charset=utf-8")
     check("application/json with a charset", status == 200, status)
+
+
+def corner_readings(mesh, state, data):
+    """An independent reading of a line or cross field's pattern from the state's corner data:
+    (worst mismatch of the angle increments along the interior edges between two regular faces
+    without singularity, up to the field's symmetry; face -> winding of the wrapped corner values
+    of each family, where it is not 0, regular faces only)."""
+    nf, families = state["faces"], state["families"]
+    u = [data[0:3 * nf]] + ([data[3 * nf:6 * nf]] if families == 2 else [])
+    T = mesh["triangles"]
+    branch = {f for f, _ in state["branch_faces"]}
+    singular = {f for f, _, _ in state["singularities"]}
+    wound = {}
+    for f in range(nf):
+        if f in branch:
+            continue
+        for a in range(families):
+            c = u[a][3 * f:3 * f + 3]
+            k = round((wrap(c[1] - c[0]) + wrap(c[2] - c[1]) + wrap(c[0] - c[2])) / (2 * math.pi))
+            if k:
+                wound[(f, a)] = k
+    edge_faces = {}
+    for f in range(nf):
+        for k in range(3):
+            a, b = T[3 * f + k], T[3 * f + (k + 1) % 3]
+            edge_faces.setdefault((min(a, b), max(a, b)), []).append((f, k))
+    worst = 0.0
+    for (a, b), pair in edge_faces.items():
+        if len(pair) != 2 or any(f in branch or f in singular for f, _ in pair):
+            continue
+        steps = []
+        for f, k in pair:  # the increment of each family from vertex a to vertex b in face f
+            i, j = (k, (k + 1) % 3) if T[3 * f + k] == a else ((k + 1) % 3, k)
+            steps.append([u[x][3 * f + j] - u[x][3 * f + i] for x in range(families)])
+        x, y = steps
+        maps = [[y[0]], [-y[0]]] if families == 1 else [[y[0], y[1]], [y[1], -y[0]], [-y[0], -y[1]], [-y[1], y[0]]]
+        worst = max(worst, min(max(abs(p - q) for p, q in zip(x, m)) for m in maps))
+    return worst, wound
+
+
+def line_and_cross_fields(server, nf):
+    """Stripes on line (order 2) and cross (order 4) fields: the branch faces drawn as three
+    triangles, stripe singularities of each family placed, moved and annihilated exactly, field
+    singularities of +-1/2 placed, dragged and annihilated."""
+    mesh = server.json("api/mesh")
+    status, state, data = server.edit({"op": "field", "kind": "smoothest", "order": 2})
+    check("line field: order 2, one family", status == 200 and state["order"] == 2 and state["families"] == 1, state)
+    branch = {f for f, _ in state["branch_faces"]}
+    check("line field: the bunny's smoothest line field has branch faces of index +-1/2, summing to 2",
+          len(branch) >= 4 and sum(k for _, k in state["branch_faces"]) == 4 and
+          all(abs(k) % 2 == 1 for _, k in state["branch_faces"]), state["branch_faces"])
+    check("line field: three triangles per branch face, 15 floats each, after the corner data",
+          state["overlay"] == 3 * len(branch) and len(data) == 3 * nf + 15 * state["overlay"], (state["overlay"], len(data)))
+    check("line field: the stripe singularities of the vector field are dropped", state["singularities"] == [])
+    worst, wound = corner_readings(mesh, state, data)
+    check("line field: the pattern is continuous across every regular edge (up to sign)", worst < 1e-3, worst)
+    check("line field: no stripe singularity", wound == {}, wound)
+    free = [f for f in range(0, nf, 97) if f not in branch][:4]
+    status, state, data = server.edit({"op": "add_pair", "plus": free[0], "minus": free[1]})
+    check("line field: a +1/-1 pair", status == 200 and singularities(state) == {free[0]: 1, free[1]: -1}, state)
+    worst, wound = corner_readings(mesh, state, data)
+    check("line field: the corner data winds exactly there", wound == {(free[0], 0): 1, (free[1], 0): -1}, wound)
+    status, state, data = server.edit({"op": "move", "from": free[1], "to": free[2]})
+    check("line field: move", status == 200 and singularities(state) == {free[0]: 1, free[2]: -1}, state)
+    worst, wound = corner_readings(mesh, state, data)
+    check("line field: after the move the corner data winds at the new face", wound == {(free[0], 0): 1, (free[2], 0): -1}, wound)
+    check("line field: a move is a back-substitution (no factorization timed)", "factor_and_solve_ms" not in state["timing"],
+          state["timing"])
+    expect_refused(server, {"op": "add", "face": min(branch), "index": 1}, ["branch"], "a stripe singularity in a branch face")
+    expect_refused(server, {"op": "add_pair", "plus": free[3], "minus": free[0], "family": 1}, ["one family"],
+                   "the second family on a line field")
+    status, state, data = server.edit({"op": "annihilate", "a": free[0], "b": free[2]})
+    check("line field: annihilate", status == 200 and state["singularities"] == [], state)
+    status, state, _ = server.edit({"op": "automatic"})
+    check("line field: automatic singularities", status == 200 and "automatic_ms" in state["timing"], state)
+    status, _, body = server.request("GET", "api/export.ply")
+    check("line field: the PLY has the corner angles", status == 200 and b"property list uchar float corner_alpha" in body and
+          b"stripe_index" in body and b"field_index" in body, body[:400])
+
+    # a cross field: two families
+    status, state, data = server.edit({"op": "field", "kind": "smoothest", "order": 4})
+    check("cross field: order 4, two families", status == 200 and state["order"] == 4 and state["families"] == 2, state)
+    branch = {f for f, _ in state["branch_faces"]}
+    check("cross field: branch faces summing to 4 chi = 8 quarters", sum(k for _, k in state["branch_faces"]) == 8,
+          state["branch_faces"])
+    check("cross field: both families' corner data and the overlay",
+          len(data) == 6 * nf + 15 * state["overlay"] and state["overlay"] == 3 * len(branch), len(data))
+    free = [f for f in range(0, nf, 89) if f not in branch][:3]
+    status, state, data = server.edit({"op": "add_pair", "plus": free[0], "minus": free[1], "family": 1})
+    check("cross field: a pair of the second family", status == 200 and singularities(state, 1) == {free[0]: 1, free[1]: -1}
+          and singularities(state, 0) == {}, state)
+    worst, wound = corner_readings(mesh, state, data)
+    check("cross field: continuous across regular edges up to quarter turns", worst < 1e-3, worst)
+    # (an edge next to a singularity may carry more than half a stripe: the wrapped corner data
+    # then shows the winding in a face touching it, as for vector fields on coarse meshes)
+    T = mesh["triangles"]
+    touching = lambda f, g: bool(set(T[3 * f:3 * f + 3]) & set(T[3 * g:3 * g + 3]))
+    check("cross field: the second family winds +1 and -1 there or in a face touching it",
+          sorted(wound.values()) == [-1, 1] and all(a == 1 and touching(f, free[0] if k == 1 else free[1])
+                                                    for (f, a), k in wound.items()), wound)
+    status, state, data = server.edit({"op": "move", "from": free[1], "to": free[2]})
+    check("cross field: move", status == 200 and singularities(state, 1) == {free[0]: 1, free[2]: -1}, state)
+    expect_refused(server, {"op": "annihilate", "a": free[0], "b": free[0] + 1}, ["opposite"], "annihilating a lone singularity")
+    status, state, data = server.edit({"op": "annihilate", "a": free[0], "b": free[2]})
+    check("cross field: annihilate", status == 200 and state["singularities"] == [], state)
+
+    # a line field with its own singularities: a trivial connection of order 2
+    status, state, data = server.edit({"op": "field", "kind": "trivial", "order": 2})
+    field_singular = dict((f, k) for f, k in state["field_singularities"]) if status == 200 else {}
+    check("trivial line field: +1/2 singularities summing to chi", status == 200 and sum(field_singular.values()) == 4
+          and all(k == 1 for k in field_singular.values()), state)
+    check("trivial line field: its branch faces are exactly the prescribed singularities",
+          dict((f, k) for f, k in state["branch_faces"]) == field_singular, (state["branch_faces"], field_singular))
+    spare = [f for f in range(5, nf, 101) if f not in field_singular][:3]
+    status, state, data = server.edit({"op": "add_field_pair", "plus": spare[0], "minus": spare[1]})
+    field_singular = dict((f, k) for f, k in state["field_singularities"]) if status == 200 else {}
+    check("trivial line field: a +1/2 -1/2 pair", status == 200 and field_singular.get(spare[0]) == 1 and
+          field_singular.get(spare[1]) == -1 and dict((f, k) for f, k in state["branch_faces"]) == field_singular, state)
+    status, state, data = server.edit({"op": "move_field_singularity", "from": spare[1], "to": spare[2]})
+    field_singular = dict((f, k) for f, k in state["field_singularities"]) if status == 200 else {}
+    check("trivial line field: drag the -1/2", status == 200 and field_singular.get(spare[2]) == -1 and
+          spare[1] not in field_singular and dict((f, k) for f, k in state["branch_faces"]) == field_singular, state)
+    worst, wound = corner_readings(mesh, state, data)
+    check("trivial line field: the stripes follow, continuous", worst < 1e-3 and wound == {}, (worst, wound))
+    expect_refused(server, {"op": "annihilate_field", "a": spare[0], "b": min(f for f in field_singular if f != spare[0] and
+                                                                              field_singular[f] == 1)},
+                   ["opposite"], "annihilating two +1/2")
+    status, state, data = server.edit({"op": "annihilate_field", "a": spare[0], "b": spare[2]})
+    check("trivial line field: annihilate the pair", status == 200 and len(state["field_singularities"]) == 4 and
+          spare[0] not in dict((f, k) for f, k in state["field_singularities"]), state)
+    expect_refused(server, {"op": "field", "kind": "smoothest", "order": 3}, ["order"], "a field of order 3")
+    expect_refused(server, {"op": "field", "kind": "heat", "vertex": 0, "order": 2}, ["vector field"], "a heat line field")
+    expect_refused(server, {"op": "field", "kind": "principal", "order": 4}, ["line field"], "a principal cross field")
+    status, state, _ = server.edit({"op": "field", "kind": "principal"})
+    check("principal curvature line field", status == 200 and state["order"] == 2 and state["field"]["kind"] == "principal", state)
+    expect_refused(server, {"op": "add_field_pair", "plus": 1, "minus": 2}, ["trivial"], "a field pair without a trivial connection")
+
+    # back to a vector field: one family, no overlay, the vector PLY
+    status, state, data = server.edit({"op": "field", "kind": "axis", "axis": [0, 1, 0]})
+    check("back to a vector field", status == 200 and state["order"] == 1 and state["overlay"] == 0 and len(data) == 3 * nf
+          and state["singularities"] == [], state)
+    expect_refused(server, {"op": "automatic"}, ["vector field"], "automatic singularities on a vector field")
 
 
 def main():
@@ -239,7 +382,7 @@ def run(server, data, nv, nf):
     status, state, _ = server.edit({"op": "field", "kind": "smoothest"})
     check("smoothest field", status == 200 and state["field"]["kind"] == "smoothest")
     status, state, _ = server.edit({"op": "field", "kind": "heat", "vertex": 0, "degrees": 45})
-    check("heat spiral", status == 200 and state["field"] == {"kind": "heat", "vertex": 0, "degrees": 45.0}, state["field"])
+    check("heat spiral", status == 200 and state["field"] == {"kind": "heat", "order": 1, "vertex": 0, "degrees": 45.0}, state["field"])
     status, state, _ = server.edit({"op": "field", "kind": "trivial"})
     field_singular = dict((f, k) for f, k in state["field_singularities"]) if status == 200 else {}
     check("trivial connection: its singularities sum to the Euler characteristic",
@@ -280,6 +423,8 @@ def run(server, data, nv, nf):
           after["singularities"] == before["singularities"] and after["field"] == before["field"] and
           after["field_singularities"] == before["field_singularities"])
     check("the final corner data is finite", all(map(math.isfinite, corners)))
+
+    line_and_cross_fields(server, nf)
 
     # another mesh: with boundary, a single +1 is fine, but not on a boundary face
     status, state, _ = server.edit({"op": "load", "name": "elephant-with-holes.off"})

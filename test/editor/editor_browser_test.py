@@ -136,7 +136,7 @@ def main():
     server_checks = [
         ("the server holds the +1/-1 pair at the clicked faces",
          server_state is not None and sorted(map(tuple, server_state["singularities"])) ==
-         sorted([(did.get("plus"), 1), (did.get("minus"), -1)]),
+         sorted([(did.get("plus"), 1, 0), (did.get("minus"), -1, 0)]),
          (server_state and server_state["singularities"], did)),
         ("the server applied as many edits as the page saw accepted (version)",
          server_state is not None and did.get("edits", 0) >= 6 and server_state["version"] == did.get("edits"),

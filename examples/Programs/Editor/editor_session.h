@@ -1,12 +1,14 @@
 // Copyright (c) 2026 The CGAL Surface Design authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The state of the stripe editor, apart from HTTP: one mesh, its Field_aligned_parameterizer
-// (factored once per mesh), the field the stripes follow, the prescribed singularities, and the
-// per-corner stripe coordinate of the last solve. Every edit is a JSON request; it either succeeds
-// and re-solves (one back-substitution for the singularities, O(|E|) for a new frequency, plus
-// the field's own solve when the field changes), or throws Request_error and leaves the state as
-// it was. The server (surface_design_editor.cpp) and the benchmark (benchmark/editor_latency.cpp)
+// The state of the stripe editor, apart from HTTP: one mesh, the field the stripes follow (a
+// vector field, or a line or cross field: symmetry order 1, 2 or 4), the stripes' solver for that
+// order (Field_aligned_parameterizer for vector fields, factored once per mesh;
+// Branched_stripe_parameterizer for line and cross fields, factored once per field), the
+// prescribed singularities, and the per-corner stripe angles of the last solve. Every edit is a
+// JSON request; it either succeeds and re-solves (one back-substitution for the singularities and
+// the frequency, plus the field's own solve, and for line and cross fields a factorization, when
+// the field changes), or throws Request_error and leaves the state as it was. The server (surface_design_editor.cpp) and the benchmark (benchmark/editor_latency.cpp)
 // drive this class.
 
 #ifndef CGAL_SURFACE_DESIGN_EDITOR_SESSION_H
@@ -15,6 +17,7 @@
 #include "../common/program_support.h"
 #include "../common/stripe_fields.h"
 
+#include <CGAL/Surface_design/Branched_stripe_parameterizer.h>
 #include <CGAL/Surface_design/direction_fields.h>
 #include <CGAL/Surface_design/exceptions.h>
 #include <CGAL/Surface_design/Field_aligned_parameterizer.h>
@@ -107,6 +110,7 @@ class Session
 {
   using Solver = SD::Default_solver_traits;
   using Parameterizer = SD::Field_aligned_parameterizer<Mesh>;
+  using Branched = SD::Branched_stripe_parameterizer<Mesh>;
   using Connection = SD::Trivial_connection<Mesh>;
 
 public:
@@ -131,7 +135,7 @@ public:
     geometry();
     m_stripes = (std::min)(10., 0.1 * m_diagonal / m_mean_edge);
     m_field = std::vector<Vector>(num_vertices(mesh), Vector(0., 1., 0.));
-    m_field_spec = {{"kind", "axis"}, {"axis", {0., 1., 0.}}};
+    m_field_spec = {{"kind", "axis"}, {"order", 1}, {"axis", {0., 1., 0.}}};
     m_fap->set_field(CGAL::make_property_map(m_field), m_stripes / m_diagonal);
     solve();
   }
@@ -188,91 +192,132 @@ public:
     {
       const std::size_t f = face_arg(request, "face");
       const int k = index_arg(request, "index");
-      singularities_edit([&] { m_fap->set_index(descriptor(f), m_fap->index(descriptor(f)) + k); },
+      const int a = family_arg(request);
+      singularities_edit([&] { set_stripe_index(f, a, stripe_index(f, a) + k); },
                          "adding index " + std::to_string(k) + " at face " + std::to_string(f));
     }
     else if(op == "add_pair")
     {
-      const std::size_t a = face_arg(request, "plus"), b = face_arg(request, "minus");
-      if(a == b)
-        throw Request_error("add_pair: the +1 and the -1 must be in different faces (both are " + std::to_string(a) + ")");
+      const std::size_t plus = face_arg(request, "plus"), minus = face_arg(request, "minus");
+      const int a = family_arg(request);
+      if(plus == minus)
+        throw Request_error("add_pair: the +1 and the -1 must be in different faces (both are " + std::to_string(plus) + ")");
       singularities_edit([&] {
-        m_fap->set_index(descriptor(a), m_fap->index(descriptor(a)) + 1);
-        m_fap->set_index(descriptor(b), m_fap->index(descriptor(b)) - 1);
-      }, "adding a +1/-1 pair at faces " + std::to_string(a) + " and " + std::to_string(b));
+        set_stripe_index(plus, a, stripe_index(plus, a) + 1);
+        set_stripe_index(minus, a, stripe_index(minus, a) - 1);
+      }, "adding a +1/-1 pair at faces " + std::to_string(plus) + " and " + std::to_string(minus));
     }
     else if(op == "move")
     {
       const std::size_t from = face_arg(request, "from"), to = face_arg(request, "to");
-      if(m_fap->index(descriptor(from)) == 0)
+      if(!has_stripe_singularity(from))
         throw Request_error("move: face " + std::to_string(from) + " holds no singularity");
       if(from == to)
         return state(received); // nothing moved: no solve
-      singularities_edit([&] { m_fap->move_singularity(descriptor(from), descriptor(to)); },
-                         "moving the singularity of face " + std::to_string(from) + " to face " + std::to_string(to));
+      singularities_edit([&] {
+        if(m_order == 1)
+          m_fap->move_singularity(descriptor(from), descriptor(to));
+        else
+          m_bsp->move_singularity(descriptor(from), descriptor(to));
+      }, "moving the singularity of face " + std::to_string(from) + " to face " + std::to_string(to));
     }
     else if(op == "annihilate")
     {
       const std::size_t a = face_arg(request, "a"), b = face_arg(request, "b");
-      singularities_edit([&] { m_fap->annihilate(descriptor(a), descriptor(b)); },
-                         "annihilating faces " + std::to_string(a) + " and " + std::to_string(b));
+      singularities_edit([&] {
+        if(m_order == 1)
+          return m_fap->annihilate(descriptor(a), descriptor(b));
+        bool opposite = a != b && has_stripe_singularity(a);
+        for(int family = 0; family < families(); ++family)
+          opposite = opposite && stripe_index(a, family) + stripe_index(b, family) == 0;
+        if(!opposite)
+          throw SD::Invalid_constraints("faces " + std::to_string(a) + " and " + std::to_string(b) +
+                                        " do not hold opposite singularities");
+        for(int family = 0; family < families(); ++family)
+          set_stripe_index(a, family, 0), set_stripe_index(b, family, 0);
+      }, "annihilating faces " + std::to_string(a) + " and " + std::to_string(b));
     }
     else if(op == "remove")
     {
       const std::size_t f = face_arg(request, "face");
-      if(m_fap->index(descriptor(f)) == 0)
+      if(!has_stripe_singularity(f))
         throw Request_error("remove: face " + std::to_string(f) + " holds no singularity");
-      singularities_edit([&] { m_fap->set_index(descriptor(f), 0); }, "removing the singularity of face " + std::to_string(f));
+      singularities_edit([&] {
+        for(int family = 0; family < families(); ++family)
+          set_stripe_index(f, family, 0);
+      }, "removing the singularity of face " + std::to_string(f));
     }
     else if(op == "clear")
-      singularities_edit([&] { m_fap->clear_indices(); }, "removing every singularity");
+      singularities_edit([&] { m_order == 1 ? m_fap->clear_indices() : m_bsp->clear_indices(); },
+                         "removing every singularity");
+    else if(op == "automatic")
+    {
+      if(m_order == 1)
+        throw Request_error("automatic: the singularities of stripes on a vector field are only the ones you place "
+                            "(choose a line or cross field)");
+      singularities_edit([&] {
+        const auto start = Clock::now();
+        m_bsp->place_automatic_singularities();
+        m_timing["automatic_ms"] = ms_since(start);
+      }, "placing the singularities automatically");
+    }
     else if(op == "frequency")
       set_stripes(number_arg(request, "stripes"));
     else if(op == "field")
       set_field(request);
     else if(op == "move_field_singularity")
       move_field_singularity(face_arg(request, "from"), face_arg(request, "to"));
+    else if(op == "add_field_pair")
+      add_field_pair(face_arg(request, "plus"), face_arg(request, "minus"));
+    else if(op == "annihilate_field")
+      annihilate_field(face_arg(request, "a"), face_arg(request, "b"));
     else
-      throw Request_error("unknown op '" + op + "' (add, add_pair, move, annihilate, remove, clear, frequency, field, "
-                          "move_field_singularity, load, state)");
+      throw Request_error("unknown op '" + op + "' (add, add_pair, move, annihilate, remove, clear, automatic, "
+                          "frequency, field, move_field_singularity, add_field_pair, annihilate_field, load, state)");
     ++m_version;
     return state(received);
   }
 
   /// The current state: a 4-byte little-endian length L, L bytes of JSON (padded with spaces to
-  /// a multiple of 4 bytes in all), then 3 float32 per face: the stripe coordinate u at the
-  /// corners of every face (cos u is the stripe pattern; u / 2 pi counts stripes).
+  /// a multiple of 4 bytes in all), then float32 data: the stripe angle u at the three corners of
+  /// every face (cos u is the stripe pattern; u / 2 pi counts stripes), for a cross field the
+  /// second family's angle v the same way, and for line and cross fields the three triangles
+  /// around the branch point of every branch face ("overlay" of them in the JSON), 15 floats per
+  /// triangle: x y z u v at each of its corners (the page draws these instead of the face).
   std::string state(Clock::time_point received = Clock::now()) const
   {
     const auto start = Clock::now();
-    const std::size_t nf = num_faces(*m_mesh);
-    std::string corners_bytes(3 * nf * sizeof(float), '\0');
-    float* out = reinterpret_cast<float*>(corners_bytes.data());
+    std::string data((m_u.size() + m_v.size() + m_overlay.size()) * sizeof(float), '\0');
+    float* out = reinterpret_cast<float*>(data.data());
+    for(const std::vector<float>* part : {&m_u, &m_v, &m_overlay})
+      out = std::copy(part->begin(), part->end(), out);
+    Json singular = Json::array(), field_singular = Json::array(), branch = Json::array();
     for(auto f : faces(*m_mesh))
-    {
-      std::size_t k = 0;
-      for(auto h : corners(f))
-        out[3 * std::size_t(f) + k++] = float(m_corner[h]);
-    }
-    Json singular = Json::array(), field_singular = Json::array();
-    for(auto f : faces(*m_mesh))
-      if(m_fap->index(f) != 0)
-        singular.push_back({std::size_t(f), m_fap->index(f)});
+      for(int a = 0; a < families(); ++a)
+        if(stripe_index(std::size_t(f), a) != 0)
+          singular.push_back({std::size_t(f), stripe_index(std::size_t(f), a), a});
     for(const auto& [f, k] : m_field_singularities)
       field_singular.push_back({f, k});
+    if(m_order > 1)
+      for(std::size_t f : m_bsp->branch_faces())
+        branch.push_back({f, m_bsp->field_index_numerator(descriptor(f))});
     Json timing = m_timing;
     timing["serialize_ms"] = ms_since(start);
     timing["server_ms"] = ms_since(received);
     const Json state{{"version", m_version},
                      {"mesh", m_name},
                      {"mesh_version", m_mesh_version},
-                     {"faces", nf},
+                     {"faces", num_faces(*m_mesh)},
+                     {"order", m_order},
+                     {"families", families()},
                      {"singularities", singular},
                      {"field", m_field_spec},
                      {"field_singularities", field_singular},
+                     {"branch_faces", branch},
+                     {"overlay", m_overlay.size() / 15},
                      {"stripes", m_stripes},
                      {"max_stripes", max_stripes()},
-                     {"energy", m_fap->energy()},
+                     {"energy", m_order == 1 ? m_fap->energy() : m_bsp->energy()},
                      {"timing", timing}};
     std::string header = state.dump();
     while((4 + header.size()) % 4 != 0)
@@ -281,20 +326,49 @@ public:
     const std::uint32_t length = std::uint32_t(header.size());
     for(int i = 0; i < 4; ++i)
       bytes[std::size_t(i)] = char((length >> (8 * i)) & 0xFF);
-    return bytes + header + corners_bytes;
+    return bytes + header + data;
   }
 
-  /// The stripes as an ASCII PLY: alpha per vertex, the prescribed index per face.
+  /// The stripes as an ASCII PLY. Vector field: alpha per vertex, the prescribed index per face.
+  /// Line and cross field: per face the stripe angles at its corners (corner_alpha, and
+  /// corner_beta for a cross field's second family, in the order of the face's vertices; linear
+  /// inside a regular face), the prescribed indices (stripe_index, stripe_index_beta) and the
+  /// field's index numerator (field_index: k for an index k / order).
   std::string export_ply() const
   {
-    program::Ply_property alpha{"alpha", "double", {}}, index{"index", "int", {}};
-    for(auto v : vertices(*m_mesh))
-      alpha.values.push_back(m_fap->alpha(v));
-    for(auto f : faces(*m_mesh))
-      index.values.push_back(m_fap->index(f));
+    std::vector<program::Ply_property> vertex_props, face_props;
+    if(m_order == 1)
+    {
+      program::Ply_property alpha{"alpha", "double", {}}, index{"index", "int", {}};
+      for(auto v : vertices(*m_mesh))
+        alpha.values.push_back(m_fap->alpha(v));
+      for(auto f : faces(*m_mesh))
+        index.values.push_back(m_fap->index(f));
+      vertex_props = {alpha};
+      face_props = {index};
+    }
+    else
+    {
+      program::Ply_property corner_alpha{"corner_alpha", "float", {}, 3}, corner_beta{"corner_beta", "float", {}, 3},
+        index{"stripe_index", "int", {}}, index_beta{"stripe_index_beta", "int", {}}, field{"field_index", "int", {}};
+      for(auto f : faces(*m_mesh))
+      {
+        for(int a = 0; a < families(); ++a)
+        {
+          const auto c = m_bsp->corner_values(f, a); // source(h), target(h), target(next(h)): the file starts at target(h)
+          (a == 0 ? corner_alpha : corner_beta).values.insert((a == 0 ? corner_alpha : corner_beta).values.end(),
+                                                             {c[1], c[2], c[0]});
+          (a == 0 ? index : index_beta).values.push_back(m_bsp->index(f, a));
+        }
+        field.values.push_back(m_bsp->field_index_numerator(f));
+      }
+      face_props = {corner_alpha, index, field};
+      if(families() == 2)
+        face_props.insert(face_props.end(), {corner_beta, index_beta});
+    }
     const auto file = std::filesystem::temp_directory_path() /
                       ("surface_design_editor_" + std::to_string(::getpid()) + "_" + std::to_string(m_version) + ".ply");
-    program::write_ply(file.string(), *m_mesh, {alpha}, {index});
+    program::write_ply(file.string(), *m_mesh, vertex_props, face_props);
     std::ifstream in(file, std::ios::binary);
     std::ostringstream content;
     content << in.rdbuf();
@@ -352,7 +426,55 @@ private:
       throw Request_error("index 0 adds nothing (use \"remove\")");
     return k;
   }
+  // the stripe family of an edit: 0, or 1 for a cross field's second family (default 0)
+  int family_arg(const Json& request) const
+  {
+    if(!request.contains("family"))
+      return 0;
+    const int a = int(integer_arg(request, "family", 0, 1));
+    if(a >= families())
+      throw Request_error("\"family\" = 1: the stripes of a " + std::string(m_order == 1 ? "vector" : "line") +
+                          " field have one family (0); a cross field has two");
+    return a;
+  }
   static Mesh::Face_index descriptor(std::size_t f) { return Mesh::Face_index(static_cast<std::uint32_t>(f)); }
+
+  // ---- the stripe singularities, of either solver
+  int families() const { return m_order == 4 ? 2 : 1; }
+  int stripe_index(std::size_t f, int a) const
+  {
+    return m_order == 1 ? m_fap->index(descriptor(f)) : m_bsp->index(descriptor(f), a);
+  }
+  void set_stripe_index(std::size_t f, int a, int k)
+  {
+    if(m_order == 1)
+      m_fap->set_index(descriptor(f), k);
+    else
+      m_bsp->set_index(descriptor(f), k, a);
+  }
+  bool has_stripe_singularity(std::size_t f) const
+  {
+    for(int a = 0; a < families(); ++a)
+      if(stripe_index(f, a) != 0)
+        return true;
+    return false;
+  }
+  // the non-zero indices: (face, family, index)
+  std::vector<std::array<int, 3>> stripe_indices() const
+  {
+    std::vector<std::array<int, 3>> out;
+    for(auto f : faces(*m_mesh))
+      for(int a = 0; a < families(); ++a)
+        if(const int k = stripe_index(std::size_t(f), a); k != 0)
+          out.push_back({int(f), a, k});
+    return out;
+  }
+  void restore_stripe_indices(const std::vector<std::array<int, 3>>& indices)
+  {
+    m_order == 1 ? m_fap->clear_indices() : m_bsp->clear_indices();
+    for(const auto& [f, a, k] : indices)
+      set_stripe_index(std::size_t(f), a, k);
+  }
 
   // the three halfedges of face f, whose targets are its corners, in the order of mesh_json()
   std::array<Mesh::Halfedge_index, 3> corners(Mesh::Face_index f) const
@@ -366,11 +488,8 @@ private:
   template <class Change>
   void singularities_edit(Change&& change, const std::string& what)
   {
-    const std::vector<int> before = m_fap->indices_per_face();
-    auto restore = [&] {
-      for(auto f : faces(*m_mesh))
-        m_fap->set_index(f, before[std::size_t(f)]);
-    };
+    const auto before = stripe_indices();
+    auto restore = [&] { restore_stripe_indices(before); };
     try
     {
       change();
@@ -379,11 +498,13 @@ private:
     catch(const SD::Invalid_constraints& e)
     {
       restore();
+      solve();
       throw Request_error(what + ": " + e.what() + closed_hint());
     }
     catch(const SD::Invalid_parameter& e)
     {
       restore();
+      solve();
       throw Request_error(what + ": " + e.what());
     }
   }
@@ -405,22 +526,44 @@ private:
     m_stripes = stripes;
     try
     {
-      set_field_and_solve();
+      if(m_order == 1)
+        m_fap->set_field(CGAL::make_property_map(m_field), m_stripes / m_diagonal);
+      else
+        m_bsp->set_frequency(m_stripes / m_diagonal);
+      solve();
     }
     catch(const std::invalid_argument& e)
     {
       m_stripes = before;
-      set_field_and_solve();
+      m_order == 1 ? m_fap->set_field(CGAL::make_property_map(m_field), m_stripes / m_diagonal)
+                   : m_bsp->set_frequency(m_stripes / m_diagonal);
+      solve();
       throw Request_error(std::string("frequency: ") + e.what());
     }
+  }
+
+  // the symmetry order of a field request: "order" 1, 2 or 4 (default 1; principal: 2)
+  int order_arg(const Json& request, const std::string& kind) const
+  {
+    const int order = request.contains("order") ? int(integer_arg(request, "order", 1, 4)) : (kind == "principal" ? 2 : 1);
+    if(order == 3)
+      throw Request_error("\"order\" = 3: choose 1 (vector field), 2 (line field) or 4 (cross field)");
+    if(kind == "heat" && order != 1)
+      throw Request_error("the heat field is a vector field (order 1)");
+    if(kind == "principal" && order != 2)
+      throw Request_error("the principal curvature field is a line field (order 2)");
+    return order;
   }
 
   void set_field(const Json& request)
   {
     const std::string kind = text_arg(request, "kind");
+    if(kind != "axis" && kind != "smoothest" && kind != "heat" && kind != "trivial" && kind != "principal")
+      throw Request_error("unknown field kind '" + kind + "' (axis, smoothest, principal, heat, trivial)");
+    const int order = order_arg(request, kind);
     const auto start = Clock::now();
     std::vector<Vector> field;
-    Json spec{{"kind", kind}};
+    Json spec{{"kind", kind}, {"order", order}};
     std::map<std::size_t, int> field_singularities;
     std::unique_ptr<Connection> connection;
     if(kind == "axis")
@@ -437,18 +580,26 @@ private:
       field.assign(num_vertices(*m_mesh), Vector(x / largest, y / largest, z / largest));
       spec["axis"] = {x, y, z};
     }
-    else if(kind == "smoothest")
+    else if(kind == "smoothest" || kind == "principal")
     {
-      if(!m_smoothest)
+      const int key = kind == "principal" ? 0 : order; // the cache: 0 holds the principal field
+      auto it = m_fields.find(key);
+      if(it == m_fields.end())
       {
-        std::vector<Vector> smoothest(num_vertices(*m_mesh));
+        std::vector<Vector> computed(num_vertices(*m_mesh));
         wrap_library([&] {
-          SD::smoothest_direction_field(*m_mesh, CGAL::make_property_map(smoothest),
-                                        SD::parameters::sparse_linear_solver(m_field_solver));
-        }, "smoothest field");
-        m_smoothest = std::move(smoothest);
+          if(kind == "principal")
+            SD::smoothest_direction_field(*m_mesh, CGAL::make_property_map(computed),
+                                          SD::parameters::symmetry_order(
+                                            2, SD::parameters::curvature_alignment_weight(
+                                                 0.1, SD::parameters::sparse_linear_solver(m_field_solver))));
+          else
+            SD::smoothest_direction_field(*m_mesh, CGAL::make_property_map(computed),
+                                          SD::parameters::symmetry_order(order).sparse_linear_solver(m_field_solver));
+        }, kind + " field");
+        it = m_fields.emplace(key, std::move(computed)).first;
       }
-      field = *m_smoothest;
+      field = it->second;
     }
     else if(kind == "heat")
     {
@@ -463,10 +614,11 @@ private:
       spec["vertex"] = v;
       spec["degrees"] = degrees;
     }
-    else if(kind == "trivial")
+    else // trivial
     {
-      connection = std::make_unique<Connection>(*m_mesh, SD::parameters::sparse_linear_solver(m_field_solver));
-      field_singularities = default_field_singularities();
+      connection = std::make_unique<Connection>(
+        *m_mesh, SD::parameters::symmetry_order(order).sparse_linear_solver(m_field_solver));
+      field_singularities = default_field_singularities(order);
       for(const auto& [f, k] : field_singularities)
         connection->set_index(f, k);
       field.resize(num_vertices(*m_mesh));
@@ -475,65 +627,196 @@ private:
         connection->field(CGAL::make_property_map(field));
       }, "trivial connection");
     }
-    else
-      throw Request_error("unknown field kind '" + kind + "' (axis, smoothest, heat, trivial)");
     const double field_ms = ms_since(start);
     // all or nothing: the stripes solve with the new field, or everything stays
-    std::swap(field, m_field);
-    try
-    {
-      set_field_and_solve();
-    }
-    catch(const std::invalid_argument& e)
-    {
-      std::swap(field, m_field);
-      set_field_and_solve();
-      throw Request_error(std::string("field ") + kind + ": " + e.what());
-    }
+    install_field(std::move(field), order, "field " + kind);
     m_field_spec = spec;
     m_connection = std::move(connection);
     m_field_singularities = std::move(field_singularities);
     m_timing["field_ms"] = field_ms;
   }
 
-  void move_field_singularity(std::size_t from, std::size_t to)
+  // Makes `field` (of symmetry order `order`) the stripes' field and solves, or throws
+  // Request_error with everything as it was. The stripe singularities are kept when the order
+  // stays (refused if one lies in a branch face of the new field), dropped when it changes.
+  void install_field(std::vector<Vector> field, int order, const std::string& what)
+  {
+    const auto start = Clock::now();
+    if(order == 1)
+    {
+      if(m_order == 1)
+      {
+        std::swap(field, m_field);
+        try
+        {
+          m_fap->set_field(CGAL::make_property_map(m_field), m_stripes / m_diagonal);
+          solve();
+        }
+        catch(const std::invalid_argument& e)
+        {
+          std::swap(field, m_field);
+          m_fap->set_field(CGAL::make_property_map(m_field), m_stripes / m_diagonal);
+          solve();
+          throw Request_error(what + ": " + e.what());
+        }
+      }
+      else
+      {
+        // back to a vector field, without singularities (the vector stripes are unused until
+        // then: a failure leaves the line or cross field's state as it was)
+        try
+        {
+          m_fap->clear_indices();
+          m_fap->set_field(CGAL::make_property_map(field), m_stripes / m_diagonal);
+          m_fap->solve();
+        }
+        catch(const std::invalid_argument& e)
+        {
+          throw Request_error(what + ": " + e.what());
+        }
+        m_field = std::move(field);
+        m_order = 1;
+        m_bsp.reset();
+        solve();
+      }
+    }
+    else if(order == m_order)
+    {
+      // the same order: set_field keeps the singularities, or throws and changes nothing
+      try
+      {
+        m_bsp->set_field(CGAL::make_property_map(field), m_stripes / m_diagonal);
+      }
+      catch(const std::invalid_argument& e)
+      {
+        throw Request_error(what + ": " + e.what());
+      }
+      std::swap(field, m_field);
+      try
+      {
+        solve();
+      }
+      catch(const std::invalid_argument& e)
+      {
+        std::swap(field, m_field);
+        m_bsp->set_field(CGAL::make_property_map(m_field), m_stripes / m_diagonal);
+        solve();
+        throw Request_error(what + ": " + e.what());
+      }
+    }
+    else
+    {
+      auto bsp = std::make_unique<Branched>(
+        *m_mesh, SD::parameters::symmetry_order(order).sparse_linear_solver(Solver()));
+      try
+      {
+        bsp->set_field(CGAL::make_property_map(field), m_stripes / m_diagonal);
+        bsp->solve();
+      }
+      catch(const std::invalid_argument& e)
+      {
+        throw Request_error(what + ": " + e.what());
+      }
+      m_bsp = std::move(bsp);
+      m_field = std::move(field);
+      m_order = order;
+      solve();
+    }
+    m_timing["factor_and_solve_ms"] = ms_since(start);
+  }
+
+  // the field singularity edits below need a trivial connection
+  Connection& connection(const char* op) const
   {
     if(!m_connection)
-      throw Request_error("move_field_singularity: the field is not a trivial connection (choose \"trivial\" first)");
-    const auto it = m_field_singularities.find(from);
-    if(it == m_field_singularities.end())
-      throw Request_error("move_field_singularity: face " + std::to_string(from) + " holds no field singularity");
-    if(m_field_singularities.count(to))
-      throw Request_error("move_field_singularity: face " + std::to_string(to) +
-                          " already holds a field singularity (a vector field turns at most once around a face)");
-    const int k = it->second;
+      throw Request_error(std::string(op) + ": the field is not a trivial connection (choose \"trivial\" first)");
+    return *m_connection;
+  }
+
+  // Sets the trivial connection's indices (numerators) in `changes`, solves it and the stripes;
+  // on failure puts everything back.
+  void edit_field_singularities(const std::map<std::size_t, int>& changes, const std::string& what)
+  {
+    Connection& tc = connection(what.c_str());
+    std::map<std::size_t, int> before;
+    for(const auto& [f, k] : changes)
+      before[f] = tc.index(descriptor(f));
     const auto start = Clock::now();
     std::vector<Vector> field(num_vertices(*m_mesh));
+    auto restore = [&] {
+      for(const auto& [f, k] : before)
+        tc.set_index(descriptor(f), k);
+      tc.solve();
+    };
     try
     {
-      m_connection->set_index(from, 0);
-      m_connection->set_index(to, k);
-      m_connection->solve();
-      m_connection->field(CGAL::make_property_map(field));
+      for(const auto& [f, k] : changes)
+        tc.set_index(descriptor(f), k);
+      tc.solve();
+      tc.field(CGAL::make_property_map(field));
     }
     catch(const std::invalid_argument& e)
     {
-      m_connection->set_index(to, 0);
-      m_connection->set_index(from, k);
-      m_connection->solve();
-      throw Request_error("move_field_singularity from face " + std::to_string(from) + " to face " +
-                          std::to_string(to) + ": " + e.what());
+      restore();
+      throw Request_error(what + ": " + e.what());
     }
     m_timing["field_ms"] = ms_since(start);
-    std::swap(field, m_field);
-    set_field_and_solve();
-    m_field_singularities.erase(it);
-    m_field_singularities[to] = k;
+    try
+    {
+      install_field(std::move(field), m_order, what);
+    }
+    catch(const Request_error&)
+    {
+      restore();
+      throw;
+    }
+    for(const auto& [f, k] : changes)
+      k == 0 ? void(m_field_singularities.erase(f)) : void(m_field_singularities[f] = k);
   }
 
-  // |chi| singularities of the sign of chi on every closed component with chi != 0, spread out by
-  // farthest-point sampling of the face centroids, starting from the highest face (+Y)
-  std::map<std::size_t, int> default_field_singularities() const
+  void move_field_singularity(std::size_t from, std::size_t to)
+  {
+    connection("move_field_singularity");
+    const auto it = m_field_singularities.find(from);
+    if(it == m_field_singularities.end())
+      throw Request_error("move_field_singularity: face " + std::to_string(from) + " holds no field singularity");
+    if(from == to)
+      return;
+    if(m_field_singularities.count(to))
+      throw Request_error("move_field_singularity: face " + std::to_string(to) +
+                          " already holds a field singularity (the field turns at most once around a face)");
+    edit_field_singularities({{from, 0}, {to, it->second}},
+                             "move_field_singularity from face " + std::to_string(from) + " to face " + std::to_string(to));
+  }
+
+  // a +1/order and a -1/order field singularity (a vector field: +1 and -1)
+  void add_field_pair(std::size_t plus, std::size_t minus)
+  {
+    connection("add_field_pair");
+    if(plus == minus)
+      throw Request_error("add_field_pair: the two singularities must be in different faces (both are " +
+                          std::to_string(plus) + ")");
+    for(std::size_t f : {plus, minus})
+      if(m_field_singularities.count(f))
+        throw Request_error("add_field_pair: face " + std::to_string(f) + " already holds a field singularity");
+    edit_field_singularities({{plus, 1}, {minus, -1}}, "add_field_pair at faces " + std::to_string(plus) + " and " +
+                                                         std::to_string(minus));
+  }
+
+  void annihilate_field(std::size_t a, std::size_t b)
+  {
+    connection("annihilate_field");
+    const auto i = m_field_singularities.find(a), j = m_field_singularities.find(b);
+    if(a == b || i == m_field_singularities.end() || j == m_field_singularities.end() || i->second + j->second != 0)
+      throw Request_error("annihilate_field: faces " + std::to_string(a) + " and " + std::to_string(b) +
+                          " do not hold opposite field singularities");
+    edit_field_singularities({{a, 0}, {b, 0}}, "annihilate_field at faces " + std::to_string(a) + " and " +
+                                                 std::to_string(b));
+  }
+
+  // order |chi| singularities of index sign(chi) / order on every closed component with chi != 0,
+  // spread out by farthest-point sampling of the face centroids, starting from the highest face (+Y)
+  std::map<std::size_t, int> default_field_singularities(int order) const
   {
     std::map<std::size_t, int> result;
     const Mesh& mesh = *m_mesh;
@@ -548,7 +831,7 @@ private:
       for(std::size_t i = 1; i < candidates.size(); ++i)
         if(m_centroid[candidates[i]].y() > m_centroid[candidates[pick]].y())
           pick = i;
-      for(long n = 0; n < std::abs(chi) && n < long(candidates.size()); ++n)
+      for(long n = 0; n < order * std::abs(chi) && n < long(candidates.size()); ++n)
       {
         result[candidates[pick]] = chi > 0 ? 1 : -1;
         const Eigen::Vector3d c = m_centroid[candidates[pick]];
@@ -578,17 +861,72 @@ private:
     }
   }
 
-  void set_field_and_solve()
-  {
-    m_fap->set_field(CGAL::make_property_map(m_field), m_stripes / m_diagonal);
-    solve();
-  }
-
+  // Solves the stripes and reads the per-corner angles in the page's corner order (the targets
+  // of halfedge(f), next, next-next), and the triangles around the branch points.
   void solve()
   {
     const auto start = Clock::now();
-    m_fap->solve();
-    m_fap->corner_coordinates(m_corner);
+    const Mesh& mesh = *m_mesh;
+    const std::size_t nf = num_faces(mesh);
+    m_u.resize(3 * nf);
+    m_v.clear();
+    m_overlay.clear();
+    if(m_order == 1)
+    {
+      m_fap->solve();
+      m_fap->corner_coordinates(m_corner);
+      for(auto f : faces(mesh))
+      {
+        std::size_t k = 0;
+        for(auto h : corners(f))
+          m_u[3 * std::size_t(f) + k++] = float(m_corner[h]);
+      }
+      m_timing["solve_ms"] = ms_since(start);
+      return;
+    }
+    m_bsp->solve();
+    if(families() == 2)
+      m_v.resize(3 * nf);
+    for(auto f : faces(mesh))
+      for(int a = 0; a < families(); ++a)
+      {
+        const auto c = m_bsp->corner_values(f, a); // source(h), target(h), target(next(h))
+        float* out = (a == 0 ? m_u : m_v).data() + 3 * std::size_t(f);
+        out[0] = float(c[1]), out[1] = float(c[2]), out[2] = float(c[0]);
+      }
+    // a branch face as three triangles (corner i, corner i + 1, branch point), on each of which
+    // the angle is linear: values taken just inside each triangle's corners
+    for(std::size_t f : m_bsp->branch_faces())
+    {
+      const auto h = halfedge(descriptor(f), mesh);
+      const std::array<Eigen::Vector3d, 3> p{program::eigen(mesh.point(source(h, mesh))),
+                                             program::eigen(mesh.point(target(h, mesh))),
+                                             program::eigen(mesh.point(target(next(h, mesh), mesh)))};
+      const Eigen::Vector3d centre = (p[0] + p[1] + p[2]) / 3.;
+      for(int i = 0; i < 3; ++i)
+      {
+        const int j = (i + 1) % 3;
+        std::array<double, 3> middle{1. / 9., 1. / 9., 1. / 9.}; // the small triangle's centroid
+        middle[std::size_t(i)] += 1. / 3., middle[std::size_t(j)] += 1. / 3.;
+        for(int corner = 0; corner < 3; ++corner)
+        {
+          std::array<double, 3> b{1. / 3., 1. / 3., 1. / 3.};
+          Eigen::Vector3d x = centre;
+          if(corner < 2)
+          {
+            b = {0., 0., 0.};
+            b[std::size_t(corner == 0 ? i : j)] = 1.;
+            x = p[std::size_t(corner == 0 ? i : j)];
+          }
+          const double inward = 1e-7;
+          for(int l = 0; l < 3; ++l)
+            b[std::size_t(l)] = (1. - inward) * b[std::size_t(l)] + inward * middle[std::size_t(l)];
+          m_overlay.insert(m_overlay.end(), {float(x.x()), float(x.y()), float(x.z())});
+          for(int a = 0; a < 2; ++a)
+            m_overlay.push_back(a < families() ? float(m_bsp->value(descriptor(f), b, a)) : 0.f);
+        }
+      }
+    }
     m_timing["solve_ms"] = ms_since(start);
   }
 
@@ -664,7 +1002,10 @@ private:
   std::vector<std::pair<std::size_t, long>> m_closed_euler; // the closed components and their chi
   std::vector<Vector> m_field;
   Json m_field_spec;
-  std::optional<std::vector<Vector>> m_smoothest;
+  std::map<int, std::vector<Vector>> m_fields; // computed smoothest fields by order (0: principal)
+  int m_order = 1;                             // the field's symmetry order
+  std::unique_ptr<Branched> m_bsp;             // the stripes of a line or cross field
+  std::vector<float> m_u, m_v, m_overlay;      // the state's float data (see state())
   std::unique_ptr<Connection> m_connection;
   std::map<std::size_t, int> m_field_singularities;
   Json m_timing = Json::object();

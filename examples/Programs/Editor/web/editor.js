@@ -2,8 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The stripe editor's page: draws the mesh with three.js, shades the stripes per pixel from the
-// per-corner coordinate u that the server sends (cos u, so stripes stay crisp at any frequency),
-// and turns clicks and drags into edits (POST /api/edit). With ?selftest=1 it runs the browser
+// per-corner coordinate u that the server sends (cos u, so stripes stay crisp at any frequency;
+// on a cross field the brighter of cos u and cos v, a grid), draws every branch face of a line or
+// cross field as the three triangles around its branch point that the server sends, and turns
+// clicks and drags into edits (POST /api/edit). With ?selftest=1 it runs the browser
 // test's script: real pointer events on the canvas, checks, frames sent to the server.
 'use strict';
 
@@ -38,30 +40,43 @@ const ui = {
   stripes: document.getElementById('stripes'), stripesValue: document.getElementById('stripes-value'),
   error: document.getElementById('error'), hint: document.getElementById('hint'),
   singularities: document.getElementById('singularities'), latency: document.getElementById('latency'),
-  selftest: document.getElementById('selftest')
+  selftest: document.getElementById('selftest'), family: document.getElementById('family-choice'),
+  automatic: document.getElementById('automatic')
 };
+// the stripe family that clicks add to (a cross field's first or second family)
+function family() {
+  const checked = document.querySelector('input[name="family"]:checked');
+  return state && state.families > 1 && checked ? Number(checked.value) : 0;
+}
 
 // ---------------------------------------------------------------- the picture
 
 const vertexShader = `
 attribute float u;
+attribute float v;
 attribute float mark;
 varying float vU;
+varying float vV;
 varying float vMark;
 varying vec3 vNormal;
 void main() {
   vU = u;
+  vV = v;
   vMark = mark;
   vNormal = normalize(normalMatrix * normal);
   gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
 }`;
 const fragmentShader = `
+uniform float families;
 varying float vU;
+varying float vV;
 varying float vMark;
 varying vec3 vNormal;
 void main() {
+  if (vMark > 2.5) discard; // a branch face: the overlay's three triangles draw it
   // cos u per pixel, its 0.5 level set antialiased over one pixel: crisp stripes at any frequency
-  float t = 0.5 + 0.5 * cos(vU);
+  float c = families > 1.5 ? max(cos(vU), cos(vV)) : cos(vU);
+  float t = 0.5 + 0.5 * c;
   float w = max(fwidth(t), 1e-4);
   float band = smoothstep(0.5 - w, 0.5 + w, t);
   vec3 base = mix(vec3(0.16, 0.18, 0.22), vec3(0.97, 0.95, 0.88), band);
@@ -73,10 +88,12 @@ void main() {
   float light = 0.35 + 0.65 * max(dot(n, normalize(vec3(0.3, 0.5, 1.0))), 0.0);
   gl_FragColor = vec4(base * light, 1.0);
 }`;
-const material = new THREE.ShaderMaterial({ vertexShader, fragmentShader, side: THREE.DoubleSide });
+const material = new THREE.ShaderMaterial({ vertexShader, fragmentShader, side: THREE.DoubleSide,
+  uniforms: { families: { value: 1 } } });
 material.extensions.derivatives = true;
 
 let model = null;   // { mesh json, object, geometry, centroids, faceNormals }
+let overlay = null; // the branch faces' triangles of the last state (a THREE.Mesh)
 let state = null;   // the last state from the server
 let dirty = false;
 const markers = new THREE.Group();
@@ -125,6 +142,7 @@ function buildModel(json) {
   geometry.setAttribute('position', new THREE.BufferAttribute(position, 3));
   geometry.setAttribute('normal', new THREE.BufferAttribute(normal, 3));
   geometry.setAttribute('u', new THREE.BufferAttribute(new Float32Array(3 * nf), 1));
+  geometry.setAttribute('v', new THREE.BufferAttribute(new Float32Array(3 * nf), 1));
   geometry.setAttribute('mark', new THREE.BufferAttribute(new Float32Array(3 * nf), 1));
   geometry.computeBoundingSphere();
   const object = new THREE.Mesh(geometry, material);
@@ -148,41 +166,86 @@ function centroid(f) {
   return new THREE.Vector3(c[3 * f], c[3 * f + 1], c[3 * f + 2]);
 }
 
+// The triangles around the branch points: 15 floats each, x y z u v at its three corners.
+function buildOverlay(data) {
+  if (overlay) { scene.remove(overlay); overlay.geometry.dispose(); overlay = null; }
+  const count = data.length / 15;
+  if (!count) return;
+  const position = new Float32Array(9 * count), normal = new Float32Array(9 * count);
+  const u = new Float32Array(3 * count), v = new Float32Array(3 * count);
+  for (let t = 0; t < count; ++t) {
+    const p = [0, 1, 2].map((k) => new THREE.Vector3(data[15 * t + 5 * k], data[15 * t + 5 * k + 1], data[15 * t + 5 * k + 2]));
+    const n = new THREE.Vector3().subVectors(p[1], p[0]).cross(new THREE.Vector3().subVectors(p[2], p[0])).normalize();
+    for (let k = 0; k < 3; ++k) {
+      p[k].toArray(position, 9 * t + 3 * k);
+      n.toArray(normal, 9 * t + 3 * k);
+      u[3 * t + k] = data[15 * t + 5 * k + 3];
+      v[3 * t + k] = data[15 * t + 5 * k + 4];
+    }
+  }
+  const geometry = new THREE.BufferGeometry();
+  geometry.setAttribute('position', new THREE.BufferAttribute(position, 3));
+  geometry.setAttribute('normal', new THREE.BufferAttribute(normal, 3));
+  geometry.setAttribute('u', new THREE.BufferAttribute(u, 1));
+  geometry.setAttribute('v', new THREE.BufferAttribute(v, 1));
+  geometry.setAttribute('mark', new THREE.BufferAttribute(new Float32Array(3 * count), 1));
+  overlay = new THREE.Mesh(geometry, material);
+  scene.add(overlay);
+}
+
 function applyState(buffer) {
   const view = new DataView(buffer);
   const length = view.getUint32(0, true);
   const json = JSON.parse(new TextDecoder().decode(new Uint8Array(buffer, 4, length)));
-  const u = new Float32Array(buffer, 4 + length);
-  if (!model || u.length !== 3 * model.json.faces) throw new Error('the state does not fit the mesh');
+  const data = new Float32Array(buffer, 4 + length);
+  const nf = model ? model.json.faces : -1;
+  if (!model || data.length !== 3 * nf * json.families + 15 * json.overlay) throw new Error('the state does not fit the mesh');
   state = json;
-  model.geometry.attributes.u.array.set(u);
+  model.geometry.attributes.u.array.set(data.subarray(0, 3 * nf));
   model.geometry.attributes.u.needsUpdate = true;
+  if (json.families === 2) {
+    model.geometry.attributes.v.array.set(data.subarray(3 * nf, 6 * nf));
+    model.geometry.attributes.v.needsUpdate = true;
+  }
+  material.uniforms.families.value = json.families;
+  buildOverlay(data.subarray(3 * nf * json.families));
   const mark = model.geometry.attributes.mark.array;
   mark.fill(0);
   while (markers.children.length) markers.remove(markers.children[0]);
   const radius = 0.012 * model.json.diagonal;
-  const put = (f, value, color) => {
+  const put = (f, value, color, scale = 1) => {
     for (let k = 0; k < 3; ++k) mark[3 * f + k] = value;
-    const ball = new THREE.Mesh(new THREE.SphereBufferGeometry(radius, 12, 8), new THREE.MeshBasicMaterial({ color }));
+    const ball = new THREE.Mesh(new THREE.SphereBufferGeometry(scale * radius, 12, 8), new THREE.MeshBasicMaterial({ color }));
     ball.position.copy(centroid(f));
     ball.userData.face = f;
     markers.add(ball);
   };
-  for (const [f, k] of state.field_singularities) put(f, 2, 0x2e7d32);
+  for (const [f] of state.branch_faces) put(f, 3, 0x80cbc4, 0.6); // the field's singularities (not editable)
+  for (const [f] of state.field_singularities) put(f, state.order > 1 ? 3 : 2, 0x2e7d32); // editable ones
   for (const [f, k] of state.singularities) put(f, k > 0 ? 1 : -1, k > 0 ? 0xc62828 : 0x1565c0);
   model.geometry.attributes.mark.needsUpdate = true;
   showState();
 }
 
+// k / n as text: +1, -1/2, +1/4
+function fraction(k, n) {
+  const g = (a, b) => (b ? g(b, a % b) : a);
+  const d = g(Math.abs(k), n);
+  return `${k > 0 ? '+' : '-'}${Math.abs(k) / d}${n / d > 1 ? '/' + n / d : ''}`;
+}
 function showState() {
-  const lines = state.singularities.map(([f, k]) => `<span class="${k > 0 ? 'plus' : 'minus'}">face ${f}: ${k > 0 ? '+' : ''}${k}</span>`);
-  for (const [f, k] of state.field_singularities) lines.push(`<span class="field">field: face ${f}: ${k > 0 ? '+' : ''}${k}</span>`);
+  const lines = state.singularities.map(([f, k, a]) => `<span class="${k > 0 ? 'plus' : 'minus'}">face ${f}: ${k > 0 ? '+' : ''}${k}${state.families > 1 ? ` (family ${a + 1})` : ''}</span>`);
+  const editable = new Set(state.field_singularities.map(([f]) => f));
+  for (const [f, k] of state.field_singularities) lines.push(`<span class="field">field: face ${f}: ${fraction(k, state.order)}</span>`);
+  for (const [f, k] of state.branch_faces) if (!editable.has(f)) lines.push(`<span class="field">field (fixed): face ${f}: ${fraction(k, state.order)}</span>`);
   ui.singularities.innerHTML = lines.length ? lines.join('\n') : 'none';
   ui.stripesValue.textContent = state.stripes.toFixed(1);
   // the field menu shows the server's field (after a refused change, or another mesh)
   const f = state.field;
   const value = f.kind === 'axis' ? `axis:${f.axis.map((x) => Math.round(x * 1e6) / 1e6).join(',')}`
-    : f.kind === 'heat' ? `heat:${Math.round(f.degrees)}` : f.kind;
+    : f.kind === 'heat' ? `heat:${Math.round(f.degrees)}` : f.kind + (f.order > 1 && f.kind !== 'principal' ? `@${f.order}` : '');
+  ui.family.hidden = state.families < 2;
+  ui.automatic.disabled = state.order < 2;
   if ([...ui.field.options].some((o) => o.value === value)) ui.field.value = value;
   const max = Number(ui.stripes.dataset.max);
   ui.stripes.value = String(Math.round(1000 * Math.log(Math.max(state.stripes, 1)) / Math.log(Math.max(max, 1.0001))));
@@ -369,7 +432,7 @@ function click(event) {
   if (event.shiftKey) mode = 'plus';
   else if (event.ctrlKey || event.altKey) mode = 'minus';
   if (mode === 'plus' || mode === 'minus') {
-    edit({ op: 'add', face: f, index: mode === 'plus' ? 1 : -1 }, t0);
+    edit({ op: 'add', face: f, index: mode === 'plus' ? 1 : -1, family: family() }, t0);
   } else if (mode === 'remove') {
     const s = nearestSingularity(hit, state.singularities);
     if (s === null) showError('no singularity near that point');
@@ -385,17 +448,25 @@ function click(event) {
     heatSource = best;
     if (ui.field.value.startsWith('heat')) setField(t0);
     else ui.hint.textContent = `heat source: vertex ${best} (choose a heat field)`;
-  } else if (mode === 'pair' || mode === 'annihilate') {
-    const face = mode === 'pair' ? f : nearestSingularity(hit, state.singularities);
+  } else if (mode === 'pair' || mode === 'annihilate' || mode === 'field-pair' || mode === 'field-annihilate') {
+    const face = mode === 'pair' || mode === 'field-pair' ? f
+      : nearestSingularity(hit, mode === 'annihilate' ? state.singularities : state.field_singularities);
     if (face === null) { showError('no singularity near that point'); return; }
     if (firstClick === null) {
       firstClick = face;
-      ui.hint.textContent = mode === 'pair' ? `+1 at face ${face}: now click where the -1 goes` : `face ${face}: now click its partner`;
+      const unit = fraction(1, state.order);
+      ui.hint.textContent = mode === 'pair' ? `+1 at face ${face}: now click where the -1 goes`
+        : mode === 'field-pair' ? `field ${unit} at face ${face}: now click where the ${unit.replace('+', '-')} goes`
+          : `face ${face}: now click its partner`;
       return;
     }
     const first = firstClick;
     firstClick = null;
-    edit(mode === 'pair' ? { op: 'add_pair', plus: first, minus: face } : { op: 'annihilate', a: first, b: face }, t0);
+    const request = mode === 'pair' ? { op: 'add_pair', plus: first, minus: face, family: family() }
+      : mode === 'annihilate' ? { op: 'annihilate', a: first, b: face }
+        : mode === 'field-pair' ? { op: 'add_field_pair', plus: first, minus: face }
+          : { op: 'annihilate_field', a: first, b: face };
+    edit(request, t0);
   }
 }
 document.querySelectorAll('input[name="tool"]').forEach((input) => input.addEventListener('change', () => { firstClick = null; }));
@@ -405,7 +476,10 @@ function setField(t0 = performance.now()) {
   let request;
   if (value.startsWith('axis:')) request = { op: 'field', kind: 'axis', axis: value.slice(5).split(',').map(Number) };
   else if (value.startsWith('heat:')) request = { op: 'field', kind: 'heat', vertex: heatSource, degrees: Number(value.slice(5)) };
-  else request = { op: 'field', kind: value };
+  else {
+    const [kind, order] = value.split('@');
+    request = { op: 'field', kind, order: Number(order || (kind === 'principal' ? 2 : 1)) };
+  }
   return edit(request, t0, `field ${value}`);
 }
 ui.field.addEventListener('change', () => setField());
@@ -418,6 +492,7 @@ ui.stripes.addEventListener('input', () => {
 });
 ui.mesh.addEventListener('change', () => edit({ op: 'load', name: ui.mesh.value }, performance.now(), 'load'));
 document.getElementById('clear').addEventListener('click', () => edit({ op: 'clear' }));
+ui.automatic.addEventListener('click', () => edit({ op: 'automatic' }));
 document.getElementById('export-ply').addEventListener('click', () => { window.location.href = `api/export.ply?token=${encodeURIComponent(token)}`; });
 document.getElementById('export-png').addEventListener('click', () => {
   render();
@@ -492,7 +567,7 @@ async function selftest() {
   await settle();
   const afterPair = pictureHash();
   check('the picture changed after the click', afterPair.hash !== initial.hash);
-  const listed = JSON.stringify(state.singularities.slice().sort((x, y) => x[0] - y[0]));
+  const listed = JSON.stringify(state.singularities.map(([f, k]) => [f, k]).sort((x, y) => x[0] - y[0]));
   const expected = JSON.stringify([[a.face, 1], [b.face, -1]].sort((x, y) => x[0] - y[0]));
   check('the reported singularities are the clicked faces', listed === expected, `${listed} vs ${expected}`);
   check('the page lists them', ui.singularities.textContent.includes(`face ${a.face}: +1`) && ui.singularities.textContent.includes(`face ${b.face}: -1`), ui.singularities.textContent);
@@ -545,6 +620,47 @@ async function selftest() {
   ui.stripes.dispatchEvent(new Event('input'));
   await settle();
   check('the slider changed the frequency', state.stripes > 1.2 * stripesBefore, `${stripesBefore} -> ${state.stripes}`);
+
+  // a line field with singularities of its own (+1/2 each), one of them dragged like the stripes'
+  ui.field.value = 'trivial@2';
+  await setField();
+  await settle();
+  const branchOf = () => JSON.stringify(state.branch_faces.map(([f, k]) => [f, k]).sort((x, y) => x[0] - y[0]));
+  const fieldOf = () => JSON.stringify(state.field_singularities.slice().sort((x, y) => x[0] - y[0]));
+  check('the trivial line field: four +1/2, drawn as branch faces', state.order === 2 && state.field_singularities.length === 4 &&
+    branchOf() === fieldOf() && state.overlay === 3 * state.branch_faces.length && overlay !== null, fieldOf());
+  await saveFrame('editor_line_field');
+  const r = canvas.getBoundingClientRect();
+  const grabbable = state.field_singularities.map(([f]) => f).find((f) => {
+    const at = screenOf(f);
+    const hit = pick(at.x, at.y);
+    return at.x > r.left + 0.2 * r.width && at.x < r.right - 0.2 * r.width && at.y > r.top + 0.1 * r.height &&
+      at.y < r.bottom - 0.1 * r.height && hit && hit.point.distanceTo(centroid(f)) < 0.02 * model.json.diagonal;
+  });
+  check('a field singularity in view', grabbable !== undefined, fieldOf());
+  if (grabbable !== undefined) {
+    const from = screenOf(grabbable), to = { x: from.x + 0.12 * r.width, y: from.y + 0.05 * r.height };
+    document.querySelector('input[name="tool"][value="drag"]').click();
+    pointer('pointerdown', from);
+    check('the drag grabbed the field singularity', drag !== null && drag.field && drag.from === grabbable);
+    for (let i = 1; i <= 4; ++i) {
+      pointer('pointermove', { x: from.x + (to.x - from.x) * i / 4, y: from.y + (to.y - from.y) * i / 4 });
+      await settle();
+    }
+    pointer('pointerup', to);
+    await settle();
+    const moved = state.field_singularities.map(([f]) => f);
+    check('the +1/2 moved, and the stripes\' branch faces with it', !moved.includes(grabbable) && moved.length === 4 &&
+      branchOf() === fieldOf(), `${grabbable} -> ${fieldOf()}`);
+    await saveFrame('editor_line_field_dragged');
+  }
+  // a cross field: two families of stripes, a grid
+  ui.field.value = 'smoothest@4';
+  await setField();
+  await settle();
+  check('the cross field: two families, its branch faces drawn', state.order === 4 && state.families === 2 &&
+    state.overlay === 3 * state.branch_faces.length && state.branch_faces.length > 0, JSON.stringify(state.field));
+  await saveFrame('editor_cross_field');
 
   // a field with singularities of its own, for the final picture
   ui.field.value = 'smoothest';
