@@ -224,10 +224,10 @@ fi
 accept flatten "$DATA/hemisphere.off" --no-cut --output "$O/ok.obj" --pattern "$O/ok.svg"
 # genus 2: the cut adds the four generator loops; the pieces lay flat without folds, their
 # boundaries keeping their lengths
-accept flatten "$DATA/double-torus.off" --output "$O/genus2.obj" --pattern "$O/genus2.svg"
+accept flatten "$DATA/eight.off" --output "$O/genus2.obj" --pattern "$O/genus2.svg"
 if ! grep -q " 4 generator loops" "$WORK/stdout" || ! grep -q "^  0 flipped faces" "$WORK/stdout" ||
    ! awk '/boundary length error/ { for(i = 1; i < NF; ++i) if($i == "error") { gsub(";", "", $(i + 1)); exit !($(i + 1) <= 1e-5) } }' "$WORK/stdout"; then
-  echo "FAILED: flatten double-torus.off: $(grep -E "generator|flipped" "$WORK/stdout")"
+  echo "FAILED: flatten eight.off: $(grep -E "generator|flipped" "$WORK/stdout")"
   failures=$((failures + 1))
 fi
 

@@ -654,14 +654,6 @@ async function selftest() {
       branchOf() === fieldOf(), `${grabbable} -> ${fieldOf()}`);
     await saveFrame('editor_line_field_dragged');
   }
-  // a cross field: two families of stripes, a grid
-  ui.field.value = 'smoothest@4';
-  await setField();
-  await settle();
-  check('the cross field: two families, its branch faces drawn', state.order === 4 && state.families === 2 &&
-    state.overlay === 3 * state.branch_faces.length && state.branch_faces.length > 0, JSON.stringify(state.field));
-  await saveFrame('editor_cross_field');
-
   // a field with singularities of its own, for the final picture
   ui.field.value = 'smoothest';
   await setField();
