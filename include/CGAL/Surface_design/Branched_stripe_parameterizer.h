@@ -319,7 +319,7 @@ public:
   ///
   /// The relaxation (one factorization of size 2 d |V| and a shift-invert Lanczos run) is cached
   /// until the field or the frequency changes.
-  /// 	hrows Invalid_constraints before `set_field()`
+  /// \throws Invalid_constraints before `set_field()`
   std::size_t place_automatic_singularities()
   {
     require_field();

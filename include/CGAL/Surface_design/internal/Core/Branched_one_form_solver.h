@@ -137,7 +137,24 @@ public:
           for(const auto& [e, v] : m_eta[m_kept[j]])
             ystar[e] += double(c[Eigen::Index(j)]) * v;
         }
-      if(changed)
+      if(changed && !m_response.empty())
+      {
+        // y and the potential are affine in ystar: add the stored responses of the moved
+        // directions instead of a second back-substitution
+        const std::size_t d = std::size_t(m_cover.d), ne = s.y.size();
+        for(std::size_t j = 0; j < m; ++j)
+          if(const double cj = double(c[Eigen::Index(j)]); cj != 0.)
+          {
+            const Response& r = m_response[j];
+            for(std::size_t e = 0; e < ne; ++e)
+              for(std::size_t a = 0; a < d; ++a)
+                s.y[e][Eigen::Index(a)] += cj * r.y[e * d + a];
+            for(std::size_t v = 0; v < s.alpha.size(); ++v)
+              for(std::size_t a = 0; a < d; ++a)
+                s.alpha[v][Eigen::Index(a)] += cj * r.potential[v * d + a];
+          }
+      }
+      else if(changed)
         s.y = optimal_one_form(ystar, omega, &s.alpha);
     }
     s.energy = energy(s.y, omega);
@@ -531,14 +548,31 @@ private:
     }
     const std::vector<Value> zero(ne, Value::Zero());
     Eigen::MatrixXd full = Eigen::MatrixXd::Zero(Eigen::Index(m), Eigen::Index(m));
+    // the responses y(eta_k, 0) and their potentials, kept (for the kept directions) when they
+    // fit in the memory budget: a solve whose windings move adds them instead of solving again
+    const std::size_t d = std::size_t(m_cover.d), nv = m_pinned.size();
+    const bool keep_responses = m * (ne + nv) * d <= response_budget;
+    std::vector<Response> response(keep_responses ? m : 0);
     for(std::size_t k = 0; k < m; ++k)
     {
       std::vector<Value> eta_k(ne, Value::Zero());
       for(const auto& [e, v] : eta[k])
         eta_k[e] = v;
-      const std::vector<Value> xi = optimal_one_form(eta_k, zero, nullptr);
+      std::vector<Value> potential;
+      const std::vector<Value> xi = optimal_one_form(eta_k, zero, keep_responses ? &potential : nullptr);
       for(std::size_t j = 0; j < m; ++j)
         full(Eigen::Index(j), Eigen::Index(k)) = sparse_dot(eta[j], xi, nullptr);
+      if(keep_responses)
+      {
+        response[k].y.resize(ne * d);
+        for(std::size_t e = 0; e < ne; ++e)
+          for(std::size_t a = 0; a < d; ++a)
+            response[k].y[e * d + a] = xi[e][Eigen::Index(a)];
+        response[k].potential.resize(nv * d);
+        for(std::size_t v = 0; v < nv; ++v)
+          for(std::size_t a = 0; a < d; ++a)
+            response[k].potential[v * d + a] = potential[v][Eigen::Index(a)];
+      }
     }
     full = 0.5 * (full + full.transpose()).eval();
     // keep j when its harmonic part is not (numerically) in the span of the kept ones
@@ -568,6 +602,10 @@ private:
     m_reduced = reduce_integer_quadratic(Q);
     m_Q = std::move(Q);
     m_eta = std::move(eta);
+    m_response.clear();
+    if(keep_responses)
+      for(std::size_t j : kept)
+        m_response.push_back(std::move(response[j]));
     m_kept = std::move(kept);
     m_basis_ready = true;
   }
@@ -577,6 +615,12 @@ private:
     std::size_t edge;
     int sheet;
   };
+  // y(eta_j, 0) per edge and its potential per vertex (d values each), for a kept direction j
+  struct Response
+  {
+    std::vector<double> y, potential;
+  };
+  static constexpr std::size_t response_budget = std::size_t(1) << 24; // doubles (128 MB)
   struct Peel_other
   {
     std::size_t edge;
@@ -605,6 +649,7 @@ private:
   bool m_basis_ready = false;
   std::vector<Sparse_form> m_eta;
   std::vector<std::size_t> m_kept;
+  std::vector<Response> m_response; // per kept direction, or empty
   Eigen::MatrixXd m_Q;
   Reduced_integer_quadratic m_reduced;
 };
