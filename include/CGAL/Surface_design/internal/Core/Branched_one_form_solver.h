@@ -137,14 +137,10 @@ public:
           for(const auto& [e, v] : m_eta[m_kept[j]])
             ystar[e] += double(c[Eigen::Index(j)]) * v;
         }
-      // y and the potential are affine in ystar: the stored responses of the moved directions
-      // can be added instead of a second back-substitution. Each costs a pass over the edges and
-      // vertices; a back-substitution reads the factor, of about |V| d log2(|V| d) entries on these
-      // meshes: the responses are used while they cost less than 8 times that (measured: line
-      // fields, 12-16 free windings, 30% faster edits at 60k faces; cross fields move 60-70
-      // windings per solve and re-solve)
-      if(changed && !m_response.empty() && responses_pay(s.winding_changes, s.y.size(), m_pinned.size()))
+      if(changed && !m_response.empty())
       {
+        // y and the potential are affine in ystar: add the stored responses of the moved
+        // directions instead of a second back-substitution
         const std::size_t d = std::size_t(m_cover.d), ne = s.y.size();
         for(std::size_t j = 0; j < m; ++j)
           if(const double cj = double(c[Eigen::Index(j)]); cj != 0.)
@@ -163,14 +159,6 @@ public:
     }
     s.energy = energy(s.y, omega);
     return s;
-  }
-
-  // whether adding `moved` stored responses costs less than 8 times the reading of a factor of
-  // about |V| d log2(|V| d) entries
-  bool responses_pay(std::size_t moved, std::size_t ne, std::size_t nv) const
-  {
-    const double unknowns = (std::max)(double(nv) * m_cover.d, 2.);
-    return double(moved) * double(ne + nv) <= 8. * double(nv) * std::log2(unknowns);
   }
 
   double energy(const std::vector<Value>& y, const std::vector<Value>& omega) const
@@ -563,9 +551,7 @@ private:
     // the responses y(eta_k, 0) and their potentials, kept (for the kept directions) when they
     // fit in the memory budget: a solve whose windings move adds them instead of solving again
     const std::size_t d = std::size_t(m_cover.d), nv = m_pinned.size();
-    // (kept when adding all of them would still be cheaper than a back-substitution, see solve():
-    // most solves move nearly every winding off the forest's particular solution)
-    const bool keep_responses = m * (ne + nv) * d <= response_budget && responses_pay(m, ne, nv);
+    const bool keep_responses = m * (ne + nv) * d <= response_budget;
     std::vector<Response> response(keep_responses ? m : 0);
     for(std::size_t k = 0; k < m; ++k)
     {
