@@ -140,7 +140,10 @@ public:
       if(changed && !m_response.empty())
       {
         // y and the potential are affine in ystar: add the stored responses of the moved
-        // directions instead of a second back-substitution
+        // directions instead of a second back-substitution (most solves move nearly every
+        // winding off the forest's particular solution; measured, median edit times: line fields
+        // at 60k faces 8.3 -> 5.4 ms, cross fields at 60k 31.9 -> 26.5 ms, on bunny_8k 6.1 ->
+        // 6.9 ms, the one loss)
         const std::size_t d = std::size_t(m_cover.d), ne = s.y.size();
         for(std::size_t j = 0; j < m; ++j)
           if(const double cj = double(c[Eigen::Index(j)]); cj != 0.)
