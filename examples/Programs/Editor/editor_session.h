@@ -642,67 +642,56 @@ private:
   void install_field(std::vector<Vector> field, int order, const std::string& what)
   {
     const auto start = Clock::now();
-    if(order == 1)
-    {
+    // the stripes' field, for the current order's solver
+    auto apply = [this](const std::vector<Vector>& f) {
       if(m_order == 1)
+        m_fap->set_field(CGAL::make_property_map(f), m_stripes / m_diagonal);
+      else
+        m_bsp->set_field(CGAL::make_property_map(f), m_stripes / m_diagonal);
+    };
+    if(order == m_order)
+    {
+      // the same order: the singularities are kept (a line or cross field refuses one that
+      // would lie in a new branch face)
+      try
       {
+        apply(field);
         std::swap(field, m_field);
         try
         {
-          m_fap->set_field(CGAL::make_property_map(m_field), m_stripes / m_diagonal);
           solve();
         }
-        catch(const std::invalid_argument& e)
+        catch(const std::invalid_argument&)
         {
           std::swap(field, m_field);
-          m_fap->set_field(CGAL::make_property_map(m_field), m_stripes / m_diagonal);
-          solve();
-          throw Request_error(what + ": " + e.what());
+          throw;
         }
       }
-      else
+      catch(const std::invalid_argument& e)
       {
-        // back to a vector field, without singularities (the vector stripes are unused until
-        // then: a failure leaves the line or cross field's state as it was)
-        try
-        {
-          m_fap->clear_indices();
-          m_fap->set_field(CGAL::make_property_map(field), m_stripes / m_diagonal);
-          m_fap->solve();
-        }
-        catch(const std::invalid_argument& e)
-        {
-          throw Request_error(what + ": " + e.what());
-        }
-        m_field = std::move(field);
-        m_order = 1;
-        m_bsp.reset();
+        apply(m_field);
         solve();
+        throw Request_error(what + ": " + e.what());
       }
     }
-    else if(order == m_order)
+    else if(order == 1)
     {
-      // the same order: set_field keeps the singularities, or throws and changes nothing
+      // back to a vector field, without singularities (the vector stripes are unused until
+      // then: a failure leaves the line or cross field's state as it was)
       try
       {
-        m_bsp->set_field(CGAL::make_property_map(field), m_stripes / m_diagonal);
+        m_fap->clear_indices();
+        m_fap->set_field(CGAL::make_property_map(field), m_stripes / m_diagonal);
+        m_fap->solve();
       }
       catch(const std::invalid_argument& e)
       {
         throw Request_error(what + ": " + e.what());
       }
-      std::swap(field, m_field);
-      try
-      {
-        solve();
-      }
-      catch(const std::invalid_argument& e)
-      {
-        std::swap(field, m_field);
-        m_bsp->set_field(CGAL::make_property_map(m_field), m_stripes / m_diagonal);
-        solve();
-        throw Request_error(what + ": " + e.what());
-      }
+      m_field = std::move(field);
+      m_order = 1;
+      m_bsp.reset();
+      solve();
     }
     else
     {
