@@ -8,8 +8,9 @@
 // prescribed singularities, and the per-corner stripe angles of the last solve. Every edit is a
 // JSON request; it either succeeds and re-solves (one back-substitution for the singularities and
 // the frequency, plus the field's own solve, and for line and cross fields a factorization, when
-// the field changes), or throws Request_error and leaves the state as it was. The server (surface_design_editor.cpp) and the benchmark (benchmark/editor_latency.cpp)
-// drive this class.
+// the field changes), or throws Request_error and leaves the state as it was. The server
+// (surface_design_editor.cpp), the benchmark (benchmark/workload_editor.cpp) and the fuzzer
+// (test/fuzz/fuzz_editor_edit.cpp) drive this class.
 
 #ifndef CGAL_SURFACE_DESIGN_EDITOR_SESSION_H
 #define CGAL_SURFACE_DESIGN_EDITOR_SESSION_H
@@ -266,7 +267,15 @@ public:
     else if(op == "field")
       set_field(request);
     else if(op == "move_field_singularity")
-      move_field_singularity(face_arg(request, "from"), face_arg(request, "to"));
+    {
+      const std::size_t from = face_arg(request, "from"), to = face_arg(request, "to");
+      connection("move_field_singularity");
+      if(!m_field_singularities.count(from))
+        throw Request_error("move_field_singularity: face " + std::to_string(from) + " holds no field singularity");
+      if(from == to)
+        return state(received); // nothing moved: no solve
+      move_field_singularity(from, to);
+    }
     else if(op == "add_field_pair")
       add_field_pair(face_arg(request, "plus"), face_arg(request, "minus"));
     else if(op == "annihilate_field")
@@ -652,26 +661,49 @@ private:
     if(order == m_order)
     {
       // the same order: the singularities are kept (a line or cross field refuses one that
-      // would lie in a new branch face)
+      // would lie in a new branch face, and then nothing has changed; the vector stripes'
+      // field is set again)
       try
       {
         apply(field);
-        std::swap(field, m_field);
-        try
-        {
-          solve();
-        }
-        catch(const std::invalid_argument&)
-        {
-          std::swap(field, m_field);
-          throw;
-        }
       }
       catch(const std::invalid_argument& e)
       {
+        if(m_order == 1)
+        {
+          apply(m_field);
+          solve();
+        }
+        throw Request_error(what + ": " + e.what());
+      }
+      catch(...)
+      {
+        if(m_order == 1)
+        {
+          apply(m_field);
+          solve();
+        }
+        throw;
+      }
+      std::swap(field, m_field);
+      auto restore = [&] {
+        std::swap(field, m_field);
         apply(m_field);
         solve();
+      };
+      try
+      {
+        solve();
+      }
+      catch(const std::invalid_argument& e)
+      {
+        restore();
         throw Request_error(what + ": " + e.what());
+      }
+      catch(...)
+      {
+        restore();
+        throw;
       }
     }
     else if(order == 1)
@@ -749,12 +781,17 @@ private:
       restore();
       throw Request_error(what + ": " + e.what());
     }
+    catch(...)
+    {
+      restore();
+      throw;
+    }
     m_timing["field_ms"] = ms_since(start);
     try
     {
       install_field(std::move(field), m_order, what);
     }
-    catch(const Request_error&)
+    catch(...)
     {
       restore();
       throw;
@@ -769,8 +806,6 @@ private:
     const auto it = m_field_singularities.find(from);
     if(it == m_field_singularities.end())
       throw Request_error("move_field_singularity: face " + std::to_string(from) + " holds no field singularity");
-    if(from == to)
-      return;
     if(m_field_singularities.count(to))
       throw Request_error("move_field_singularity: face " + std::to_string(to) +
                           " already holds a field singularity (the field turns at most once around a face)");

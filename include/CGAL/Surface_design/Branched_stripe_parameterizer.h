@@ -448,11 +448,12 @@ public:
   /// quad extraction follows. They follow the interpolation of `value()`: straight in a regular
   /// face, through or around the branch point in a branch face, and on a grid of
   /// `singular_face_subdivision`² triangles in a face with a stripe singularity (where the
-  /// angle is not linear). Lines end only on the boundary, at branch points and singularities,
+  /// angle is not linear: each small triangle is unwrapped and cut linearly, an approximation; a
+  /// multiple of 3 puts the centroid, the singular point, on the grid). Lines end only on the boundary, at branch points and singularities,
   /// and where several lines meet (a mesh vertex exactly at a level).
   /// \throws Invalid_constraints before `solve()`; Invalid_parameter if
   ///         `singular_face_subdivision` is not in [1, 64]
-  std::vector<Isoline> isolines(int singular_face_subdivision = 8) const
+  std::vector<Isoline> isolines(int singular_face_subdivision = 9) const
   {
     internal::check_isoline_subdivision(singular_face_subdivision);
     solution();

@@ -460,11 +460,12 @@ public:
   /// light stripes of cos(alpha), as polylines for plotters, lasers and vector graphics. Straight
   /// in every face without singularity (alpha is linear there); in a face with index k != 0,
   /// alpha is interpolated with a winding term about the centroid (Knöppel et al. 2015, sec. 6)
-  /// sampled on a grid of `singular_face_subdivision`² triangles. Lines end only on the
+  /// sampled on a grid of `singular_face_subdivision`² triangles (a multiple of 3 puts the
+  /// centroid, the singular point, on the grid). Lines end only on the
   /// boundary, in singular faces, and where several lines meet (a vertex exactly at a level).
   /// \throws Invalid_constraints before `solve()`; Invalid_parameter if
   ///         `singular_face_subdivision` is not in [1, 64]
-  std::vector<Isoline> isolines(int singular_face_subdivision = 8) const
+  std::vector<Isoline> isolines(int singular_face_subdivision = 9) const
   {
     internal::check_isoline_subdivision(singular_face_subdivision);
     require_solved();

@@ -211,7 +211,12 @@ function applyState(buffer) {
   buildOverlay(data.subarray(3 * nf * json.families));
   const mark = model.geometry.attributes.mark.array;
   mark.fill(0);
-  while (markers.children.length) markers.remove(markers.children[0]);
+  while (markers.children.length) {
+    const ball = markers.children[0];
+    markers.remove(ball);
+    ball.geometry.dispose();
+    ball.material.dispose();
+  }
   const radius = 0.012 * model.json.diagonal;
   const put = (f, value, color, scale = 1) => {
     for (let k = 0; k < 3; ++k) mark[3 * f + k] = value;
@@ -220,8 +225,15 @@ function applyState(buffer) {
     ball.userData.face = f;
     markers.add(ball);
   };
-  for (const [f] of state.branch_faces) put(f, 3, 0x80cbc4, 0.6); // the field's singularities (not editable)
-  for (const [f] of state.field_singularities) put(f, state.order > 1 ? 3 : 2, 0x2e7d32); // editable ones
+  // the field's singularities: editable ones (a trivial connection's) green, the others teal;
+  // a branch face (mark 3) is drawn by the overlay's three triangles instead of the face
+  const editable = new Set(state.field_singularities.map(([f]) => f));
+  for (const [f] of state.branch_faces) {
+    for (let k = 0; k < 3; ++k) mark[3 * f + k] = 3;
+    if (!editable.has(f)) put(f, 3, 0x80cbc4, 0.6);
+  }
+  const branch = new Set(state.branch_faces.map(([f]) => f));
+  for (const [f] of state.field_singularities) put(f, branch.has(f) ? 3 : 2, 0x2e7d32);
   for (const [f, k] of state.singularities) put(f, k > 0 ? 1 : -1, k > 0 ? 0xc62828 : 0x1565c0);
   model.geometry.attributes.mark.needsUpdate = true;
   showState();

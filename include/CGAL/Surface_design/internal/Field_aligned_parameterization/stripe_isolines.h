@@ -152,6 +152,13 @@ public:
 private:
   static constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
 
+  struct Carrier_point
+  {
+    double t;
+    int level_class;
+    std::size_t id;
+  };
+
   struct Segment
   {
     std::size_t a, b;
@@ -168,6 +175,7 @@ private:
 
   void cut(const Face& face, int family, int level_class, const std::array<Stripe_isoline_sample, 3>& s, double level)
   {
+    m_class = level_class;
     std::array<int, 3> sg;
     int zeros = 0;
     for(int i = 0; i < 3; ++i)
@@ -280,20 +288,24 @@ private:
     return b;
   }
 
-  std::size_t find_or_add(std::vector<std::pair<double, std::size_t>>& on_carrier, double t, const Eigen::Vector3d& x)
+  // the point at t on a segment (a mesh edge or a segment inside a face), of the current level
+  // class: a crossing of level 0 and one of level pi are never merged (the class is kept across
+  // sheets and families: the angles change by x -> +-x + 2 pi k)
+  std::size_t find_or_add(std::vector<Carrier_point>& on_carrier, double t, const Eigen::Vector3d& x)
   {
-    for(const auto& [u, id] : on_carrier)
-      if(std::abs(u - t) < 1e-9)
-        return id;
-    on_carrier.emplace_back(t, m_points.size());
+    for(const Carrier_point& c : on_carrier)
+      if(c.level_class == m_class && std::abs(c.t - t) < 1e-9)
+        return c.id;
+    on_carrier.push_back({t, m_class, m_points.size()});
     m_points.push_back(x);
     return m_points.size() - 1;
   }
 
   std::vector<Eigen::Vector3d> m_points;
   std::vector<std::size_t> m_vertex_point;
-  std::vector<std::vector<std::pair<double, std::size_t>>> m_edge_points;
-  std::map<std::tuple<std::size_t, std::size_t, std::size_t>, std::vector<std::pair<double, std::size_t>>> m_local_points;
+  std::vector<std::vector<Carrier_point>> m_edge_points;
+  std::map<std::tuple<std::size_t, std::size_t, std::size_t>, std::vector<Carrier_point>> m_local_points;
+  int m_class = 0; // the level class being cut: 0 or 1 (pi)
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> m_sample_points;
   std::vector<Segment> m_segments;
   std::set<std::pair<std::size_t, std::size_t>> m_segment_keys;
