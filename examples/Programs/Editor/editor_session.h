@@ -663,48 +663,19 @@ private:
       // the same order: the singularities are kept (a line or cross field refuses one that
       // would lie in a new branch face, and then nothing has changed; the vector stripes'
       // field is set again)
-      try
-      {
-        apply(field);
-      }
-      catch(const std::invalid_argument& e)
-      {
+      wrap_library([&] { apply(field); }, what, [&] {
         if(m_order == 1)
         {
           apply(m_field);
           solve();
         }
-        throw Request_error(what + ": " + e.what());
-      }
-      catch(...)
-      {
-        if(m_order == 1)
-        {
-          apply(m_field);
-          solve();
-        }
-        throw;
-      }
+      });
       std::swap(field, m_field);
-      auto restore = [&] {
+      wrap_library([&] { solve(); }, what, [&] {
         std::swap(field, m_field);
         apply(m_field);
         solve();
-      };
-      try
-      {
-        solve();
-      }
-      catch(const std::invalid_argument& e)
-      {
-        restore();
-        throw Request_error(what + ": " + e.what());
-      }
-      catch(...)
-      {
-        restore();
-        throw;
-      }
+      });
     }
     else if(order == 1)
     {
@@ -769,23 +740,12 @@ private:
         tc.set_index(descriptor(f), k);
       tc.solve();
     };
-    try
-    {
+    wrap_library([&] {
       for(const auto& [f, k] : changes)
         tc.set_index(descriptor(f), k);
       tc.solve();
       tc.field(CGAL::make_property_map(field));
-    }
-    catch(const std::invalid_argument& e)
-    {
-      restore();
-      throw Request_error(what + ": " + e.what());
-    }
-    catch(...)
-    {
-      restore();
-      throw;
-    }
+    }, what, restore);
     m_timing["field_ms"] = ms_since(start);
     try
     {
@@ -872,8 +832,10 @@ private:
     return result;
   }
 
-  template <class F>
-  static void wrap_library(F&& f, const std::string& what)
+  // Runs f; if it throws, runs `undo`, and reports a refusal (std::invalid_argument) as a
+  // Request_error saying `what`, any other exception as it is.
+  template <class F, class Undo = void (*)()>
+  static void wrap_library(F&& f, const std::string& what, Undo&& undo = [] {})
   {
     try
     {
@@ -881,7 +843,13 @@ private:
     }
     catch(const std::invalid_argument& e)
     {
+      undo();
       throw Request_error(what + ": " + e.what());
+    }
+    catch(...)
+    {
+      undo();
+      throw;
     }
   }
 
