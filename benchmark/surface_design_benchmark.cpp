@@ -38,7 +38,8 @@ const std::vector<Workload>& workloads()
     {"laplacian", "cotangent Laplacian L + eps M; phases assemble, factor, solve",
      &laplacian_workload},
     {"factorization", "first solve of L + eps M in phases ordering, symbolic, numeric, solve; fill and flops "
-     "(ldlt: AMD, ldlt-nd: nested dissection, supernodal: the library's supernodal Cholesky with it, ldlt-metis: METIS, cholmod: supernodal with nested dissection)",
+     "(ldlt: AMD, ldlt-nd: nested dissection, supernodal: the library's supernodal Cholesky with it, default: the same "
+     "with AMD below 20k unknowns, ldlt-metis: METIS, cholmod: supernodal with nested dissection)",
      &factorization_workload},
     {"stripes",
      "field-aligned stripes, vertex space (Field_aligned_parameterizer); phases factor, field, "

@@ -106,11 +106,16 @@ inline void run_eigen(const std::string& solver, const SDI::Sparse_matrix& a, co
 /// The library's supernodal Cholesky in its phases: the nested dissection of the lower triangle
 /// (as `Supernodal_cholesky` orders), the symbolic analysis (postorder, supernodes, structures,
 /// entry map), the numeric factorization, one solve.
-inline void run_supernodal(const SDI::Sparse_matrix& a, const Eigen::VectorXd& b, Run& run)
+inline void run_supernodal(const SDI::Sparse_matrix& a, const Eigen::VectorXd& b, bool amd, Run& run)
 {
   const SDI::Sparse_matrix lower = a.triangularView<Eigen::Lower>();
   Permutation p;
-  run.phase("ordering", [&] { CGAL::Surface_design::Nested_dissection_ordering<int>()(lower, p); });
+  run.phase("ordering", [&] {
+    if(amd)
+      Eigen::AMDOrdering<int>()(a, p);
+    else
+      CGAL::Surface_design::Nested_dissection_ordering<int>()(lower, p);
+  });
   std::shared_ptr<const SDI::Supernodal_symbolic> symbolic;
   run.phase("symbolic", [&] {
     symbolic = SDI::supernodal_analysis(lower, std::vector<int>(p.indices().data(), p.indices().data() + p.size()));
@@ -205,7 +210,8 @@ inline void run_cholmod(const SDI::Sparse_matrix& a, const Eigen::VectorXd& b, R
 /// factorization or `cholmod_factorize`), `solve`
 /// (one right-hand side), `first solve` = their sum. Checks: fill and flops of the factor, the
 /// relative residual. The system is that of workload `laplacian`, assembled untimed. `default`
-/// runs as `ldlt` below `Size_switched_cholesky`'s size threshold and as `supernodal` from there on.
+/// runs as `supernodal` with the AMD ordering below `Size_switched_cholesky`'s size threshold and
+/// as `supernodal` from there on.
 inline void factorization_workload(const Mesh& mesh, const std::string& solver, Run& run)
 {
   namespace SDI = CGAL::Surface_design::internal;
@@ -220,9 +226,10 @@ inline void factorization_workload(const Mesh& mesh, const std::string& solver, 
   }
 #endif
   using Default_solver = CGAL::Surface_design::Default_solver_traits::Solver;
-  if(solver == "supernodal" || (solver == "default" && a.rows() >= Default_solver::default_size_threshold))
+  if(solver == "supernodal" || solver == "default")
   {
-    factorization_detail::run_supernodal(a, b, run);
+    factorization_detail::run_supernodal(a, b, solver == "default" && a.rows() < Default_solver::default_size_threshold,
+                                         run);
     return;
   }
   factorization_detail::run_eigen(solver, a, b, run);

@@ -29,6 +29,10 @@
 #include <utility>
 #include <vector>
 
+#if defined(CGAL_LINKED_WITH_TBB)
+#include <tbb/task_arena.h>
+#endif
+
 namespace SD = CGAL::Surface_design;
 namespace SDI = CGAL::Surface_design::internal;
 
@@ -229,6 +233,84 @@ TEST_CASE("Supernodal Cholesky: concurrent subtrees and blocked dense kernels gi
     REQUIRE(failing.factorize(analysed.analysis(), broken, true) != -1);
     REQUIRE_FALSE(failing.is_factored());
   }
+}
+
+namespace {
+
+// One right-hand side solved by independent subtrees, with TBB's threads and within one thread:
+// the same bits (the split depends on the analysis alone); the solution of the sequential
+// factorization and of the multi-column solve (another code path, by dense kernels); a small
+// residual.
+template <class Matrix, class Ordering>
+std::size_t require_subtree_solve(const Matrix& a)
+{
+  using Scalar = typename Matrix::Scalar;
+  using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  using Dense = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
+  SD::Supernodal_cholesky<Matrix, Ordering> analysed;
+  analysed.analyzePattern(a);
+  SDI::Supernodal_factor<Scalar> sequential, concurrent;
+  REQUIRE(sequential.factorize(analysed.analysis(), a, false) == -1);
+  REQUIRE(concurrent.factorize(analysed.analysis(), a, true) == -1);
+  Dense b(a.rows(), 2);
+  for(Eigen::Index i = 0; i < a.rows(); ++i)
+  {
+    b(i, 0) = Scalar(std::sin(0.7 * double(i) + 1.));
+    b(i, 1) = Scalar(std::cos(0.3 * double(i)));
+  }
+  if constexpr(!std::is_same<Scalar, double>::value)
+    b.col(0) += Scalar(0., 1.) * Vector(b.col(1));
+  Vector x, y, z;
+  sequential.solve(Vector(b.col(0)), x);
+  concurrent.solve(Vector(b.col(0)), y);
+#if defined(CGAL_LINKED_WITH_TBB)
+  tbb::task_arena one_thread(1);
+  one_thread.execute([&] { concurrent.solve(Vector(b.col(0)), z); });
+#else
+  concurrent.solve(Vector(b.col(0)), z);
+#endif
+  REQUIRE(y == z); // the same factor, one thread or more: the same bits
+  REQUIRE((x - y).norm() <= 1e-12 * x.norm());
+  Dense columns;
+  sequential.solve(b, columns);
+  const Matrix full = a.template selfadjointView<Eigen::Lower>();
+  REQUIRE((full * x - Vector(b.col(0))).norm() <= 1e-12 * full.norm() * x.norm());
+  REQUIRE((x - Vector(columns.col(0))).norm() <= 1e-12 * x.norm());
+  REQUIRE(concurrent.solve_group_count() == sequential.solve_group_count());
+  return sequential.solve_group_count();
+}
+
+} // namespace
+
+TEST_CASE("Supernodal Cholesky: a back-substitution by subtrees is exact and does not depend on the threads",
+          "[supernodal]")
+{
+  using ND = SD::Nested_dissection_ordering<int>;
+  using AMD = Eigen::AMDOrdering<int>;
+  const Real_matrix grid = test::triangulated_grid(CGAL_SURFACE_DESIGN_TESTS_UNDER_SANITIZERS ? 120 : 200);
+  // split below a chain of separators: several groups, for both orderings and arithmetics
+  CHECK(require_subtree_solve<Real_matrix, ND>(grid) >= 2);
+  CHECK(require_subtree_solve<Real_matrix, AMD>(grid) >= 2);
+  CHECK(require_subtree_solve<Complex_matrix, ND>(test::magnetic_laplacian(grid)) >= 2);
+  // several components: a forest, split at its roots (no top to collect into)
+  std::vector<std::pair<int, int>> edges;
+  const int k = 90, components = 5;
+  for(int c = 0; c < components; ++c)
+    for(int i = 0; i < k; ++i)
+      for(int j = 0; j < k; ++j)
+      {
+        const int v = c * k * k + i * k + j;
+        if(j + 1 < k) edges.push_back({v, v + 1});
+        if(i + 1 < k) edges.push_back({v, v + k});
+      }
+  CHECK(require_subtree_solve<Real_matrix, ND>(test::graph_matrix(components * k * k, edges)) == 4);
+  // a path: its elimination tree under the natural order is a chain, nothing to split
+  std::vector<std::pair<int, int>> path;
+  for(int i = 0; i + 1 < 60000; ++i)
+    path.push_back({i, i + 1});
+  CHECK(require_subtree_solve<Real_matrix, Eigen::NaturalOrdering<int>>(test::graph_matrix(60000, path)) == 0);
+  // small factors are solved in sequence
+  CHECK(require_subtree_solve<Real_matrix, ND>(test::triangulated_grid(20)) == 0);
 }
 
 TEST_CASE("Supernodal Cholesky: clear failures, nothing solved with a bad factor", "[supernodal]")
@@ -433,20 +515,28 @@ TEST_CASE("Analysis cache: other patterns are analysed, equal ones found, in bot
   REQUIRE(cache->size() == 6);
 }
 
-TEST_CASE("Analysis cache: the default solver uses it from its size threshold on", "[supernodal]")
+TEST_CASE("Analysis cache: the default solver uses it at every size, one analysis per ordering", "[supernodal]")
 {
   auto cache = std::make_shared<SD::Symbolic_analysis_cache>();
   const Eigen::SparseMatrix<double> grid = test::triangulated_grid(20); // 400 unknowns
-  SD::Size_switched_cholesky<Eigen::SparseMatrix<double>> small, large;
+  SD::Size_switched_cholesky<Eigen::SparseMatrix<double>> small, small_again, large;
   small.set_analysis_cache(cache);
+  small_again.set_analysis_cache(cache);
   large.set_analysis_cache(cache);
   large.set_size_threshold(400);
   small.compute(grid);
   REQUIRE_FALSE(small.uses_supernodal());
-  REQUIRE(cache->size() == 0); // AMD and the simplicial analysis: nothing cached
+  REQUIRE(cache->size() == 1); // the AMD analysis
+  small_again.compute(grid);
+  REQUIRE(cache->hits() == 1);
   large.compute(grid);
   REQUIRE(large.uses_supernodal());
-  REQUIRE(cache->size() == 1);
+  REQUIRE(cache->size() == 2); // nested dissection: not the AMD analysis of the same pattern
+  REQUIRE(cache->hits() == 1);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(grid.rows(), -1., 2.);
+  const Eigen::VectorXd x_small = small_again.solve(b), x_large = large.solve(b);
+  CHECK((grid.selfadjointView<Eigen::Lower>() * x_small - b).norm() <= 1e-10 * b.norm());
+  CHECK((x_small - x_large).norm() <= 1e-10 * x_large.norm());
   // a Hermitian system through the traits follows the traits' threshold and cache
   SD::Default_solver_traits traits;
   traits.solver().set_size_threshold(0);
@@ -455,5 +545,5 @@ TEST_CASE("Analysis cache: the default solver uses it from its size threshold on
     test::magnetic_laplacian(grid), test::complex_test_vector(grid.rows(), 1),
     Eigen::SimplicialLDLT<Complex_matrix>(test::magnetic_laplacian(grid)).solve(test::complex_test_vector(grid.rows(), 1)),
     traits);
-  REQUIRE(cache->hits() == 1);
+  REQUIRE(cache->hits() == 2);
 }

@@ -21,6 +21,7 @@
 #include <memory>
 #include <mutex>
 #include <type_traits>
+#include <typeindex>
 #include <utility>
 #include <vector>
 
@@ -54,8 +55,9 @@ using Nested_dissection_ordering = internal::Nested_dissection_ordering<StorageI
 /// Give one cache to the solvers of every system that should share (`Size_switched_cholesky` and
 /// `Supernodal_cholesky` have `set_analysis_cache()`; the default solver traits reach theirs with
 /// `traits.solver().set_analysis_cache(cache)`, and Hermitian systems inherit it from the traits).
-/// An analysis is found only for a pattern equal, entry for entry, to one analysed before, in real
-/// or complex arithmetic; any other pattern is analysed and added. Patterns are compared in O(nnz)
+/// An analysis is found only for a pattern equal, entry for entry, to one analysed before with the
+/// same fill-reducing ordering (AMD and nested dissection are kept apart), in real or complex
+/// arithmetic; any other pattern is analysed and added. Patterns are compared in O(nnz)
 /// and kept (one `int` per stored lower entry, plus the analysis) until `clear()` or the cache's
 /// destruction. Thread-safe.
 class Symbolic_analysis_cache
@@ -84,11 +86,13 @@ public:
   }
 
   /// \cond SKIP_IN_MANUAL
-  /// The analysis of a matrix with the lower pattern of `a`, made by `analyse()` if there is none yet.
+  /// The analysis of a matrix with the lower pattern of `a` under the fill-reducing ordering
+  /// `ordering`, made by `analyse()` if there is none yet.
   template <class SparseMatrixType, class Analyse>
-  std::shared_ptr<const Analysis> find_or_analyse(const SparseMatrixType& a, const Analyse& analyse)
+  std::shared_ptr<const Analysis> find_or_analyse(const SparseMatrixType& a, std::type_index ordering,
+                                                  const Analyse& analyse)
   {
-    Entry key;
+    Entry key{ordering, {}, {}, nullptr};
     key.column_start.assign(std::size_t(a.cols()) + 1, 0);
     internal::supernodal_detail::for_each_lower_entry(a, [&](int i, int j, const auto&) {
       ++key.column_start[std::size_t(j) + 1];
@@ -116,13 +120,15 @@ public:
 private:
   struct Entry
   {
+    std::type_index ordering;
     std::vector<int> column_start, rows; // per column, the count of lower entries (then the rows)
     std::shared_ptr<const Analysis> analysis;
   };
 
   static bool same_pattern(const Entry& a, const Entry& b)
   {
-    return a.rows.size() == b.rows.size() && a.column_start == b.column_start && a.rows == b.rows;
+    return a.ordering == b.ordering && a.rows.size() == b.rows.size() && a.column_start == b.column_start &&
+           a.rows == b.rows;
   }
 
   std::shared_ptr<const Analysis> find(const Entry& key)
@@ -206,11 +212,11 @@ public:
       else // Eigen's orderings expect both triangles
         Ordering_()(MatrixType(a.template selfadjointView<Eigen::Lower>()), order);
       std::vector<int> old_of_new(std::size_t(a.rows()));
-      for(Eigen::Index k = 0; k < a.rows(); ++k)
-        old_of_new[std::size_t(k)] = int(order.indices()[k]);
+      for(Eigen::Index k = 0; k < a.rows(); ++k) // an empty permutation (Eigen::NaturalOrdering): none
+        old_of_new[std::size_t(k)] = order.size() == 0 ? int(k) : int(order.indices()[k]);
       return internal::supernodal_analysis(a, std::move(old_of_new));
     };
-    m_analysis = m_cache ? m_cache->find_or_analyse(a, analyse) : analyse();
+    m_analysis = m_cache ? m_cache->find_or_analyse(a, std::type_index(typeid(Ordering_)), analyse) : analyse();
     m_info = Eigen::Success;
   }
 
@@ -311,10 +317,10 @@ private:
 /// `Supernodal_cholesky` with the library's nested dissection behind `CGAL::Eigen_solver_traits`:
 /// a model of `SparseLinearAlgebraWithFactorTraits_d` for symmetric positive definite systems;
 /// Hermitian systems (the smoothest direction fields) are factored in complex arithmetic. Choose
-/// it for large systems (`Default_solver_traits` uses it from 20k unknowns on): its advantage over
-/// `Simplicial_ldlt_solver_traits` grows with the size; below about 20k unknowns AMD with the
-/// simplicial factorization is as fast or faster (figures in the foundation manual, section
-/// "Sparse solvers and optimizers").
+/// it for large systems (`Default_solver_traits` orders by nested dissection from 20k unknowns on):
+/// its advantage over `Simplicial_ldlt_solver_traits` grows with the size; below about 20k
+/// unknowns the AMD ordering of `Default_solver_traits` costs less to compute (figures in the
+/// foundation manual, section "Sparse solvers and optimizers").
 using Supernodal_solver_traits =
   CGAL::Eigen_solver_traits<Supernodal_cholesky<CGAL::Eigen_sparse_matrix<double>::EigenType>>;
 

@@ -29,6 +29,7 @@
 
 #include <CGAL/Surface_design/internal/Solvers/nested_dissection.h>
 #include <CGAL/Surface_design/internal/Solvers/parallel.h>
+#include <CGAL/Surface_design/internal/Solvers/supernodal_solve.h>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -57,39 +58,6 @@
 namespace CGAL {
 namespace Surface_design {
 namespace internal {
-
-/// Relative size below which a pivot of a positive definite system (an LDLT pivot d_j, or |L_jj|^2
-/// of a Cholesky factor) counts as zero: the matrix is then taken as singular to working precision.
-constexpr double ldlt_pivot_tolerance = 100. * std::numeric_limits<double>::epsilon();
-
-/// The pattern-only part of a supernodal Cholesky factorization, shared by every matrix with the
-/// same pattern (same stored entries, in the same order). Indices of unknowns after permutation are
-/// called "permuted".
-struct Supernodal_symbolic
-{
-  int n = 0;
-  std::vector<int> old_of_new;              // old_of_new[k]: original index of permuted unknown k
-  std::vector<int> first;                   // supernode s holds permuted columns [first[s], first[s+1])
-  std::vector<int> parent;                  // parent supernode, -1 for roots
-  std::vector<int> child_offsets, children; // children of s: children[child_offsets[s] .. child_offsets[s+1])
-  std::vector<int> subtree_first;           // the subtree of s is the supernodes [subtree_first[s], s]
-  std::vector<double> subtree_work;         // multiply-adds of the factorization of that subtree
-  std::vector<std::int64_t> row_offsets;    // rows of s: rows[row_offsets[s] .. row_offsets[s+1])
-  std::vector<int> rows;                    // its columns first, then the rows below them, ascending
-  std::vector<int> relative;                // aligned with rows: position of a row below s in its parent's rows
-  std::vector<std::int64_t> panel_offsets;  // the dense panel of s (nrows x ncols, column-major) in L's values
-  std::vector<std::int64_t> entry_target;   // per stored lower entry of A (iteration order): its place in L
-  std::vector<unsigned char> entry_conjugated; // 1 when the entry lands in the other triangle after permutation
-  std::size_t update_size = 0;              // largest update matrix (entries)
-  std::size_t stack_size = 0;               // peak of the update matrices stacked at once (entries)
-  std::size_t largest_below = 0;            // most rows below a supernode (the solve's workspace)
-  double factor_nonzeros = 0.;              // entries of L stored (explicit zeros of amalgamation included)
-  double factor_flops = 0.;                 // multiply-adds of the factorization, sum over columns of count^2
-
-  int supernode_count() const { return int(first.size()) - 1; }
-  int columns(int s) const { return first[std::size_t(s) + 1] - first[std::size_t(s)]; }
-  int row_count(int s) const { return int(row_offsets[std::size_t(s) + 1] - row_offsets[std::size_t(s)]); }
-};
 
 namespace supernodal_detail {
 
@@ -602,6 +570,13 @@ public:
   }
 
   bool is_factored() const { return m_symbolic != nullptr; }
+
+  /// Number of groups of subtrees that a back-substitution of one right-hand side solves
+  /// independently (0: all of it in sequence); depends on the analysis alone.
+  std::size_t solve_group_count() const
+  {
+    return m_symbolic ? supernodal_solve_split(*m_symbolic).groups.size() : 0;
+  }
   const Supernodal_symbolic& symbolic() const { return *m_symbolic; }
 
   /// The pivots |L_jj|^2 in the original order of the unknowns (those of an LDL^T factorization
@@ -674,48 +649,42 @@ private:
   // A back-substitution reads the factor once, so it runs at memory speed; per-supernode calls of
   // the dense kernels and the copies to and from a gathered block cost more than they save there
   // (measured: 1.2-1.4x slower than this loop on meshes of 20k to 120k vertices).
+  //
+  // Large factors are solved by independent subtrees (`supernodal_solve_split`): forward, each group of
+  // subtrees runs on its own, its updates of the top of the tree collected in a buffer of its own
+  // and added in a fixed order; backward, the top first, then the groups on their own. The split
+  // depends on the analysis alone, so that the result does not depend on the number of threads.
   template <class Rhs, class Dest>
   void solve_one(const Eigen::MatrixBase<Rhs>& b, Eigen::MatrixBase<Dest>& x) const
   {
     const Supernodal_symbolic& sym = *m_symbolic;
     const Eigen::Index n = sym.n;
+    const int ns = sym.supernode_count();
     std::vector<Scalar> y(std::size_t(n) + 1); // + 1: a valid pointer for n = 0
     for(Eigen::Index i = 0; i < n; ++i)
       y[std::size_t(i)] = b(sym.old_of_new[std::size_t(i)], 0);
-    const int ns = sym.supernode_count();
-    const Scalar* values = m_values.data();
-    for(int s = 0; s < ns; ++s) // L y = b
-    {
-      const int c = sym.columns(s), m = sym.row_count(s);
-      const int* rows = sym.rows.data() + sym.row_offsets[std::size_t(s)];
-      Scalar* block = y.data() + sym.first[std::size_t(s)];
-      for(int j = 0; j < c; ++j)
-      {
-        const Scalar* column = values + sym.panel_offsets[std::size_t(s)] + std::int64_t(j) * m;
-        const Scalar yj = block[j] / column[j];
-        block[j] = yj;
-        for(int i = j + 1; i < c; ++i)
-          block[i] -= column[i] * yj;
-        for(int i = c; i < m; ++i)
-          y[std::size_t(rows[i])] -= column[i] * yj;
-      }
-    }
-    for(int s = ns; s-- > 0;) // L^H x = y
-    {
-      const int c = sym.columns(s), m = sym.row_count(s);
-      const int* rows = sym.rows.data() + sym.row_offsets[std::size_t(s)];
-      Scalar* block = y.data() + sym.first[std::size_t(s)];
-      for(int j = c; j-- > 0;)
-      {
-        const Scalar* column = values + sym.panel_offsets[std::size_t(s)] + std::int64_t(j) * m;
-        Scalar sum = block[j];
-        for(int i = j + 1; i < c; ++i)
-          sum -= Eigen::numext::conj(column[i]) * block[i];
-        for(int i = c; i < m; ++i)
-          sum -= Eigen::numext::conj(column[i]) * y[std::size_t(rows[i])];
-        block[j] = sum / Eigen::numext::conj(column[j]);
-      }
-    }
+    const Supernodal_solve_split split = supernodal_solve_split(sym);
+    const int top_column = split.top < ns ? sym.first[std::size_t(split.top)] : int(n);
+    const std::size_t top_rows = std::size_t(n - top_column);
+    std::vector<std::vector<Scalar>> collected(split.groups.size());
+    for_each_index(split.groups.size(), m_parallel, [&](std::size_t g) {
+      collected[g].assign(top_rows + 1, Scalar(0));
+      for(int root : split.groups[g])
+        for(int s = sym.subtree_first[std::size_t(root)]; s <= root; ++s)
+          supernodal_forward(sym, m_values.data(), s, y.data(), collected[g].data(), top_column);
+    });
+    for(const std::vector<Scalar>& c : collected)
+      for(std::size_t i = 0; i < top_rows; ++i)
+        y[std::size_t(top_column) + i] += c[i];
+    for(int s = split.top; s < ns; ++s)
+      supernodal_forward(sym, m_values.data(), s, y.data(), static_cast<Scalar*>(nullptr), int(n));
+    for(int s = ns; s-- > split.top;)
+      supernodal_backward(sym, m_values.data(), s, y.data());
+    for_each_index(split.groups.size(), m_parallel, [&](std::size_t g) {
+      for(int root : split.groups[g])
+        for(int s = root + 1; s-- > sym.subtree_first[std::size_t(root)];)
+          supernodal_backward(sym, m_values.data(), s, y.data());
+    });
     x.derived().resize(n, 1);
     for(Eigen::Index i = 0; i < n; ++i)
       x(sym.old_of_new[std::size_t(i)], 0) = y[std::size_t(i)];
