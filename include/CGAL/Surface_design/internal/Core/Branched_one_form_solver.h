@@ -14,6 +14,7 @@
 #include <CGAL/Surface_design/internal/Core/topology.h>
 #include <CGAL/Surface_design/internal/Solvers/Factored_system.h>
 #include <CGAL/Surface_design/internal/Solvers/integer_quadratic.h>
+#include <CGAL/Surface_design/internal/Solvers/parallel.h>
 #include <CGAL/Surface_design/internal/Solvers/sparse_types.h>
 
 #include <Eigen/Dense>
@@ -485,11 +486,18 @@ private:
   std::vector<Value> optimal_one_form(const std::vector<Value>& ystar, const std::vector<Value>& omega,
                                       std::vector<Value>* potential = nullptr) const
   {
+    const Eigen::VectorXd f = m_system.solve(potential_rhs(ystar, &omega));
+    return one_form_of_potential(ystar, f, potential);
+  }
+
+  // d_P^T W (omega - ystar) (omega = 0 when null), 0 at pinned vertices
+  Eigen::VectorXd potential_rhs(const std::vector<Value>& ystar, const std::vector<Value>* omega) const
+  {
     const std::size_t d = std::size_t(m_cover.d), ne = ystar.size();
     Eigen::VectorXd b = Eigen::VectorXd::Zero(Eigen::Index(m_pinned.size() * d));
     for(std::size_t e = 0; e < ne; ++e)
     {
-      const Value x = m_weight[e] * (omega[e] - ystar[e]);
+      const Value x = m_weight[e] * (omega ? Value((*omega)[e] - ystar[e]) : Value(-ystar[e]));
       const Value xj = m_P[e].transpose() * x;
       for(std::size_t a = 0; a < d; ++a)
       {
@@ -501,7 +509,15 @@ private:
       if(m_pinned[v])
         for(std::size_t a = 0; a < d; ++a)
           b[Eigen::Index(v * d + a)] = 0.;
-    const Eigen::VectorXd f = m_system.solve(b);
+    return b;
+  }
+
+  // y = ystar + d_P f, and f per vertex in `potential`
+  template <class Potential>
+  std::vector<Value> one_form_of_potential(const std::vector<Value>& ystar, const Potential& f,
+                                           std::vector<Value>* potential) const
+  {
+    const std::size_t d = std::size_t(m_cover.d), ne = ystar.size();
     auto value = [&](std::size_t v) {
       Value x = Value::Zero();
       for(std::size_t a = 0; a < d; ++a)
@@ -522,6 +538,14 @@ private:
 
   using Sparse_form = std::vector<std::pair<std::size_t, Value>>;
 
+  static std::vector<Value> dense_form(const Sparse_form& sparse, std::size_t ne)
+  {
+    std::vector<Value> y(ne, Value::Zero());
+    for(const auto& [e, v] : sparse)
+      y[e] = v;
+    return y;
+  }
+
   // <eta, y - omega>_W (or <eta, y>_W without omega)
   double sparse_dot(const Sparse_form& eta, const std::vector<Value>& y, const std::vector<Value>* omega) const
   {
@@ -538,44 +562,53 @@ private:
     if(m_basis_ready)
       return;
     // built in locals and committed at the end: a failing back-substitution leaves no half basis
+    // Every direction and every response is independent of the others: concurrent tasks (TBB).
     const std::size_t m = m_free.size(), ne = m_idx.number_of_edges();
     std::vector<Sparse_form> eta(m);
-    for(std::size_t j = 0; j < m; ++j)
-    {
+    for_each_index(m, true, [&](std::size_t j) {
       std::vector<Value> y(ne, Value::Zero());
       y[m_free[j].edge][m_free[j].sheet] = two_pi;
       y = peel(std::move(y), nullptr);
       for(std::size_t e = 0; e < ne; ++e)
         if(!y[e].isZero())
           eta[j].emplace_back(e, y[e]);
-    }
-    const std::vector<Value> zero(ne, Value::Zero());
+    });
     Eigen::MatrixXd full = Eigen::MatrixXd::Zero(Eigen::Index(m), Eigen::Index(m));
     // the responses y(eta_k, 0) and their potentials, kept (for the kept directions) when they
     // fit in the memory budget: a solve whose windings move adds them instead of solving again
     const std::size_t d = std::size_t(m_cover.d), nv = m_pinned.size();
     const bool keep_responses = m * (ne + nv) * d <= response_budget;
     std::vector<Response> response(keep_responses ? m : 0);
-    for(std::size_t k = 0; k < m; ++k)
+    // the potentials of the directions solved by blocks of right-hand sides (a supernodal
+    // factorization reads its factor once per block)
+    Eigen::MatrixXd rhs, potentials;
+    for(std::size_t k0 = 0; k0 < m; k0 += solve_block)
     {
-      std::vector<Value> eta_k(ne, Value::Zero());
-      for(const auto& [e, v] : eta[k])
-        eta_k[e] = v;
-      std::vector<Value> potential;
-      const std::vector<Value> xi = optimal_one_form(eta_k, zero, keep_responses ? &potential : nullptr);
-      for(std::size_t j = 0; j < m; ++j)
-        full(Eigen::Index(j), Eigen::Index(k)) = sparse_dot(eta[j], xi, nullptr);
-      if(keep_responses)
-      {
-        response[k].y.resize(ne * d);
-        for(std::size_t e = 0; e < ne; ++e)
-          for(std::size_t a = 0; a < d; ++a)
-            response[k].y[e * d + a] = xi[e][Eigen::Index(a)];
-        response[k].potential.resize(nv * d);
-        for(std::size_t v = 0; v < nv; ++v)
-          for(std::size_t a = 0; a < d; ++a)
-            response[k].potential[v * d + a] = potential[v][Eigen::Index(a)];
-      }
+      const std::size_t width = (std::min)(solve_block, m - k0);
+      rhs.resize(Eigen::Index(nv * d), Eigen::Index(width));
+      for_each_index(width, true, [&](std::size_t c) {
+        rhs.col(Eigen::Index(c)) = potential_rhs(dense_form(eta[k0 + c], ne), nullptr);
+      });
+      m_system.solve_many(rhs, potentials);
+      for_each_index(width, true, [&](std::size_t c) {
+        const std::size_t k = k0 + c;
+        std::vector<Value> potential;
+        const std::vector<Value> xi = one_form_of_potential(dense_form(eta[k], ne), potentials.col(Eigen::Index(c)),
+                                                            keep_responses ? &potential : nullptr);
+        for(std::size_t j = 0; j < m; ++j)
+          full(Eigen::Index(j), Eigen::Index(k)) = sparse_dot(eta[j], xi, nullptr);
+        if(keep_responses)
+        {
+          response[k].y.resize(ne * d);
+          for(std::size_t e = 0; e < ne; ++e)
+            for(std::size_t a = 0; a < d; ++a)
+              response[k].y[e * d + a] = xi[e][Eigen::Index(a)];
+          response[k].potential.resize(nv * d);
+          for(std::size_t v = 0; v < nv; ++v)
+            for(std::size_t a = 0; a < d; ++a)
+              response[k].potential[v * d + a] = potential[v][Eigen::Index(a)];
+        }
+      });
     }
     full = 0.5 * (full + full.transpose()).eval();
     // keep j when its harmonic part is not (numerically) in the span of the kept ones
@@ -624,6 +657,7 @@ private:
     std::vector<double> y, potential;
   };
   static constexpr std::size_t response_budget = std::size_t(1) << 24; // doubles (128 MB)
+  static constexpr std::size_t solve_block = 32;                        // right-hand sides per solve
   struct Peel_other
   {
     std::size_t edge;

@@ -61,6 +61,13 @@ void check_ldlt_pivots(const Pivots& d, const std::string& name, Eigen::Index si
   }
 }
 
+// Detects solver traits exposing an Eigen sparse solver (`solver().solve(dense matrix)`).
+template <class Traits, class = void>
+struct Has_eigen_solver : std::false_type {};
+template <class Traits>
+struct Has_eigen_solver<Traits, std::void_t<decltype(Eigen::MatrixXd(std::declval<Traits&>().solver().solve(
+                                   std::declval<const Eigen::MatrixXd&>())))>> : std::true_type {};
+
 /// A sparse symmetric system factored once and solved for any number of right-hand sides.
 ///
 /// `SolverTraits` is any model of CGAL's `SparseLinearAlgebraWithFactorTraits_d`
@@ -148,6 +155,35 @@ public:
     Eigen::VectorXd x;
     solve(b, x);
     return x;
+  }
+
+  /// Solves A X = B for every column of B. Traits that expose an Eigen solver (`solver()`, as
+  /// `CGAL::Eigen_solver_traits` does) solve all columns in one call, which lets a supernodal
+  /// factorization read its factor once for all of them; others solve column by column.
+  /// \throws Linear_solver_failure as `solve()`
+  void solve_many(const Eigen::MatrixXd& b, Eigen::MatrixXd& x)
+  {
+    if(!m_factored)
+      throw Linear_solver_failure("the " + m_name + " was solved before being factored");
+    if constexpr(Has_eigen_solver<SolverTraits>::value)
+    {
+      x = m_traits.solver().solve(b);
+      if(m_traits.solver().info() != Eigen::Success)
+        throw Linear_solver_failure("the solve of the " + m_name + " failed");
+      if(!x.allFinite())
+        throw Linear_solver_failure("the solve of the " + m_name +
+                                    " produced non-finite values (singular or ill-conditioned matrix)");
+    }
+    else
+    {
+      x.resize(b.rows(), b.cols());
+      Eigen::VectorXd column;
+      for(Eigen::Index k = 0; k < b.cols(); ++k)
+      {
+        solve(Eigen::VectorXd(b.col(k)), column);
+        x.col(k) = column;
+      }
+    }
   }
 
 private:
