@@ -165,6 +165,9 @@ public:
   {
     if(!m_factored)
       throw Linear_solver_failure("the " + m_name + " was solved before being factored");
+    if(b.rows() != m_size)
+      throw Linear_solver_failure("the right-hand sides of the " + m_name + " have " + std::to_string(b.rows()) +
+                                  " rows, not " + std::to_string(m_size));
     if constexpr(Has_eigen_solver<SolverTraits>::value)
     {
       x = m_traits.solver().solve(b);
