@@ -4,7 +4,7 @@
 #                                     see test/CMakeLists.txt), all tests
 #   bash scripts/test.sh --sanitize   the same tests and the programs (command lines, editor server)
 #                                     under AddressSanitizer + UBSan (-O0, the long-running programs
-#                                     at -O1, see CMakeLists.txt; line tables only (-g1); assertions on)
+#                                     at -Og, see CMakeLists.txt; line tables only (-g1); assertions on)
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 install_packages "${BUILD_PACKAGES[@]}" "${EDITOR_PACKAGES[@]}" python3 chromium
