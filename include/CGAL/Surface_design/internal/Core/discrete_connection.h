@@ -49,15 +49,15 @@ Discrete_connection levi_civita_connection(const Indices& idx, const VertexPoint
   Discrete_connection c;
   c.frames = vertex_frames(idx, vpm, corner);
   c.rho.resize(idx.number_of_edges());
-  for(std::size_t e = 0; e < c.rho.size(); ++e)
-  {
+  for_each_index(c.rho.size(), worth_parallel(c.rho.size()), [&](std::size_t e) {
     const auto h = idx.oriented_halfedge(e);
     c.rho[e] = wrap_angle(c.frames.angle[idx.index(opposite(h, tm))] + pi - c.frames.angle[idx.index(h)]);
-  }
+  });
   c.curvature.assign(idx.number_of_faces(), -pi);
-  for(std::size_t f = 0; f < c.curvature.size(); ++f)
+  for_each_index(c.curvature.size(), worth_parallel(c.curvature.size()), [&](std::size_t f) {
     for(auto h : halfedges_around_face(halfedge(idx.face(f), tm), tm))
       c.curvature[f] += c.frames.scale[idx.target_index(h)] * corner[idx.index(h)];
+  });
   return c;
 }
 

@@ -139,77 +139,88 @@ inline void make_star_monotone(double* psi, const double* phi, std::size_t m, do
 }
 
 /// Computes the frames (see Vertex_frames). `corner` are the corner angles (corner_angles()).
+/// The stars are independent: with TBB they are computed by concurrent tasks, each star by the same
+/// sequence of operations as alone (the same bits with any number of threads).
 template <class Indices, class VertexPointMap>
 Vertex_frames vertex_frames(const Indices& idx, const VertexPointMap& vpm,
                             const std::vector<double>& corner)
 {
   const auto& tm = idx.mesh();
   const std::size_t nv = idx.number_of_vertices();
+  const std::vector<Eigen::Vector3d> x = vertex_positions(idx, vpm);
   Vertex_frames fr;
   fr.scale.assign(nv, 1.);
   fr.angle.assign(idx.number_of_halfedges(), 0.);
   fr.normal = vertex_normals(idx, vpm, corner);
   fr.e0.assign(nv, Eigen::Vector3d::Zero());
   fr.e1.assign(nv, Eigen::Vector3d::Zero());
-  fr.border.assign(nv, false);
+  std::vector<char> border_of(nv, 0); // (std::vector<bool> packs bits: not safe to write concurrently)
+  // star v: its outgoing halfedges, then the sentinel 2 pi
   fr.star_begin.assign(nv + 1, 0);
-  fr.star_psi.reserve(idx.number_of_halfedges() + nv);
-  fr.star_phi.reserve(idx.number_of_halfedges() + nv);
-
-  std::vector<std::size_t> out;
-  std::vector<double> wedge; // corner angle between out[k] and out[k+1]; -1 for the boundary gap
+  for(std::size_t h = 0; h < idx.number_of_halfedges(); ++h)
+    ++fr.star_begin[idx.source_index(idx.halfedge(h)) + 1];
   for(std::size_t v = 0; v < nv; ++v)
-  {
-    fr.star_begin[v] = fr.star_psi.size();
-    const auto vd = idx.vertex(v);
-    auto start = opposite(halfedge(vd, tm), tm); // an outgoing halfedge
-    for(auto h : halfedges_around_source(vd, tm))
-      if(idx.is_border(opposite(h, tm)))
-        start = h;
-    out.clear();
-    wedge.clear();
-    auto h = start;
-    do
-    {
-      out.push_back(idx.index(h));
-      wedge.push_back(idx.is_border(h) ? -1. : corner[idx.index(prev(h, tm))]);
-      h = opposite(prev(h, tm), tm);
-    } while(h != start);
+    fr.star_begin[v + 1] += fr.star_begin[v] + 1;
+  fr.star_psi.assign(fr.star_begin[nv], 0.);
+  fr.star_phi.assign(fr.star_begin[nv], 0.);
 
-    const bool border = wedge.back() < 0.;
-    double angle_sum = 0.;
-    for(double w : wedge)
-      angle_sum += (std::max)(w, 0.);
-    const double s = border ? 1. : two_pi / angle_sum;
-    fr.scale[v] = s;
-    fr.border[v] = border;
-
-    const Eigen::Vector3d n = fr.normal[v];
-    const Eigen::Vector3d p = position(vpm, vd);
-    auto planar = [&](const Eigen::Vector3d& d) { return Eigen::Vector3d(d - d.dot(n) * n); };
-    const Eigen::Vector3d e0 = planar(position(vpm, target(idx.halfedge(out[0]), tm)) - p).normalized();
-    const Eigen::Vector3d e1 = n.cross(e0);
-    fr.e0[v] = e0;
-    fr.e1[v] = e1;
-    double phi = 0.;
-    const std::size_t first = fr.star_psi.size();
-    for(std::size_t k = 0; k < out.size(); ++k)
+  constexpr std::size_t block = 256;
+  for_each_index((nv + block - 1) / block, worth_parallel(nv), [&](std::size_t b) {
+    std::vector<std::size_t> out;
+    std::vector<double> wedge; // corner angle between out[k] and out[k+1]; -1 for the boundary gap
+    for(std::size_t v = b * block; v < (std::min)(nv, (b + 1) * block); ++v)
     {
-      const Eigen::Vector3d d = planar(position(vpm, target(idx.halfedge(out[k]), tm)) - p);
-      double psi = k == 0 ? 0. : std::atan2(d.dot(e1), d.dot(e0));
-      if(psi < 0.)
-        psi += two_pi;
-      fr.angle[out[k]] = phi;
-      fr.star_psi.push_back(psi);
-      fr.star_phi.push_back(phi);
-      phi += s * (std::max)(wedge[k], 0.);
+      const auto vd = idx.vertex(v);
+      auto start = opposite(halfedge(vd, tm), tm); // an outgoing halfedge
+      for(auto h : halfedges_around_source(vd, tm))
+        if(idx.is_border(opposite(h, tm)))
+          start = h;
+      out.clear();
+      wedge.clear();
+      auto h = start;
+      do
+      {
+        out.push_back(idx.index(h));
+        wedge.push_back(idx.is_border(h) ? -1. : corner[idx.index(prev(h, tm))]);
+        h = opposite(prev(h, tm), tm);
+      } while(h != start);
+
+      const bool border = wedge.back() < 0.;
+      double angle_sum = 0.;
+      for(double w : wedge)
+        angle_sum += (std::max)(w, 0.);
+      const double s = border ? 1. : two_pi / angle_sum;
+      fr.scale[v] = s;
+      border_of[v] = border;
+
+      const Eigen::Vector3d n = fr.normal[v];
+      const Eigen::Vector3d& p = x[v];
+      auto planar = [&](const Eigen::Vector3d& d) { return Eigen::Vector3d(d - d.dot(n) * n); };
+      auto head = [&](std::size_t k) { return x[idx.target_index(idx.halfedge(out[k]))]; };
+      const Eigen::Vector3d e0 = planar(head(0) - p).normalized();
+      const Eigen::Vector3d e1 = n.cross(e0);
+      fr.e0[v] = e0;
+      fr.e1[v] = e1;
+      double phi = 0.;
+      const std::size_t first = fr.star_begin[v];
+      for(std::size_t k = 0; k < out.size(); ++k)
+      {
+        const Eigen::Vector3d d = planar(head(k) - p);
+        double psi = k == 0 ? 0. : std::atan2(d.dot(e1), d.dot(e0));
+        if(psi < 0.)
+          psi += two_pi;
+        fr.angle[out[k]] = phi;
+        fr.star_psi[first + k] = psi;
+        fr.star_phi[first + k] = phi;
+        phi += s * (std::max)(wedge[k], 0.);
+      }
+      fr.star_psi[first + out.size()] = two_pi;
+      fr.star_phi[first + out.size()] = two_pi;
+      make_star_monotone(fr.star_psi.data() + first, fr.star_phi.data() + first, out.size() + 1,
+                         min_star_sector_ratio);
     }
-    fr.star_psi.push_back(two_pi);
-    fr.star_phi.push_back(two_pi);
-    make_star_monotone(fr.star_psi.data() + first, fr.star_phi.data() + first, out.size() + 1,
-                       min_star_sector_ratio);
-  }
-  fr.star_begin[nv] = fr.star_psi.size();
+  });
+  fr.border.assign(border_of.begin(), border_of.end());
   return fr;
 }
 

@@ -14,6 +14,8 @@
 //  3. the row structure of every supernode (its columns, then the union of its columns' entries and
 //     its children's structures below it), the position of each child's rows in its parent's front,
 //     the destination of every stored entry of A in the factor, and the workspace sizes.
+//  Its result, `Supernodal_symbolic`, is declared in supernodal_solve.h with the back-substitution,
+//  which needs the pattern only.
 // Numeric factorization, supernodes in postorder: the entries of A are scattered into the dense
 // panels of L (nrows x ncols each), the update matrices of the children are added to the panel and to
 // the supernode's own update matrix (extend-add, from a stack), then the panel is factored by dense
