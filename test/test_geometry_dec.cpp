@@ -6,6 +6,7 @@
 #include <test_support.h>
 
 #include <CGAL/Surface_design/internal/Core/dec.h>
+#include <CGAL/Surface_design/internal/Core/discrete_connection.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/Core/topology.h>
@@ -16,6 +17,10 @@
 
 #include <cmath>
 #include <random>
+
+#if defined(CGAL_LINKED_WITH_TBB)
+#include <tbb/task_arena.h>
+#endif
 
 namespace SD = CGAL::Surface_design;
 namespace SDI = CGAL::Surface_design::internal;
@@ -314,4 +319,47 @@ TEMPLATE_TEST_CASE("Operators do not depend on the mesh data structure", "[dec]"
   const SDI::Sparse_matrix L = SDI::weighted_laplacian(idx, w);
   const SDI::Sparse_matrix rL = SDI::weighted_laplacian(ridx, rw);
   REQUIRE((L - rL).norm() <= 1e-14 * L.norm()); // vertex-indexed: identical up to summation order
+}
+
+// The corner angles, the vertex frames and the connection's transport angles and curvatures run
+// as concurrent tasks on meshes above a few thousand elements (bunny_8k: 4151 vertices, 24k
+// halfedges); every element is computed alone, so one thread and several give the same bits.
+TEMPLATE_TEST_CASE("The connection and its frames do not depend on the number of threads", "[geometry]",
+                   SD_MESH_TYPES)
+{
+  const TestType mesh = test::load_mesh<TestType>("bunny_8k.off");
+  SDI::Mesh_indices<TestType> idx(mesh);
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  REQUIRE(SDI::worth_parallel(idx.number_of_vertices()));
+  const SDI::Discrete_connection concurrent = SDI::levi_civita_connection(idx, vpm);
+  SDI::Discrete_connection alone;
+#if defined(CGAL_LINKED_WITH_TBB)
+  tbb::task_arena one_thread(1);
+  one_thread.execute([&] { alone = SDI::levi_civita_connection(idx, vpm); });
+#else
+  alone = SDI::levi_civita_connection(idx, vpm);
+#endif
+  REQUIRE(concurrent.rho == alone.rho);
+  REQUIRE(concurrent.curvature == alone.curvature);
+  REQUIRE(concurrent.frames.angle == alone.frames.angle);
+  REQUIRE(concurrent.frames.scale == alone.frames.scale);
+  REQUIRE(concurrent.frames.star_begin == alone.frames.star_begin);
+  REQUIRE(concurrent.frames.star_psi == alone.frames.star_psi);
+  REQUIRE(concurrent.frames.star_phi == alone.frames.star_phi);
+  REQUIRE(concurrent.frames.e0 == alone.frames.e0);
+  REQUIRE(concurrent.frames.border == alone.frames.border);
+  // and every element was computed: each star ends on its 2 pi sentinel, the rescaled angles of
+  // an interior star end short of 2 pi, the face curvatures sum to 2 pi chi (closed, genus 0)
+  double total = 0.;
+  for(double k : concurrent.curvature)
+    total += k;
+  REQUIRE(std::abs(total - 4. * SDI::pi) <= 1e-9);
+  for(std::size_t v = 0; v < idx.number_of_vertices(); ++v)
+  {
+    const std::size_t b = concurrent.frames.star_begin[v], e = concurrent.frames.star_begin[v + 1] - 1;
+    REQUIRE(e > b + 1);
+    REQUIRE(concurrent.frames.star_psi[e] == SDI::two_pi);
+    REQUIRE(concurrent.frames.star_phi[e - 1] < SDI::two_pi);
+    REQUIRE(concurrent.frames.star_phi[e - 1] > 0.);
+  }
 }
