@@ -300,9 +300,7 @@ barycentric_embedding_iterative(PolygonMesh& pm, const FixedVertices& fixed_vert
       face_vertex.push_back(idx.index(v));
     face_start.push_back(face_vertex.size());
   }
-  std::vector<Eigen::Vector3d> x(idx.number_of_vertices()), next;
-  for(std::size_t v = 0; v < x.size(); ++v)
-    x[v] = internal::position(vpm, idx.vertex(v));
+  std::vector<Eigen::Vector3d> x = internal::vertex_positions(idx, vpm), next;
 
   Iterative_embedding_result result;
   result.area = internal::polygon_mesh_area(face_start, face_vertex, x);

@@ -240,9 +240,7 @@ double developability_energy(const TriangleMesh& tm, const NamedParameters& np =
   const internal::Mesh_indices<TriangleMesh> idx(tm, np);
   internal::validate_mesh(idx, vpm);
   const internal::Vertex_stars stars = internal::vertex_stars(idx, o.include_boundary, o.omit_valence_three ? 4 : 0);
-  std::vector<Eigen::Vector3d> x(idx.number_of_vertices()), gradient;
-  for(std::size_t v = 0; v < x.size(); ++v)
-    x[v] = internal::position(vpm, idx.vertex(v));
+  std::vector<Eigen::Vector3d> x = internal::vertex_positions(idx, vpm), gradient;
   std::vector<double> per_vertex;
   const double total = internal::developability_energy(stars, x, o.energy, &gradient, &per_vertex, o.parallel);
   internal::if_given(np, internal_np::vertex_energy_map, [&](const auto& map) {

@@ -186,9 +186,7 @@ Bff_system bff_system(const Indices& idx, const VertexPointMap& vpm, const Bound
   }
 
   // the corners of every face as plain indices (the mesh's maps are read here only, sequentially)
-  std::vector<Eigen::Vector3d> point(nv);
-  for(std::size_t v = 0; v < nv; ++v)
-    point[v] = position(vpm, idx.vertex(v));
+  const std::vector<Eigen::Vector3d> point = vertex_positions(idx, vpm);
   std::vector<std::size_t> corner_vertex(3 * nf), corner_edge(3 * nf); // edge k: corners k -> k + 1
   for(std::size_t f = 0; f < nf; ++f)
   {

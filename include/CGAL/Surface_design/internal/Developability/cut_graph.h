@@ -151,9 +151,7 @@ Cut_graph developable_cut_graph(const Indices& idx, const VertexPointMap& vpm, c
 
   // 1. lambda_i and rulings
   const Vertex_stars stars = vertex_stars(idx, false, 4);
-  std::vector<Eigen::Vector3d> x(nv);
-  for(std::size_t v = 0; v < nv; ++v)
-    x[v] = position(vpm, idx.vertex(v));
+  const std::vector<Eigen::Vector3d> x = vertex_positions(idx, vpm);
   g.lambda.assign(nv, 0.);
   g.ruling.assign(nv, Eigen::Vector3d::Zero());
   for_each_index(nv, o.parallel, [&](std::size_t v) {

@@ -45,9 +45,7 @@ template <class Indices, class VertexPointMap>
 Developability_per_vertex developability_per_vertex(const Indices& idx, const VertexPointMap& vpm, bool parallel)
 {
   const Vertex_stars stars = vertex_stars(idx, false, 4);
-  std::vector<Eigen::Vector3d> x(idx.number_of_vertices());
-  for(std::size_t v = 0; v < x.size(); ++v)
-    x[v] = position(vpm, idx.vertex(v));
+  const std::vector<Eigen::Vector3d> x = vertex_positions(idx, vpm);
   Developability_per_vertex d;
   d.lambda.assign(x.size(), 0.);
   for_each_index(x.size(), parallel, [&](std::size_t v) {

@@ -49,9 +49,7 @@ Overlap_split overlap_splitting_cut(const Indices& idx, const VertexPointMap& vp
   const Boundary_loops loops = boundary_loops(idx);
   const Components components = connected_components(idx, loops);
 
-  std::vector<Eigen::Vector3d> x(nv);
-  for(std::size_t v = 0; v < nv; ++v)
-    x[v] = position(vpm, idx.vertex(v));
+  const std::vector<Eigen::Vector3d> x = vertex_positions(idx, vpm);
   std::vector<char> on_boundary(nv, 0);
   for(const std::vector<std::size_t>& loop : loops.loops)
     for(std::size_t h : loop)
