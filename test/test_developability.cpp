@@ -651,6 +651,86 @@ TEST_CASE("the visitor sees every iteration and can stop the flow", "[developabi
   CHECK(SD::developability_energy(mesh) == Approx(seen.back().energy).epsilon(1e-9));
 }
 
+// The stopping rule: a level ends when, over 300 iterations, the descent gained less than 1% of
+// the energy and the vertices above the target stopped falling. It fires on the coarse pebble
+// (about 1.7k iterations) and the stop is not premature: 600 more iterations that never stop
+// gain little. With a cap of 100 iterations it does not fire.
+TEMPLATE_TEST_CASE("the flow stops when it has converged, not at the iteration cap", "[developability][flow][stopping]",
+                   test::Surface_mesh, test::Polyhedron)
+{
+  using Mesh = TestType;
+  const Mesh input = test::load_mesh<Mesh>("pebble_320.off");
+  const auto np = SD::parameters::developability_energy(SD::Developability_energy::intrinsic_width);
+  Mesh mesh = input;
+  const SD::Developability_flow_result r = SD::make_piecewise_developable(mesh, np);
+  REQUIRE(r.levels.size() == 1);
+  INFO(r.levels[0].iterations << " iterations, end: " << r.levels[0].end);
+  CHECK(r.levels[0].end == std::string("converged"));
+  CHECK(r.converged);
+  CHECK(r.iterations < 5000);
+  CHECK(r.iterations % 50 == 0); // checked every 50 iterations
+  // the count it reports, counted here from the stars
+  std::size_t measured = 0, above = 0;
+  for(const auto& star : interior_stars(mesh))
+    if(star.valence >= 4)
+    {
+      ++measured;
+      above += star.lambda > SDI::two_pi * 1e-4;
+    }
+  CHECK(r.levels[0].measured_vertices == measured);
+  CHECK(r.levels[0].vertices_above_target == above);
+
+  Mesh longer = mesh;
+  const double energy = SD::developability_energy(longer, np);
+  const SD::Developability_flow_result more = SD::make_piecewise_developable(
+    longer, SD::parameters::developability_energy(SD::Developability_energy::intrinsic_width,
+                                                  SD::parameters::energy_tolerance(0.))
+              .number_of_iterations(600));
+  CHECK(more.levels[0].end == std::string("iteration limit"));
+  CHECK(!more.converged);
+  const double after = SD::developability_energy(longer, np);
+  INFO("energy at the stop " << energy << ", 600 iterations later " << after);
+  CHECK(after >= 0.9 * energy);
+  CHECK(double(more.levels[0].vertices_above_target) >= 0.9 * double(above));
+
+  Mesh capped = input;
+  const SD::Developability_flow_result c = SD::make_piecewise_developable(
+    capped, SD::parameters::developability_energy(SD::Developability_energy::intrinsic_width).number_of_iterations(100));
+  CHECK(c.levels[0].end == std::string("iteration limit"));
+  CHECK(!c.converged);
+}
+
+// A target on lambda: the flow of a noisy tube stops as soon as every measured vertex is at
+// most the target (counted here apart), before the flow without a target, which goes on to a
+// zero gradient.
+TEMPLATE_TEST_CASE("the flow stops when every vertex meets the target", "[developability][flow][stopping]",
+                   test::Surface_mesh, test::Polyhedron)
+{
+  using Mesh = TestType;
+  const Mesh input = make_tube<Mesh>(16, 6, 1., 1., 2., 0.1);
+  Mesh free = input;
+  const SD::Developability_flow_result all = SD::make_piecewise_developable(
+    free, SD::parameters::developability_energy(SD::Developability_energy::covariance));
+  CHECK(all.levels[0].end == std::string("gradient below tolerance"));
+  for(double target : {1e-2, 1e-3})
+  {
+    INFO("target " << target);
+    Mesh mesh = input;
+    const SD::Developability_flow_result r = SD::make_piecewise_developable(
+      mesh, SD::parameters::developability_energy(SD::Developability_energy::covariance,
+                                                  SD::parameters::developability_target(target)));
+    CHECK(r.levels[0].end == std::string("target reached"));
+    CHECK(r.converged);
+    CHECK(r.levels[0].vertices_above_target == 0);
+    double largest = 0.;
+    for(const auto& star : interior_stars(mesh))
+      if(star.valence >= 4)
+        largest = (std::max)(largest, star.lambda);
+    CHECK(largest <= target);
+    CHECK(r.iterations < all.iterations);
+  }
+}
+
 TEST_CASE("levels: subdivisions multiply the faces by 4 and every level descends", "[developability][flow]")
 {
   using Mesh = test::Surface_mesh;
@@ -1000,7 +1080,8 @@ TEMPLATE_TEST_CASE("vertex_energy_map sums to the total energy and vertex_gradie
   for(const Case& c : {Case{"noisy icosphere", &sphere, false}, Case{"noisy tube", &tube, false},
                        Case{"noisy tube with boundary stars", &tube, true}})
     for(SD::Developability_energy e : {SD::Developability_energy::covariance, SD::Developability_energy::intrinsic,
-                                       SD::Developability_energy::squared_angle_defect})
+                                       SD::Developability_energy::squared_angle_defect,
+                                       SD::Developability_energy::absolute_angle_defect})
     {
       INFO(c.name << ", " << SD::to_string(e));
       const Mesh& mesh = *c.mesh;
@@ -1047,7 +1128,9 @@ TEMPLATE_TEST_CASE("vertex_energy_map sums to the total energy and vertex_gradie
             continue;
           }
           const double defect = SDI::two_pi - s.angle_sum;
-          const double value = e == SD::Developability_energy::covariance ? s.lambda : defect * defect;
+          const double value = e == SD::Developability_energy::covariance            ? s.lambda
+                               : e == SD::Developability_energy::squared_angle_defect ? defect * defect
+                                                                                      : std::abs(defect);
           CHECK(energy.at(s.v) == Approx(value).epsilon(1e-10).margin(1e-14));
         }
 
@@ -1059,6 +1142,14 @@ TEMPLATE_TEST_CASE("vertex_energy_map sums to the total energy and vertex_gradie
         const Vector& g = gradient.at(v);
         REQUIRE((std::isfinite(g.x()) && std::isfinite(g.y()) && std::isfinite(g.z())));
         largest = (std::max)({largest, std::abs(g.x()), std::abs(g.y()), std::abs(g.z())});
+      }
+      if(e == SD::Developability_energy::absolute_angle_defect && !c.boundary && c.mesh == &sphere)
+      {
+        // every defect of the sphere is positive: sum |Omega| = sum Omega = 2 pi chi = 4 pi
+        // (Gauss-Bonnet), whatever the positions, so the gradient vanishes
+        CHECK(total == Approx(4. * SDI::pi).epsilon(1e-13));
+        CHECK(largest <= 1e-12);
+        continue;
       }
       REQUIRE(largest > 0.);
       std::size_t checked = 0, skipped = 0;
@@ -1123,6 +1214,9 @@ TEMPLATE_TEST_CASE("bad meshes and parameters throw before anything is modified"
     expect(SD::parameters::gradient_tolerance(-1.), "gradient_tolerance");
     expect(SD::parameters::gradient_tolerance(std::numeric_limits<double>::infinity()), "gradient_tolerance");
     expect(SD::parameters::energy_tolerance(std::numeric_limits<double>::quiet_NaN()), "energy_tolerance");
+    expect(SD::parameters::developability_target(-1e-3), "developability_target");
+    expect(SD::parameters::developability_target(2.5), "developability_target"); // above 2 pi / 3
+    expect(SD::parameters::developability_target(std::numeric_limits<double>::quiet_NaN()), "developability_target");
     expect(SD::parameters::developability_energy(SD::Developability_energy(99)), "developability_energy");
     expect(SD::parameters::descent_method(SD::Developability_descent(7)), "descent_method");
     CHECK_THROWS_AS(SD::developability_energy(mesh, SD::parameters::developability_energy(SD::Developability_energy(99))),

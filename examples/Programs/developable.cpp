@@ -33,9 +33,16 @@ const char* usage =
   "options:\n"
   "  --energy E            intrinsic-width (default: of all energies the one that moves the\n"
   "                        shape least), intrinsic, covariance, max-covariance, combinatorial,\n"
-  "                        combinatorial-max, angle-defect (the crumpling baseline)\n"
+  "                        combinatorial-max, angle-defect (the crumpling baseline of Fig. 7),\n"
+  "                        l1-angle-defect (|Omega|, Fig. 11: piecewise flat, not developable)\n"
   "  --subdivisions N      4-1 subdivisions, 0..4 (default 2: for a coarse mesh of about 1k faces)\n"
-  "  --iterations N        largest number of descent iterations per level (default 1000)\n"
+  "  --iterations N        largest number of descent iterations per level (default 10000); a level\n"
+  "                        ends before when it has converged: over 300 iterations the energy fell\n"
+  "                        by less than 1% and the vertices above the target by at most 0.5%\n"
+  "  --target L            lambda (covariance, eq. 3) that counts as developable (default 2pi 1e-4,\n"
+  "                        a hinge): a level also ends when every vertex is at most L; at the end\n"
+  "                        the vertices above L are the seams (flatten --epsilon L cuts through\n"
+  "                        them); exits 1 without output if the flow did not converge\n"
   "  --descent lbfgs|gradient   L-BFGS with the Lewis-Overton line search (default) or gradient descent\n"
   "  --minimum-angle DEG   corner angles below this are removed by flips and collapses after\n"
   "                        every step (default 0.573 = 0.01 rad; 0 turns it off)\n"
@@ -50,7 +57,9 @@ struct Options
 {
   std::string input, output, picture, up = "+Y";
   SD::Developability_energy energy = SD::Developability_energy::intrinsic_width;
-  std::size_t subdivisions = 2, iterations = 1000, progress = 100;
+  std::size_t subdivisions = 2, iterations = 10000, progress = 100;
+  double target = 2. * CGAL_PI * 1e-4;
+  bool target_given = false;
   SD::Developability_descent descent = SD::Developability_descent::lbfgs;
   double minimum_angle = 0.01;
   bool keep_valence_3 = false;
@@ -66,7 +75,8 @@ Options parse(int argc, char** argv)
     {"intrinsic-width", SD::Developability_energy::intrinsic_width},
     {"combinatorial", SD::Developability_energy::combinatorial},
     {"combinatorial-max", SD::Developability_energy::combinatorial_max},
-    {"angle-defect", SD::Developability_energy::squared_angle_defect}};
+    {"angle-defect", SD::Developability_energy::squared_angle_defect},
+    {"l1-angle-defect", SD::Developability_energy::absolute_angle_defect}};
   program::Option_parser p;
   p.input(o.input)
     .value("--energy",
@@ -80,6 +90,13 @@ Options parse(int argc, char** argv)
            [&](const std::string& v) { o.subdivisions = std::size_t(program::parse_integer(v, "--subdivisions", 0, 4)); })
     .value("--iterations",
            [&](const std::string& v) { o.iterations = std::size_t(program::parse_integer(v, "--iterations", 0, 10000000)); })
+    .value("--target",
+           [&](const std::string& v) {
+             o.target = program::parse_positive(v, "--target");
+             if(o.target > 2. * CGAL_PI / 3.)
+               throw program::Usage_error("--target must be at most 2pi/3 = 2.0944 (the largest lambda of a star), not " + v);
+             o.target_given = true;
+           })
     .value("--descent",
            [&](const std::string& v) {
              o.descent = program::parse_choice(v, "--descent", {"lbfgs", "gradient"}) == "lbfgs"
@@ -181,6 +198,46 @@ void print_metrics(const SD::Developability_metrics& m)
               m.mean_distance);
 }
 
+// The vertices whose lambda exceeds the target, grouped by edges: where the flow left the
+// curvature (seam curves and cone points), and the share of sum |Omega| they carry.
+void print_target_report(const Mesh& mesh, double target)
+{
+  std::map<Mesh::Vertex_index, double> lambda, defect;
+  SD::developability_energy(mesh, P::developability_energy(SD::Developability_energy::covariance,
+                                                           P::vertex_energy_map(boost::make_assoc_property_map(lambda))));
+  SD::developability_energy(mesh, P::developability_energy(SD::Developability_energy::absolute_angle_defect,
+                                                           P::omit_valence_three_vertices(false,
+                                                             P::vertex_energy_map(boost::make_assoc_property_map(defect)))));
+  std::map<Mesh::Vertex_index, bool> seen;
+  std::size_t above = 0, groups = 0;
+  double above_defect = 0., all_defect = 0.;
+  for(auto v : vertices(mesh))
+  {
+    all_defect += defect[v];
+    if(lambda[v] <= target || seen[v])
+      continue;
+    ++groups;
+    std::vector<Mesh::Vertex_index> stack{v};
+    seen[v] = true;
+    while(!stack.empty())
+    {
+      const auto w = stack.back();
+      stack.pop_back();
+      ++above;
+      above_defect += defect[w];
+      for(auto u : vertices_around_target(halfedge(w, mesh), mesh))
+        if(lambda[u] > target && !seen[u])
+        {
+          seen[u] = true;
+          stack.push_back(u);
+        }
+    }
+  }
+  std::printf("  target lambda <= %.3g: %zu vertices above it, in %zu groups (seams and cone points), carrying "
+              "%.1f%% of sum |Omega|; flatten --epsilon %.3g cuts through them\n",
+              target, above, groups, all_defect > 0. ? 100. * above_defect / all_defect : 0., target);
+}
+
 int run(const Options& o)
 {
   program::Stopwatch clock;
@@ -194,7 +251,8 @@ int run(const Options& o)
             o.energy, P::number_of_subdivisions(
                         o.subdivisions, P::minimum_angle(
                                           o.minimum_angle, P::descent_method(
-                                                             o.descent, P::omit_valence_three_vertices(!o.keep_valence_3)))))
+                                                             o.descent, P::omit_valence_three_vertices(
+                                                                            !o.keep_valence_3, P::developability_target(o.target))))))
             .number_of_iterations(o.iterations)
             .visitor([&o](const SD::Developability_iteration& it) {
               if(o.progress > 0 && (it.level_iteration % o.progress == 0 || it.level_iteration == 1))
@@ -205,8 +263,9 @@ int run(const Options& o)
               return true;
             }));
   for(std::size_t l = 0; l < r.levels.size(); ++l)
-    std::printf("level %zu: %zu iterations, energy %.6g -> %.6g, %zu faces: %s\n", l, r.levels[l].iterations,
-                r.levels[l].initial_energy, r.levels[l].final_energy, r.levels[l].faces, r.levels[l].end.c_str());
+    std::printf("level %zu: %zu iterations, energy %.6g -> %.6g, %zu faces, %zu of %zu vertices above the target: %s\n",
+                l, r.levels[l].iterations, r.levels[l].initial_energy, r.levels[l].final_energy, r.levels[l].faces,
+                r.levels[l].vertices_above_target, r.levels[l].measured_vertices, r.levels[l].end.c_str());
   std::printf("%zu iterations, %zu evaluations, %zu flips, %zu collapses, %zu subdivisions; %.2f s (evaluation %.2f, "
               "small angles %.2f, subdivision %.2f)\n",
               r.iterations, r.evaluations, r.flips, r.collapses, r.subdivisions, r.total_seconds, r.evaluation_seconds,
@@ -216,7 +275,16 @@ int run(const Options& o)
     throw std::logic_error("the Euler characteristic changed from " + std::to_string(euler) + " to " +
                            std::to_string(euler_after));
 
+  if(!r.converged)
+  {
+    const std::string why = "the last level ended with \"" + r.levels.back().end + "\" before converging (" +
+                            std::to_string(r.levels.back().vertices_above_target) + " vertices above the target)";
+    if(o.target_given)
+      throw std::runtime_error(why + ": no output written; raise --iterations (now " + std::to_string(o.iterations) + ")");
+    std::printf("note: %s; raise --iterations to converge\n", why.c_str());
+  }
   print_metrics(SD::developability_metrics(mesh, input, P::developability_energy(o.energy)));
+  print_target_report(mesh, o.target);
   program::Output_files outputs;
   if(!CGAL::IO::write_polygon_mesh(outputs.stage(o.output), mesh, CGAL::parameters::stream_precision(17)))
     throw std::runtime_error("cannot write " + o.output);

@@ -38,7 +38,12 @@ const char* usage =
   "options:\n"
   "  --epsilon E           cut tolerance on lambda (default 0.001; the paper uses .01 to .001:\n"
   "                        smaller cuts more and distorts less)\n"
+  "  --distortion-bound B  also cut through the curvature left under epsilon until the flattening\n"
+  "                        distorts no area by more than B (|log area scale|; default 10 epsilon;\n"
+  "                        0: cut only through the vertices above epsilon)\n"
   "  --alignment W         weight of the alignment of cuts with the rulings (default 1; 0: shortest)\n"
+  "  --cut-cost C          ruling (default: |e| (1 + W misalignment), cuts along the rulings) or\n"
+  "                        paper (|e| times the alignment, sec. 4.4 literally: cuts across them)\n"
   "  --no-cut              flatten the input as it is: every component must be a disk\n"
   "  --no-split            keep pieces whose flattening overlaps itself (default: split them in\n"
   "                        two between the overlapping parts and flatten again, until none does)\n"
@@ -61,6 +66,8 @@ struct Options
 {
   std::string input, output, pattern, picture, up = "+Y", solver = "default";
   double epsilon = 1e-3, alignment = 1., margin = 10., fold_angle = 5., scale = 0.;
+  double distortion_bound = -1.; // -1: 10 epsilon
+  SD::Developable_cut_cost cut_cost = SD::Developable_cut_cost::ruling_alignment;
   double sheet_width = 210., sheet_height = 297.;
   bool cut = true, split = true;
 };
@@ -71,6 +78,14 @@ Options parse(int argc, char** argv)
   program::Option_parser p;
   p.input(o.input)
     .value("--epsilon", [&](const std::string& v) { o.epsilon = program::parse_double(v, "--epsilon", 0., 10.); })
+    .value("--distortion-bound",
+           [&](const std::string& v) { o.distortion_bound = program::parse_double(v, "--distortion-bound", 0., 10.); })
+    .value("--cut-cost",
+           [&](const std::string& v) {
+             o.cut_cost = program::parse_choice(v, "--cut-cost", {"ruling", "paper"}) == "paper"
+                            ? SD::Developable_cut_cost::paper
+                            : SD::Developable_cut_cost::ruling_alignment;
+           })
     .value("--alignment", [&](const std::string& v) { o.alignment = program::parse_double(v, "--alignment", 0., 1e3); })
     .flag("--no-cut", [&] { o.cut = false; })
     .flag("--no-split", [&] { o.split = false; })
@@ -94,8 +109,14 @@ Options parse(int argc, char** argv)
     throw program::Usage_error("--output PIECES.obj is required");
   if(o.pattern.empty())
     throw program::Usage_error("--pattern PATTERN.svg is required");
-  if(!o.cut && (p.given("--epsilon") || p.given("--alignment") || p.given("--no-split")))
-    throw program::Usage_error("--epsilon, --alignment and --no-split apply to the cut, not to --no-cut");
+  if(!o.cut && (p.given("--epsilon") || p.given("--alignment") || p.given("--no-split") || p.given("--distortion-bound") ||
+                 p.given("--cut-cost")))
+    throw program::Usage_error("--epsilon, --distortion-bound, --alignment, --cut-cost and --no-split apply to the cut, "
+                               "not to --no-cut");
+  if(p.given("--alignment") && o.cut_cost == SD::Developable_cut_cost::paper)
+    throw program::Usage_error("--alignment weighs the ruling cost; --cut-cost paper has no weight");
+  if(o.distortion_bound < 0.)
+    o.distortion_bound = 10. * o.epsilon;
   if(!(2. * o.margin < std::min(o.sheet_width, o.sheet_height)))
     throw program::Usage_error("--margin " + program::text(o.margin) + " leaves no room on a " +
                                program::text(o.sheet_width) + " x " + program::text(o.sheet_height) + " mm sheet");
@@ -233,7 +254,9 @@ int run(const Options& o, Traits traits)
   {
     std::vector<Mesh::Edge_index> cut;
     const SD::Developable_cut_result r = SD::compute_developable_cut(
-      input, std::back_inserter(cut), P::cut_tolerance(o.epsilon, P::ruling_alignment_weight(o.alignment)));
+      input, std::back_inserter(cut),
+      P::cut_tolerance(o.epsilon, P::ruling_alignment_weight(o.alignment, P::distortion_bound(o.distortion_bound, P::cut_edge_cost(o.cut_cost))))
+        .sparse_linear_solver(traits));
     for(auto e : cut)
       cut_edge[std::size_t(e)] = true;
     std::vector<std::pair<Mesh::Vertex_index, Mesh::Vertex_index>> pairs;
@@ -245,6 +268,10 @@ int run(const Options& o, Traits traits)
                 "%zu edges, length %.4g -> %zu pieces (%.3f s)\n",
                 o.epsilon, r.terminals, r.lambda_max, r.boundary_loops, r.generator_loops, r.cut_edges, r.cut_length,
                 r.pieces, clock.lap() / 1000.);
+    if(o.distortion_bound > 0.)
+      std::printf("  distortion bound %.3g: %zu terminals added in %zu rounds; largest |log area scale| of the "
+                  "conformal flattening %.3g\n",
+                  o.distortion_bound, r.distortion_terminals, r.distortion_rounds, r.largest_log_area_scale);
   }
   else
   {

@@ -183,7 +183,8 @@ accept barycentric_embed "$DATA/hemisphere.off" --output "$O/ok.off"
 check_developable() {
 for args in "--energy magic" "--subdivisions 5" "--subdivisions -1" "--iterations -1" "--iterations x" \
             "--minimum-angle 45" "--minimum-angle nan" "--descent newton" "--progress -1" "--output $O/d.xyz" \
-            "--energy intrinsic --energy covariance" "--up +Z" "--bogus"; do
+            "--energy intrinsic --energy covariance" "--up +Z" "--bogus" "--target 0" "--target -1e-3" \
+            "--target 3" "--target nan" "--target 1e-3x"; do
   # shellcheck disable=SC2086
   refuse developable "$B1K" $args --output "$O/d.off"
 done
@@ -191,6 +192,13 @@ refuse developable "$B1K"
 refuse developable "$WORK/quad.off" --output "$O/d.off"
 refuse developable "$WORK/input.off" --output "$WORK/input.off"
 accept developable "$B1K" --subdivisions 0 --iterations 20 --output "$O/ok.off"
+# a target promises convergence: a flow cut short by --iterations fails without output
+refuse developable "$B1K" --subdivisions 0 --iterations 20 --target 1e-3 --output "$O/d.off"
+accept developable "$DATA/pebble_320.off" --subdivisions 0 --target 1e-3 --output "$O/ok.off"
+if ! grep -q "^level 0: .*: converged$" "$WORK/stdout" || ! grep -q "target lambda <= 0.001: " "$WORK/stdout"; then
+  echo "FAILED: developable --target did not converge or report: $(grep -E "^level|target" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
 
 }
 
@@ -201,7 +209,9 @@ for args in "--epsilon -1" "--epsilon nan" "--epsilon 1x" "--alignment -2" "--sh
             "--sheet 5x5" "--sheet 210x297x3" "--scale 0" "--scale -1" "--scale nan" "--margin 200" "--margin -1" \
             "--fold-angle 200" "--fold-angle nan" "--solver magic" "--no-cut --epsilon 0.01" "--up +Z" \
             "--epsilon 0.1 --epsilon 0.2" "--output $O/p.off" "--pattern $O/p.pdf" "--picture $O/p.jpg" "--bogus" \
-            "--scale 1e6" "--no-cut --no-split" "--no-split --no-split"; do
+            "--scale 1e6" "--no-cut --no-split" "--no-split --no-split" "--distortion-bound -1" \
+            "--distortion-bound nan" "--no-cut --distortion-bound 0.01" "--cut-cost magic" \
+            "--cut-cost paper --alignment 2" "--no-cut --cut-cost paper"; do
   # shellcheck disable=SC2086
   refuse flatten "$D" $args --output "$O/p.obj" --pattern "$O/p.svg"
 done

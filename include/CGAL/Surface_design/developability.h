@@ -32,6 +32,7 @@
 #include <numeric>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <type_traits>
 #include <vector>
 
@@ -69,12 +70,18 @@ struct Developability_flow_result
   {
     std::size_t iterations = 0;
     double initial_energy = 0., final_energy = 0., final_gradient_norm = 0.;
-    std::string end; ///< why the level ended (iteration limit, gradient below tolerance, ...)
+    std::string end; ///< why the level ended: "converged", "target reached", "iteration limit", ...
     std::size_t vertices = 0, faces = 0;
+    /// At the end of the level: the measured vertices (interior, valence >= 4) and those whose
+    /// covariance lambda_i exceeds the target (`developability_target`)
+    std::size_t measured_vertices = 0, vertices_above_target = 0;
   };
   std::vector<Level> levels;
   std::size_t iterations = 0, evaluations = 0, flips = 0, collapses = 0, subdivisions = 0;
   bool stopped_by_visitor = false;
+  /// The last level converged, reached the target or found a zero gradient (it did not stop at
+  /// the iteration limit, at a line-search failure or by the visitor).
+  bool converged = false;
   /// Wall-clock seconds: energy and gradient evaluations (line searches included), small-angle
   /// handling, subdivisions, and everything together.
   double evaluation_seconds = 0., remeshing_seconds = 0., subdivision_seconds = 0., total_seconds = 0.;
@@ -91,9 +98,12 @@ Developability_flow_options developability_flow_options(const NamedParameters& n
   internal::Developability_flow_options o;
   o.energy = choose_parameter(get_parameter(np, internal_np::developability_energy), Developability_energy::covariance);
   o.subdivisions = choose_parameter(get_parameter(np, internal_np::number_of_subdivisions), std::size_t(0));
-  o.iterations_per_level = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(1000));
+  o.iterations_per_level = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), o.iterations_per_level);
   o.gradient_tolerance = choose_parameter(get_parameter(np, internal_np::gradient_tolerance), o.gradient_tolerance);
   o.energy_tolerance = choose_parameter(get_parameter(np, internal_np::energy_tolerance), o.energy_tolerance);
+  o.target = choose_parameter(get_parameter(np, internal_np::developability_target), o.target);
+  o.stop_at_target = !std::is_same<std::decay_t<decltype(get_parameter(np, internal_np::developability_target))>,
+                                   CGAL::internal_np::Param_not_found>::value;
   o.minimum_angle = choose_parameter(get_parameter(np, internal_np::minimum_angle), o.minimum_angle);
   o.omit_valence_three = choose_parameter(get_parameter(np, internal_np::omit_valence_three_vertices), true);
   o.include_boundary = choose_parameter(get_parameter(np, internal_np::include_boundary_vertices), false);
@@ -106,7 +116,7 @@ Developability_flow_options developability_flow_options(const NamedParameters& n
     case Developability_energy::combinatorial: case Developability_energy::combinatorial_max:
     case Developability_energy::covariance: case Developability_energy::covariance_max:
     case Developability_energy::intrinsic: case Developability_energy::intrinsic_width:
-    case Developability_energy::squared_angle_defect: break;
+    case Developability_energy::squared_angle_defect: case Developability_energy::absolute_angle_defect: break;
     default: throw Invalid_parameter("developability_energy", "not a Developability_energy enumerator");
   }
   if(d != Developability_descent::lbfgs && d != Developability_descent::gradient_descent)
@@ -117,6 +127,8 @@ Developability_flow_options developability_flow_options(const NamedParameters& n
                                                         std::to_string(o.subdivisions));
   internal::require_nonnegative("gradient_tolerance", o.gradient_tolerance);
   internal::require_nonnegative("energy_tolerance", o.energy_tolerance);
+  // lambda_i <= trace / 3 = (angle sum) / 3: 2 pi / 3 on an interior star
+  internal::require_in_range("developability_target", o.target, 0., 2. * internal::pi / 3.);
   internal::require_in_range("minimum_angle", o.minimum_angle, 0., internal::pi / 6.);
   return o;
 }
@@ -452,7 +464,16 @@ Developability_flow_result make_piecewise_developable(TriangleMesh& tm,
     }
     internal::Lbfgs_minimizer minimizer(lo);
     Developability_flow_result::Level report;
-    std::vector<double> history; // energy after each iteration of the level
+    // Progress is measured by what the descent steps gained: a flip or a collapse changes the
+    // energy too (up or down); those jumps are summed apart and taken out.
+    struct Sample
+    {
+      std::size_t iteration;
+      double energy, jumps;
+      std::size_t above;
+    };
+    std::vector<Sample> samples; // every check_interval iterations
+    double jumps = 0., last_energy = 0.;
     std::size_t failures_in_a_row = 0;
     report.end = to_string(internal::Developability_level_end::iteration_limit);
     for(std::size_t it = 0; it < o.iterations_per_level; ++it)
@@ -462,6 +483,8 @@ Developability_flow_result make_piecewise_developable(TriangleMesh& tm,
       result.evaluation_seconds += clock.seconds();
       if(it == 0)
         report.initial_energy = s.energy_before;
+      else
+        jumps += s.energy_before - last_energy; // nonzero only after a flip or collapse
       const bool accepted = s.status == internal::Lbfgs_step_status::accepted;
       failures_in_a_row = accepted ? 0 : failures_in_a_row + 1;
 
@@ -495,12 +518,8 @@ Developability_flow_result make_piecewise_developable(TriangleMesh& tm,
       }
       info.vertices = num_vertices(tm);
       info.faces = num_faces(tm);
-      report.final_energy = info.energy;
+      report.final_energy = last_energy = info.energy;
       report.final_gradient_norm = info.gradient_norm;
-      if(info.flips + info.collapses > 0)
-        history.clear(); // a flip or collapse may raise the energy: measure progress from here
-      else
-        history.push_back(info.energy);
 
       if(!visitor(info))
       {
@@ -518,20 +537,43 @@ Developability_flow_result make_piecewise_developable(TriangleMesh& tm,
         report.end = to_string(internal::Developability_level_end::line_search_failed);
         break;
       }
-      const std::size_t w = 100;
-      if(history.size() > w)
+      if(report.iterations % o.check_interval == 0)
       {
-        const double before = history[history.size() - 1 - w], now = history.back();
-        if(before - now <= o.energy_tolerance * (std::max)(std::abs(before), std::abs(now)))
+        const auto [measured, above] = state.count_above(o.target);
+        if(above == 0 && o.stop_at_target)
         {
-          report.end = to_string(internal::Developability_level_end::energy_stalled);
+          report.end = to_string(internal::Developability_level_end::target_reached);
           break;
+        }
+        samples.push_back({report.iterations, info.energy, jumps, above});
+        // the latest sample at least a window ago
+        auto old = std::find_if(samples.rbegin(), samples.rend(), [&](const Sample& x) {
+          return x.iteration + o.convergence_window <= report.iterations;
+        });
+        if(old != samples.rend())
+        {
+          const double before = old->energy, now = info.energy, descent = before - now + (jumps - old->jumps);
+          const double count_slack = (std::max)(1., o.count_tolerance * double(measured));
+          if(descent <= o.energy_tolerance * (std::max)(std::abs(before), std::abs(now)) &&
+             double(old->above) - double(above) <= count_slack)
+          {
+            report.end = to_string(internal::Developability_level_end::converged);
+            break;
+          }
         }
       }
     }
     report.vertices = num_vertices(tm);
     report.faces = num_faces(tm);
+    std::tie(report.measured_vertices, report.vertices_above_target) = state.count_above(o.target);
     result.levels.push_back(report);
+  }
+  if(!result.levels.empty())
+  {
+    const std::string& end = result.levels.back().end;
+    result.converged = end == to_string(internal::Developability_level_end::converged) ||
+                       end == to_string(internal::Developability_level_end::target_reached) ||
+                       end == to_string(internal::Developability_level_end::gradient_small);
   }
   result.evaluations = state.evaluations();
   result.total_seconds = total.seconds();

@@ -15,7 +15,7 @@ namespace Surface_design {
 ///
 /// A star is a *hinge* (Definition 3.1) when its triangles split into two edge-connected regions of
 /// constant normal; a mesh whose stars are all hinges is discretely developable. Every energy
-/// except `squared_angle_defect` is zero exactly on hinge (and flat) stars. All are dimensionless:
+/// except `squared_angle_defect` and `absolute_angle_defect` is zero exactly on hinge (and flat) stars. All are dimensionless:
 /// invariant under rigid motions and under scaling of the mesh. The formulas, with the paper's
 /// equation numbers and the choices made where the paper leaves room, are in
 /// `internal/Developability/star_energies.h`.
@@ -42,7 +42,28 @@ enum class Developability_energy
   /// The baseline of Fig. 7: the squared angle defect Omega_i^2 (Omega_i = 2 pi minus the angle
   /// sum at an interior vertex, pi minus it at a boundary vertex). Zero on every flattenable
   /// star, including crumpled ones: it measures flattenability, not developability.
-  squared_angle_defect
+  squared_angle_defect,
+  /// The L1 variant of Fig. 11: the absolute angle defect |Omega_i|, whose sum is the L1 norm of
+  /// the discrete Gaussian curvature. Sparsity-inducing: the flow concentrates the curvature on
+  /// few vertices and leaves flat regions between them (a piecewise *flat* surface), where the
+  /// other energies leave curved hinges (piecewise developable). Its subgradient at Omega_i = 0
+  /// is taken as 0.
+  absolute_angle_defect
+};
+
+/// \ingroup PkgDevelopabilityRef
+/// The cost of an edge in the cut of `compute_developable_cut()`; u_a, u_b are the unit
+/// eigenvectors of the smallest eigenvalue lambda at the edge's ends (the rulings of hinges), e^
+/// the unit edge direction.
+enum class Developable_cut_cost
+{
+  /// |e| (1 + w (|u_a x e^| + |u_b x e^|) / 2), w = `ruling_alignment_weight`: cuts run along the
+  /// rulings (straight lines in space and in the pattern), as the reference code's cost does.
+  ruling_alignment,
+  /// |e| (|<u_a, e^>| + |<u_b, e^>|) / 2: the paper's words (sec. 4.4, "length times the inner
+  /// product of the edge direction and the small eigenvector"); cuts run across the rulings,
+  /// along the other principal direction, where an edge costs nothing.
+  paper
 };
 
 /// \ingroup PkgDevelopabilityRef
@@ -58,6 +79,7 @@ inline const char* to_string(Developability_energy e)
     case Developability_energy::intrinsic: return "intrinsic";
     case Developability_energy::intrinsic_width: return "intrinsic_width";
     case Developability_energy::squared_angle_defect: return "squared_angle_defect";
+    case Developability_energy::absolute_angle_defect: return "absolute_angle_defect";
   }
   return "unknown Developability_energy";
 }

@@ -40,6 +40,11 @@ struct Developable_cut_result
   double cut_length = 0.;          ///< total length of the cut edges
   std::size_t pieces = 0;          ///< disks the cut leaves
   double lambda_max = 0.;          ///< largest lambda_i over the interior vertices
+  /// With `distortion_bound`: the terminals added to meet it, the rounds of cutting again, and the
+  /// largest |log area scale| of the conformal flattening that keeps the cut's lengths (at most
+  /// the bound unless the rounds ran out)
+  std::size_t distortion_terminals = 0, distortion_rounds = 0;
+  double largest_log_area_scale = 0.;
 };
 
 /// \ingroup PkgDevelopabilityRef
@@ -156,13 +161,21 @@ Developable_cut_result compute_developable_cut(const TriangleMesh& tm, EdgeOutpu
   o.alignment_weight = internal::require_nonnegative(
     "ruling_alignment_weight", choose_parameter(get_parameter(np, internal_np::ruling_alignment_weight), 1.));
   o.parallel = choose_parameter(get_parameter(np, internal_np::parallel_evaluation), true);
+  o.cost = choose_parameter(get_parameter(np, internal_np::cut_edge_cost), Developable_cut_cost::ruling_alignment);
+  if(o.cost != Developable_cut_cost::ruling_alignment && o.cost != Developable_cut_cost::paper)
+    throw Invalid_parameter("cut_edge_cost", "not a Developable_cut_cost enumerator");
+  o.distortion_bound = internal::require_nonnegative(
+    "distortion_bound", choose_parameter(get_parameter(np, internal_np::distortion_bound), 0.));
   const auto vpm = internal::const_vertex_point_map(tm, np);
   const internal::Mesh_indices<TriangleMesh> idx(tm, np);
   internal::validate_mesh(idx, vpm);
 
-  const internal::Cut_graph g = internal::developable_cut_graph(idx, vpm, o);
+  const internal::Cut_graph g = internal::distortion_bounded_cut_graph(idx, vpm, o, internal::solver_traits(np));
   Developable_cut_result r;
   r.terminals = g.terminals.size();
+  r.distortion_terminals = g.distortion_terminals;
+  r.distortion_rounds = g.distortion_rounds;
+  r.largest_log_area_scale = g.largest_log_area_scale;
   r.boundary_loops = g.boundary_loops;
   r.generator_loops = g.generator_loops;
   r.pieces = g.topology.pieces.size();

@@ -31,6 +31,7 @@ enum developability_energy_t { developability_energy };
 enum number_of_subdivisions_t { number_of_subdivisions };
 enum gradient_tolerance_t { gradient_tolerance };
 enum energy_tolerance_t { energy_tolerance };
+enum developability_target_t { developability_target };
 enum minimum_angle_t { minimum_angle };
 enum omit_valence_three_vertices_t { omit_valence_three_vertices };
 enum include_boundary_vertices_t { include_boundary_vertices };
@@ -39,6 +40,8 @@ enum descent_method_t { descent_method };
 enum vertex_energy_map_t { vertex_energy_map };
 enum vertex_gradient_map_t { vertex_gradient_map };
 enum cut_tolerance_t { cut_tolerance };
+enum distortion_bound_t { distortion_bound };
+enum cut_edge_cost_t { cut_edge_cost };
 enum ruling_alignment_weight_t { ruling_alignment_weight };
 enum boundary_scale_factor_map_t { boundary_scale_factor_map };
 enum boundary_turning_angle_map_t { boundary_turning_angle_map };
@@ -103,6 +106,7 @@ CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(developability_energy)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(number_of_subdivisions)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(gradient_tolerance)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(energy_tolerance)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(developability_target)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(minimum_angle)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(omit_valence_three_vertices)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(include_boundary_vertices)
@@ -111,6 +115,8 @@ CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(descent_method)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(vertex_energy_map)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(vertex_gradient_map)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(cut_tolerance)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(distortion_bound)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(cut_edge_cost)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(ruling_alignment_weight)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(boundary_scale_factor_map)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(boundary_turning_angle_map)

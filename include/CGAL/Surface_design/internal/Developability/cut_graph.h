@@ -16,8 +16,10 @@
 #include <CGAL/Surface_design/internal/Core/topology.h>
 #include <CGAL/Surface_design/internal/Developability/star_energies.h>
 #include <CGAL/Surface_design/internal/Developability/vertex_stars.h>
+#include <CGAL/Surface_design/internal/Solvers/Factored_system.h>
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include <algorithm>
 #include <cstddef>
@@ -39,7 +41,13 @@ struct Cut_graph_options
 {
   double tolerance = 1e-3;        ///< epsilon: interior vertices with lambda_i > epsilon are terminals
   double alignment_weight = 1.;   ///< w in the edge cost |e| (1 + w misalignment)
+  Developable_cut_cost cost = Developable_cut_cost::ruling_alignment;
   bool parallel = true;
+  std::vector<bool> forced_terminal; ///< per vertex (empty: none): interior vertices cut through whatever lambda_i
+  /// > 0: cut again, through the worst distorted vertices, until the conformal flattening with the
+  /// cut's lengths kept distorts no vertex's area by more than this (|log area scale| = 2 |u|)
+  double distortion_bound = 0.;
+  std::size_t max_distortion_rounds = 64;
 };
 
 struct Cut_graph
@@ -51,6 +59,9 @@ struct Cut_graph
   std::size_t generator_loops = 0;               ///< loops added for genus
   std::size_t boundary_loops = 0;
   std::size_t extra_edges = 0;                   ///< edges added so that a closed sphere opens into a disk
+  std::size_t distortion_terminals = 0;          ///< terminals added for the distortion bound
+  std::size_t distortion_rounds = 0;             ///< cuts computed again for the distortion bound
+  double largest_log_area_scale = 0.;            ///< with a distortion bound: largest 2 |u_i| of the final cut
   Cut_corners corners;
   Cut_topology topology;
 };
@@ -126,7 +137,9 @@ void cut_path_to_source(const Indices& idx, const Shortest_paths& p, std::size_t
 /// 1. Every vertex star gets lambda_i (the covariance measure, eq. 3) and its unit eigenvector
 ///    u_i, the ruling direction. Terminals: interior vertices with lambda_i > epsilon.
 /// 2. Edge cost |e| (1 + w (|u_a x e^| + |u_b x e^|) / 2): short edges along the rulings are
-///    cheap (the paper's length times alignment, sec. 4.4).
+///    cheap; or, `Developable_cut_cost::paper`, the paper's words taken literally (sec. 4.4:
+///    length times the inner product of the edge direction with the small eigenvector at its
+///    ends), |e| (|<u_a, e^>| + |<u_b, e^>|) / 2: edges across the rulings are cheap.
 /// 3. A Steiner tree over the terminals and the boundary loops (each loop one zero-cost
 ///    super-terminal), by the metric-closure minimum spanning tree in Mehlhorn's form: one
 ///    Dijkstra from all terminals at once, Kruskal over the edges joining two Voronoi regions,
@@ -177,6 +190,11 @@ Cut_graph developable_cut_graph(const Indices& idx, const VertexPointMap& vpm, c
     Eigen::Vector3d d = x[ab.second] - x[ab.first];
     const double length = d.norm();
     d /= length;
+    if(o.cost == Developable_cut_cost::paper)
+    {
+      cost[e] = length * 0.5 * (std::abs(g.ruling[ab.first].dot(d)) + std::abs(g.ruling[ab.second].dot(d)));
+      continue;
+    }
     const double misalignment = 0.5 * (g.ruling[ab.first].cross(d).norm() + g.ruling[ab.second].cross(d).norm());
     cost[e] = length * (1. + o.alignment_weight * misalignment);
   }
@@ -184,7 +202,8 @@ Cut_graph developable_cut_graph(const Indices& idx, const VertexPointMap& vpm, c
   // 3. Steiner tree over the terminals and the boundary loops
   std::vector<std::size_t> source_id(nv, npos);
   for(std::size_t v = 0; v < nv; ++v)
-    if(stars.closed[v] && stars.number_of_faces(v) > 0 && g.lambda[v] > o.tolerance)
+    if(stars.closed[v] && stars.number_of_faces(v) > 0 &&
+       (g.lambda[v] > o.tolerance || (!o.forced_terminal.empty() && o.forced_terminal[v])))
     {
       source_id[v] = g.terminals.size();
       g.terminals.push_back(v);
@@ -322,6 +341,121 @@ Cut_graph developable_cut_graph(const Indices& idx, const VertexPointMap& vpm, c
         << " boundary loops and Euler characteristic " << piece.euler_characteristic();
       throw Internal_error(s.str());
     }
+  }
+  return g;
+}
+
+/// The log conformal scale factor u_i of every vertex in the flattening of the mesh cut along
+/// `edge_is_cut` that keeps the lengths of the cut and of the boundary (Boundary First Flattening
+/// with u_B = 0): A_II u_I = -K_I, A the cotangent Laplacian (positive semi-definite), K_I the
+/// angle defects of the vertices off the cut and the boundary; u = 0 on the cut and the boundary.
+/// Each vertex off the cut keeps its whole star in the cut mesh, so the system is set up on the
+/// uncut mesh. The area of the flattening near vertex i is e^{2 u_i} times the area in space.
+template <class Indices, class VertexPointMap, class SolverTraits>
+std::vector<double> cut_scale_factors(const Indices& idx, const VertexPointMap& vpm, const std::vector<bool>& edge_is_cut,
+                                      const SolverTraits& traits)
+{
+  const auto& tm = idx.mesh();
+  const std::size_t nv = idx.number_of_vertices(), ne = idx.number_of_edges();
+  std::vector<bool> fixed(nv, false);
+  for(std::size_t e = 0; e < ne; ++e)
+  {
+    const auto h = halfedge(idx.edge(e), tm);
+    if(edge_is_cut[e] || idx.is_border(h) || idx.is_border(opposite(h, tm)))
+    {
+      const auto ab = idx.edge_vertices(e);
+      fixed[ab.first] = fixed[ab.second] = true;
+    }
+  }
+  std::vector<std::size_t> unknown(nv, npos);
+  std::size_t n = 0;
+  for(std::size_t v = 0; v < nv; ++v)
+    if(!fixed[v])
+      unknown[v] = n++;
+  std::vector<double> u(nv, 0.);
+  if(n == 0)
+    return u;
+  const std::vector<double> weight = cotangent_weights(idx, vpm);
+  const std::vector<double> angle_sum = vertex_angle_sums(idx, corner_angles(idx, vpm));
+  std::vector<Eigen::Triplet<double>> entries;
+  std::vector<double> diagonal(n, 0.);
+  for(std::size_t e = 0; e < ne; ++e)
+  {
+    const auto ab = idx.edge_vertices(e);
+    const std::size_t a = unknown[ab.first], b = unknown[ab.second];
+    if(a != npos)
+      diagonal[a] += weight[e];
+    if(b != npos)
+      diagonal[b] += weight[e];
+    if(a != npos && b != npos)
+      entries.emplace_back(Eigen::Index((std::max)(a, b)), Eigen::Index((std::min)(a, b)), -weight[e]);
+  }
+  for(std::size_t i = 0; i < n; ++i)
+    entries.emplace_back(Eigen::Index(i), Eigen::Index(i), diagonal[i]);
+  const Eigen::Index size = Eigen::Index(n);
+  Eigen::SparseMatrix<double> a(size, size);
+  a.setFromTriplets(entries.begin(), entries.end()); // lower triangle, the solvers read it
+  Eigen::VectorXd rhs(size), x;
+  for(std::size_t v = 0; v < nv; ++v)
+    if(unknown[v] != npos)
+      rhs[Eigen::Index(unknown[v])] = -(two_pi - angle_sum[v]);
+  Factored_system<SolverTraits> system(traits, "Laplacian of the vertices off the cut");
+  system.factor(std::move(a));
+  system.solve(rhs, x);
+  for(std::size_t v = 0; v < nv; ++v)
+    if(unknown[v] != npos)
+      u[v] = x[Eigen::Index(unknown[v])];
+  return u;
+}
+
+/// The cut graph of `developable_cut_graph()`, cut again until the flattening that keeps the
+/// cut's lengths distorts no area by more than `o.distortion_bound` (|log area scale| = 2 |u_i|,
+/// u from cut_scale_factors()): each round adds as terminals the vertices off the cut where |u|
+/// is a local maximum (no neighbour larger; ties to the lower index) with 2 |u| above the bound,
+/// and computes the Steiner tree through all terminals anew (so that it stays short).
+/// Curvature that the flow left spread under epsilon is what these rounds cut through; the
+/// boundary of a flattening with u_B = 0 absorbs it. Stops after `o.max_distortion_rounds`.
+template <class Indices, class VertexPointMap, class SolverTraits>
+Cut_graph distortion_bounded_cut_graph(const Indices& idx, const VertexPointMap& vpm, Cut_graph_options o,
+                                       const SolverTraits& traits)
+{
+  Cut_graph g = developable_cut_graph(idx, vpm, o);
+  if(!(o.distortion_bound > 0.))
+    return g;
+  const auto& tm = idx.mesh();
+  const std::size_t nv = idx.number_of_vertices();
+  if(o.forced_terminal.empty())
+    o.forced_terminal.assign(nv, false);
+  for(;; ++g.distortion_rounds)
+  {
+    const std::vector<double> u = cut_scale_factors(idx, vpm, g.edge_is_cut, traits);
+    std::vector<std::size_t> peaks;
+    double largest = 0.;
+    for(std::size_t v = 0; v < nv; ++v)
+    {
+      const double a = std::abs(u[v]);
+      largest = (std::max)(largest, 2. * a);
+      if(!(2. * a > o.distortion_bound))
+        continue;
+      bool peak = true;
+      for(auto h : halfedges_around_source(idx.vertex(v), tm))
+      {
+        const std::size_t w = idx.target_index(h);
+        const double b = std::abs(u[w]);
+        peak = peak && (b < a || (b == a && v < w));
+      }
+      if(peak)
+        peaks.push_back(v);
+    }
+    g.largest_log_area_scale = largest;
+    if(peaks.empty() || g.distortion_rounds == o.max_distortion_rounds)
+      break;
+    for(std::size_t v : peaks)
+      o.forced_terminal[v] = true;
+    const std::size_t added = g.distortion_terminals + peaks.size(), rounds = g.distortion_rounds;
+    g = developable_cut_graph(idx, vpm, o);
+    g.distortion_terminals = added;
+    g.distortion_rounds = rounds;
   }
   return g;
 }

@@ -34,10 +34,17 @@ struct Developability_flow_options
 {
   Developability_energy energy = Developability_energy::covariance;
   std::size_t subdivisions = 0;            ///< 4-1 subdivisions, each after a level of descent
-  std::size_t iterations_per_level = 1000; ///< descent iterations before each subdivision and after the last
+  std::size_t iterations_per_level = 10000; ///< at most this many descent iterations per level
   double gradient_tolerance = 1e-6;        ///< stop a level when |g| (RMS, times the mean edge length) is below
-  double energy_tolerance = 1e-5;          ///< stop a level when the energy fell by less than this (relative) over `energy_window` iterations
-  std::size_t energy_window = 100;
+  /// Convergence: a level has converged when, over the last `convergence_window` iterations, the
+  /// energy fell by at most this (relative) and the number of measured vertices with lambda_i
+  /// above `target` fell by at most max(1, `count_tolerance` times the measured vertices).
+  double energy_tolerance = 1e-2;
+  double count_tolerance = 5e-3;
+  std::size_t convergence_window = 300;
+  std::size_t check_interval = 50;         ///< iterations between two counts of the vertices above the target
+  double target = two_pi * 1e-4;            ///< lambda_i at most this: a hinge (the metrics' threshold)
+  bool stop_at_target = false;              ///< end a level when every measured vertex is at most `target`
   double minimum_angle = 0.01;             ///< radians; 0 disables the small-angle handling
   bool omit_valence_three = true;
   bool include_boundary = false;
@@ -50,7 +57,8 @@ enum class Developability_level_end
 {
   iteration_limit,  ///< `iterations_per_level` iterations were made
   gradient_small,   ///< the scaled gradient norm fell below `gradient_tolerance`
-  energy_stalled,   ///< the energy fell by less than `energy_tolerance` over the window
+  converged,        ///< neither the energy nor the vertices above the target decreased over the window
+  target_reached,   ///< every measured vertex has lambda_i at most the target
   line_search_failed, ///< the line search failed twice in a row (a kink the descent cannot pass)
   visitor           ///< the visitor asked to stop
 };
@@ -61,7 +69,8 @@ inline const char* to_string(Developability_level_end e)
   {
     case Developability_level_end::iteration_limit: return "iteration limit";
     case Developability_level_end::gradient_small: return "gradient below tolerance";
-    case Developability_level_end::energy_stalled: return "energy stalled";
+    case Developability_level_end::converged: return "converged";
+    case Developability_level_end::target_reached: return "target reached";
     case Developability_level_end::line_search_failed: return "line search failed";
     case Developability_level_end::visitor: return "stopped by the visitor";
   }
@@ -97,6 +106,7 @@ public:
   {
     m_idx = Mesh_indices<Mesh>(m_tm);
     m_stars = vertex_stars(m_idx, m_options.include_boundary, m_options.omit_valence_three ? 4 : 0);
+    m_measured = vertex_stars(m_idx, false, 4);
     const std::size_t nv = m_idx.number_of_vertices();
     m_x.resize(Eigen::Index(3 * nv));
     for(std::size_t v = 0; v < nv; ++v)
@@ -125,6 +135,21 @@ public:
     return E;
   }
 
+  /// The number of measured vertices (interior, valence >= 4) and, among them, the number whose
+  /// covariance lambda_i (eq. 3, the measure of the metrics) at the current coordinates exceeds
+  /// `target`.
+  std::pair<std::size_t, std::size_t> count_above(double target)
+  {
+    const std::size_t nv = m_positions.size();
+    for(std::size_t v = 0; v < nv; ++v)
+      m_positions[v] = m_x.template segment<3>(Eigen::Index(3 * v));
+    developability_energy(m_measured, m_positions, Developability_energy::covariance, nullptr, &m_lambda, m_options.parallel);
+    std::size_t above = 0;
+    for(std::size_t v : m_measured.active_vertices)
+      above += m_lambda[v] > target;
+    return {m_measured.active_vertices.size(), above};
+  }
+
   /// Writes the current coordinates to the mesh.
   void write_positions() const
   {
@@ -146,7 +171,8 @@ private:
   VertexPointMap m_vpm;
   Developability_flow_options m_options;
   Mesh_indices<Mesh> m_idx;
-  Vertex_stars m_stars;
+  Vertex_stars m_stars, m_measured;
+  std::vector<double> m_lambda;
   Eigen::VectorXd m_x;
   std::vector<Eigen::Vector3d> m_positions, m_gradient;
   double m_mean_edge_length = 1.;

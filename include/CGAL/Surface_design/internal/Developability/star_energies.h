@@ -70,8 +70,12 @@
 // squared_angle_defect (the baseline of Fig. 7). Omega^2, Omega = 2 pi - sum_f theta_f on a
 //   closed star, pi - sum_f theta_f on an open fan. NOT divided by the vertex area as in the
 //   reference code: Omega^2 is dimensionless like every other energy here (one scale contract,
-//   one set of optimizer tolerances for all seven), has the same zero set, and does not weigh tiny
+//   one set of optimizer tolerances for all), has the same zero set, and does not weigh tiny
 //   triangles enormously (the sliver trouble of section 4.3); Omega^2 / A_i is 1/length^2.
+// absolute_angle_defect (the L1 variant of Fig. 11). |Omega|: summed over the vertices, the L1
+//   norm of the discrete Gaussian curvature, the sparsity-inducing norm the paper contrasts with
+//   its energies (it yields piecewise flat, not piecewise developable, surfaces). Subgradient
+//   -sign(Omega) per angle, 0 where Omega is 0 to rounding.
 //
 // Gradients. Every energy computes dE/dN_f, dE/dtheta_f and (the intrinsic ones) dE/dn, and one
 // function, pull_back(), applies the chain rule of appendix B.1: eq. 7 (area vector), eq. 8
@@ -730,16 +734,39 @@ inline double intrinsic_width_energy(const Star_geometry& g, Star_sensitivities*
   return best;
 }
 
-/// Omega^2, Omega = 2 pi (closed) or pi (open) minus the angle sum; dE/dtheta_f = -2 Omega.
-inline double squared_angle_defect_energy(const Star_geometry& g, Star_sensitivities* s)
+/// Omega = 2 pi (closed) or pi (open) minus the angle sum of the star.
+inline double angle_defect(const Star_geometry& g)
 {
   double defect = g.closed() ? two_pi : pi;
   for(std::size_t f = 0; f < g.number_of_faces(); ++f)
     defect -= g.angle(f);
+  return defect;
+}
+
+/// Omega^2; dE/dtheta_f = -2 Omega.
+inline double squared_angle_defect_energy(const Star_geometry& g, Star_sensitivities* s)
+{
+  const double defect = angle_defect(g);
   if(s)
     for(std::size_t f = 0; f < g.number_of_faces(); ++f)
       s->angle[f] = -2. * defect;
   return defect * defect;
+}
+
+/// |Omega| (the L1 variant of Fig. 11); dE/dtheta_f = -sign(Omega), and 0 (a subgradient) where
+/// |Omega| is within the rounding of the angle sum (4 pi 2^-40, about 1e-11): a flat or hinge
+/// star is a minimum whose gradient vanishes, as for the other energies.
+inline double absolute_angle_defect_energy(const Star_geometry& g, Star_sensitivities* s)
+{
+  const double defect = angle_defect(g);
+  if(s)
+  {
+    const double rounding = 4. * pi * std::ldexp(1., -40);
+    const double sign = defect > rounding ? 1. : (defect < -rounding ? -1. : 0.);
+    for(std::size_t f = 0; f < g.number_of_faces(); ++f)
+      s->angle[f] = -sign;
+  }
+  return std::abs(defect);
 }
 
 // ----------------------------------------------------------------------------------------------
@@ -772,6 +799,7 @@ inline double star_energy(Developability_energy e, const Eigen::Vector3d& center
     case Developability_energy::intrinsic: energy = intrinsic_energy(g, s); break;
     case Developability_energy::intrinsic_width: energy = intrinsic_width_energy(g, s); break;
     case Developability_energy::squared_angle_defect: energy = squared_angle_defect_energy(g, s); break;
+    case Developability_energy::absolute_angle_defect: energy = absolute_angle_defect_energy(g, s); break;
   }
   if(s && !s->zero_gradient)
     pull_back(g, *s, gradient);
