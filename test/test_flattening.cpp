@@ -936,6 +936,175 @@ TEMPLATE_TEST_CASE("The cutting pattern: pieces inside their sheets and apart, s
   }
 }
 
+namespace {
+
+// The polygons of the paths of an SVG group ("M x,y L x,y ... [Z]").
+std::vector<std::vector<Eigen::Vector2d>> svg_polygons(const boost::property_tree::ptree& svg, const std::string& group_id)
+{
+  std::vector<std::vector<Eigen::Vector2d>> out;
+  for(const auto& [name, group] : svg)
+  {
+    if(name != "g" || group.get<std::string>("<xmlattr>.id") != group_id)
+      continue;
+    for(const auto& [child, node] : group)
+    {
+      if(child != "path")
+        continue;
+      std::string d = node.get<std::string>("<xmlattr>.d");
+      for(char& c : d)
+        if(c == 'M' || c == 'L' || c == 'Z' || c == ',')
+          c = ' ';
+      std::istringstream in(d);
+      std::vector<Eigen::Vector2d> polygon;
+      double x, y;
+      while(in >> x >> y)
+        polygon.emplace_back(x, y);
+      out.push_back(polygon);
+    }
+  }
+  return out;
+}
+
+// Whether the open segments ab and cd cross at a single interior point (strictly: touching or
+// sharing an end point does not count).
+bool cross_properly(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c, const Eigen::Vector2d& d)
+{
+  auto side = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r) {
+    const double x = (q - p).x() * (r - p).y() - (q - p).y() * (r - p).x();
+    return x > 1e-9 ? 1 : (x < -1e-9 ? -1 : 0);
+  };
+  return side(a, b, c) * side(a, b, d) < 0 && side(c, d, a) * side(c, d, b) < 0;
+}
+
+// Strictly inside (even-odd), points within 1e-6 of a vertex of the polygon excluded.
+bool strictly_inside(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& x)
+{
+  for(const Eigen::Vector2d& v : polygon)
+    if((v - x).norm() < 1e-6)
+      return false;
+  bool in = false;
+  for(std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
+    if((polygon[i].y() > x.y()) != (polygon[j].y() > x.y()) &&
+       x.x() < (polygon[j].x() - polygon[i].x()) * (x.y() - polygon[i].y()) / (polygon[j].y() - polygon[i].y()) + polygon[i].x())
+      in = !in;
+  return in;
+}
+
+// How many pairs of polygons of a and b overlap: an edge of one crosses an edge of the other, or
+// a vertex of one lies strictly inside the other (polygons compared with themselves skipped).
+std::size_t overlaps(const std::vector<std::vector<Eigen::Vector2d>>& a, const std::vector<std::vector<Eigen::Vector2d>>& b,
+                     bool same)
+{
+  std::size_t n = 0;
+  for(std::size_t i = 0; i < a.size(); ++i)
+    for(std::size_t j = same ? i + 1 : 0; j < b.size(); ++j)
+    {
+      const auto& p = a[i];
+      const auto& q = b[j];
+      bool meet = false;
+      for(std::size_t k = 0; k < p.size() && !meet; ++k)
+        for(std::size_t l = 0; l < q.size() && !meet; ++l)
+          meet = cross_properly(p[k], p[(k + 1) % p.size()], q[l], q[(l + 1) % q.size()]);
+      for(const auto& x : p)
+        meet = meet || strictly_inside(q, x);
+      for(const auto& x : q)
+        meet = meet || strictly_inside(p, x);
+      n += meet;
+    }
+  return n;
+}
+
+} // namespace
+
+// Glue tabs along one side of every seam: checked from the SVG alone, no tab overlaps a piece or
+// another tab and every tab lies inside its sheet's margins. A torus opened along its two
+// generator loops (a rectangle: room for every tab), a sphere that the distortion bound opens
+// with slits (the two sides of a slit lie side by side: a tab on either would overlap the other,
+// so some seams have none), a torus cut through every vertex (a tree of thin strips that
+// overlaps itself in the plane).
+TEMPLATE_TEST_CASE("Glue tabs overlap no piece and no other tab", "[flattening][pattern][tabs]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  struct Case
+  {
+    const char* name;
+    Mesh mesh;
+    double epsilon, bound;
+    bool every_seam;
+  };
+  std::vector<Case> cases;
+  {
+    Mesh m;
+    SD::make_torus(m, 24, 12, 1., 0.4);
+    cases.push_back({"torus along its generators", m, 1e9, 0., true});
+    cases.push_back({"torus through every vertex", m, 0., 0., false});
+  }
+  {
+    Mesh m;
+    SD::make_sphere(m, 3);
+    cases.push_back({"sphere with slits", m, 1., 0.05, false});
+  }
+  for(const Case& c : cases)
+  {
+    INFO(c.name);
+    std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> cut;
+    SD::compute_developable_cut(c.mesh, std::back_inserter(cut), P::cut_tolerance(c.epsilon, P::distortion_bound(c.bound)));
+    Mesh pieces;
+    std::vector<std::pair<Vertex<Mesh>, Vertex<Mesh>>> pairs;
+    SD::cut_mesh_along_edges(c.mesh, cut, pieces, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(pairs)));
+    std::map<Vertex<Mesh>, std::size_t> seam_index, id;
+    for(auto v : vertices(c.mesh))
+      id.emplace(v, id.size());
+    for(const auto& [in, out] : pairs)
+      seam_index[out] = id.at(in);
+    Uv_map<Mesh> uv;
+    SD::boundary_first_flattening(pieces, boost::make_assoc_property_map(uv));
+    const double width = 4.;
+    const SD::Fabrication_layout layout = SD::lay_out_flattened_pieces(
+      pieces, boost::make_assoc_property_map(uv), P::sheet_size(std::make_pair(210., 297.), P::glue_tab_width(width)));
+    CHECK(layout.glue_tab_width == width);
+    std::ostringstream svg;
+    const SD::Fabrication_pattern_report r =
+      SD::write_fabrication_pattern_svg(svg, pieces, boost::make_assoc_property_map(uv), layout,
+                                        P::seam_vertex_index_map(boost::make_assoc_property_map(seam_index)));
+    INFO(r.seams << " seams, " << r.glue_tabs << " tabs, " << r.narrowed_glue_tabs << " narrowed, "
+                 << r.omitted_glue_tabs << " omitted");
+    CHECK(r.seams > 0);
+    CHECK(r.glue_tabs + r.omitted_glue_tabs == r.seams);
+    CHECK(r.glue_tabs >= 1);
+    if(c.every_seam)
+      CHECK(r.omitted_glue_tabs == 0);
+    boost::property_tree::ptree tree;
+    std::istringstream in(svg.str());
+    REQUIRE_NOTHROW(boost::property_tree::read_xml(in, tree));
+    const auto& root = tree.get_child("svg");
+    const auto piece_outlines = svg_polygons(root, "cuts");
+    const auto tabs = svg_polygons(root, "tabs");
+    CHECK(tabs.size() == r.glue_tabs);
+    CHECK(overlaps(tabs, piece_outlines, false) == 0);
+    CHECK(overlaps(tabs, tabs, true) == 0);
+    // inside the margins of a sheet (SVG y points down; the sheets side by side)
+    for(const auto& tab : tabs)
+      for(const Eigen::Vector2d& x : tab)
+      {
+        const double period = layout.sheet_width + layout.sheet_gap;
+        const double u = x.x() - std::floor(x.x() / period) * period;
+        CHECK(u >= layout.margin - 1e-3);
+        CHECK(u <= layout.sheet_width - layout.margin + 1e-3);
+        CHECK(x.y() >= layout.margin - 1e-3);
+        CHECK(x.y() <= layout.sheet_height - layout.margin + 1e-3);
+      }
+  }
+  // the oracle itself: a tab moved onto a piece is an overlap
+  {
+    std::vector<std::vector<Eigen::Vector2d>> square{{{0., 0.}, {10., 0.}, {10., 10.}, {0., 10.}}};
+    std::vector<std::vector<Eigen::Vector2d>> outside{{{0., 0.}, {10., 0.}, {8., -3.}, {2., -3.}}};
+    std::vector<std::vector<Eigen::Vector2d>> inside{{{0., 0.}, {10., 0.}, {8., 3.}, {2., 3.}}};
+    CHECK(overlaps(outside, square, false) == 0);
+    CHECK(overlaps(inside, square, false) == 1);
+  }
+}
+
 TEMPLATE_TEST_CASE("Cutting along no edge copies the mesh; cutting along a path opens it", "[flattening][cut]",
                    SD_MESH_TYPES)
 {

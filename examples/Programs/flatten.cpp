@@ -52,6 +52,8 @@ const char* usage =
   "                        which every piece fits on a sheet)\n"
   "  --margin M            sheet margin in mm (default 10)\n"
   "  --fold-angle DEG      draw edges bent by more than this as fold lines (default 5; 180: none)\n"
+  "  --glue-tabs W         glue tabs W mm wide along one side of every seam, numbered like it\n"
+  "                        (default 0: none; narrowed or left out where they would overlap)\n"
   "  --solver S            sparse solver: default (simplicial LDLT below 20k\n"
   "                        unknowns, supernodal Cholesky above), ldlt, supernodal, cholmod\n"
   "  --output PIECES.obj   the cut mesh: v = 3-D positions of the input's vertices, vt = the laid-out\n"
@@ -67,6 +69,7 @@ struct Options
   std::string input, output, pattern, picture, up = "+Y", solver = "default";
   double epsilon = 1e-3, alignment = 1., margin = 10., fold_angle = 5., scale = 0.;
   double distortion_bound = -1.; // -1: 10 epsilon
+  double glue_tabs = 0.;
   SD::Developable_cut_cost cut_cost = SD::Developable_cut_cost::ruling_alignment;
   double sheet_width = 210., sheet_height = 297.;
   bool cut = true, split = true;
@@ -99,6 +102,7 @@ Options parse(int argc, char** argv)
            })
     .value("--scale", [&](const std::string& v) { o.scale = program::parse_double(v, "--scale", 1e-9, 1e9); })
     .value("--margin", [&](const std::string& v) { o.margin = program::parse_double(v, "--margin", 0., 1e4); })
+    .value("--glue-tabs", [&](const std::string& v) { o.glue_tabs = program::parse_double(v, "--glue-tabs", 0., 50.); })
     .value("--fold-angle", [&](const std::string& v) { o.fold_angle = program::parse_double(v, "--fold-angle", 0., 180.); })
     .solver(o.solver)
     .output("--output", o.output, {".obj"})
@@ -346,7 +350,7 @@ int run(const Options& o, Traits traits)
   const SD::Fabrication_layout layout = SD::lay_out_flattened_pieces(
     pieces, uv,
     P::sheet_size(std::make_pair(o.sheet_width, o.sheet_height),
-                  P::pattern_scale(o.scale, P::sheet_margin(o.margin))));
+                  P::pattern_scale(o.scale, P::sheet_margin(o.margin, P::glue_tab_width(o.glue_tabs)))));
   std::printf("pattern: %zu sheet(s) of %g x %g mm at %g mm per model unit\n", layout.sheets, layout.sheet_width,
               layout.sheet_height, layout.scale);
 
@@ -354,12 +358,15 @@ int run(const Options& o, Traits traits)
   write_obj(outputs.stage(o.output), input, pieces, original, uv);
   {
     std::ofstream svg(outputs.stage(o.pattern));
-    SD::write_fabrication_pattern_svg(
+    const SD::Fabrication_pattern_report drawn = SD::write_fabrication_pattern_svg(
       svg, pieces, uv, layout,
       P::seam_vertex_index_map(boost::make_assoc_property_map(seam_index), P::fold_angle(o.fold_angle * CGAL_PI / 180.)));
     svg.flush();
     if(!svg)
       throw std::runtime_error("writing " + o.pattern + " failed (disk full?)");
+    if(o.glue_tabs > 0.)
+      std::printf("glue tabs: %zu of %zu seams (%zu narrowed to fit, %zu left out: no room)\n", drawn.glue_tabs,
+                  drawn.seams, drawn.narrowed_glue_tabs, drawn.omitted_glue_tabs);
   }
   if(!o.picture.empty())
     write_picture(input, cut_edge, pieces, uv, face_log_area, o, outputs);

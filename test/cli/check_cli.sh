@@ -211,7 +211,8 @@ for args in "--epsilon -1" "--epsilon nan" "--epsilon 1x" "--alignment -2" "--sh
             "--epsilon 0.1 --epsilon 0.2" "--output $O/p.off" "--pattern $O/p.pdf" "--picture $O/p.jpg" "--bogus" \
             "--scale 1e6" "--no-cut --no-split" "--no-split --no-split" "--distortion-bound -1" \
             "--distortion-bound nan" "--no-cut --distortion-bound 0.01" "--cut-cost magic" \
-            "--cut-cost paper --alignment 2" "--no-cut --cut-cost paper"; do
+            "--cut-cost paper --alignment 2" "--no-cut --cut-cost paper" "--glue-tabs -1" "--glue-tabs nan" \
+            "--glue-tabs 60"; do
   # shellcheck disable=SC2086
   refuse flatten "$D" $args --output "$O/p.obj" --pattern "$O/p.svg"
 done
@@ -224,6 +225,11 @@ accept flatten "$D" --output "$O/ok.obj" --pattern "$O/ok.svg"
 # the design's single piece overlaps itself in the plane: split until no piece does
 if ! grep -q "^split " "$WORK/stdout" || ! grep -q " 0 piece(s) overlapping themselves" "$WORK/stdout"; then
   echo "FAILED: flatten pebble_design.off leaves overlapping pieces: $(grep -E "overlap" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
+accept flatten "$D" --glue-tabs 5 --output "$O/ok.obj" --pattern "$O/ok.svg"
+if ! grep -q "^glue tabs: [1-9][0-9]* of " "$WORK/stdout"; then
+  echo "FAILED: flatten --glue-tabs drew no tab: $(grep -E "glue" "$WORK/stdout")"
   failures=$((failures + 1))
 fi
 accept flatten "$D" --no-split --output "$O/ok.obj" --pattern "$O/ok.svg"

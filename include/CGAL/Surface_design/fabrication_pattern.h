@@ -37,6 +37,7 @@ struct Fabrication_layout
   double margin = 10., spacing = 5.;              ///< mm
   double scale = 1.;     ///< mm on the sheet per unit of the model
   double sheet_gap = 20.; ///< mm between two sheets placed side by side in the plane of `uv`
+  double glue_tab_width = 0.; ///< mm of room left around every piece for the glue tabs of the drawing
   std::size_t sheets = 0;
   struct Piece
   {
@@ -46,6 +47,16 @@ struct Fabrication_layout
     std::size_t faces = 0;
   };
   std::vector<Piece> pieces; ///< per connected component, in the order of their smallest vertex index
+};
+
+/// \ingroup PkgFlatteningRef
+/// What `write_fabrication_pattern_svg()` drew besides the pieces.
+struct Fabrication_pattern_report
+{
+  std::size_t seams = 0;              ///< seam curves, each numbered on both sides (0 without `seam_vertex_index_map`)
+  std::size_t glue_tabs = 0;          ///< glue tabs drawn: one per seam at most
+  std::size_t narrowed_glue_tabs = 0; ///< of those, drawn at half or a quarter of the width, to fit
+  std::size_t omitted_glue_tabs = 0;  ///< seams without a tab: it would overlap a piece or a tab at any width
 };
 
 /// \ingroup PkgFlatteningRef
@@ -87,6 +98,15 @@ struct Fabrication_layout
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{`5`}
 ///     \cgalParamExtra{throws `Invalid_parameter` if it is negative or not finite}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{glue_tab_width}
+///     \cgalParamDescription{the width of the glue tabs that `write_fabrication_pattern_svg()` draws along
+///                           one side of every seam, in mm: every piece is packed with this much room on
+///                           every side (in addition to `piece_spacing`); 0: no tabs}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`0`}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is negative or not finite, or leaves no room inside the
+///                     margins}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_index_map}
 ///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in
@@ -158,6 +178,8 @@ Fabrication_layout lay_out_flattened_pieces(const TriangleMesh& tm, UVMap uv,
                                               " mm leave no room on a sheet of " + internal::to_text(layout.sheet_width) +
                                               " x " + internal::to_text(layout.sheet_height) + " mm");
   layout.sheet_gap = 20.;
+  layout.glue_tab_width = internal::require_nonnegative(
+    "glue_tab_width", choose_parameter(get_parameter(np, internal_np::glue_tab_width), 0.));
 
   const internal::Mesh_indices<TriangleMesh> idx(tm, np);
   const internal::Boundary_loops loops = internal::boundary_loops(idx);
@@ -169,6 +191,7 @@ Fabrication_layout lay_out_flattened_pieces(const TriangleMesh& tm, UVMap uv,
   packing.margin = layout.margin;
   packing.spacing = layout.spacing;
   packing.sheet_gap = layout.sheet_gap;
+  packing.tab = layout.glue_tab_width;
   const std::vector<Eigen::Vector2d> moved = internal::pack_pieces(p, comps.vertex_component, comps.size(), scale, packing);
   layout.scale = packing.scale;
   layout.sheets = packing.sheets;
@@ -198,7 +221,10 @@ Fabrication_layout lay_out_flattened_pieces(const TriangleMesh& tm, UVMap uv,
 /// boundary as a solid black cut line, its number at its centre; interior edges whose dihedral
 /// angle in space exceeds `fold_angle` as fold lines (blue dashes: mountain folds, red dash-dots:
 /// valley folds, seen from the side the faces' orientation points to); the two sides of every
-/// seam curve labelled with the same number; and a scale bar on every sheet.
+/// seam curve labelled with the same number; with a `glue_tab_width` in the layout, a glue tab
+/// along one side of every seam (outside its piece, tapered at 45 degrees, numbered like the seam,
+/// narrowed to a half or a quarter where the full width would overlap a piece or another tab, and
+/// left out where even that does: see the returned report); and a scale bar on every sheet.
 ///
 /// \param os the stream
 /// \param tm the flattened mesh (its pieces are the sides of the seams)
@@ -277,10 +303,11 @@ Fabrication_layout lay_out_flattened_pieces(const TriangleMesh& tm, UVMap uv,
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
+/// \returns the seams, and the glue tabs drawn, narrowed and omitted
 /// \throws Invalid_parameter (`fold_angle`, or a coordinate of `uv` that is not finite; nothing
 ///         is written then); std::ios_base::failure is not thrown, check `os`
 template <class TriangleMesh, class UVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
-void write_fabrication_pattern_svg(std::ostream& os, const TriangleMesh& tm, const UVMap& uv,
+Fabrication_pattern_report write_fabrication_pattern_svg(std::ostream& os, const TriangleMesh& tm, const UVMap& uv,
                                    const Fabrication_layout& layout,
                                    const NamedParameters& np = CGAL::parameters::default_values())
 {
@@ -297,6 +324,7 @@ void write_fabrication_pattern_svg(std::ostream& os, const TriangleMesh& tm, con
   drawing.layout.sheet_gap = layout.sheet_gap;
   drawing.layout.scale = layout.scale;
   drawing.layout.sheets = layout.sheets;
+  drawing.layout.tab = layout.glue_tab_width;
   drawing.fold_angle = fold_angle;
   const std::size_t nv = idx.number_of_vertices();
   drawing.uv = internal::plane_coordinates(idx, uv);
@@ -318,7 +346,13 @@ void write_fabrication_pattern_svg(std::ostream& os, const TriangleMesh& tm, con
     for(std::size_t k = 0; k < 3; ++k, h = next(h, mesh))
       drawing.faces[f][k] = idx.target_index(h);
   }
-  internal::write_pattern_svg(os, drawing);
+  const internal::Pattern_report r = internal::write_pattern_svg(os, drawing);
+  Fabrication_pattern_report report;
+  report.seams = r.seams;
+  report.glue_tabs = r.tabs;
+  report.narrowed_glue_tabs = r.narrowed_tabs;
+  report.omitted_glue_tabs = r.omitted_tabs;
+  return report;
 }
 
 } // namespace Surface_design

@@ -52,6 +52,7 @@ enum sheet_margin_t { sheet_margin };
 enum piece_spacing_t { piece_spacing };
 enum seam_vertex_index_map_t { seam_vertex_index_map };
 enum fold_angle_t { fold_angle };
+enum glue_tab_width_t { glue_tab_width };
 enum harmonic_constraints_t { harmonic_constraints };
 enum harmonic_weights_t { harmonic_weights };
 enum protrusion_maxima_t { protrusion_maxima };
@@ -127,6 +128,7 @@ CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(sheet_margin)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(piece_spacing)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(seam_vertex_index_map)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(fold_angle)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(glue_tab_width)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(harmonic_constraints)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(harmonic_weights)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(protrusion_maxima)

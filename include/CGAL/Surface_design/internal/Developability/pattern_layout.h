@@ -11,6 +11,7 @@
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/Core/angles.h>
 #include <CGAL/Surface_design/internal/Core/named_parameters.h>
+#include <CGAL/Surface_design/internal/Developability/glue_tabs.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -115,6 +116,7 @@ struct Packed_piece
 struct Pattern_packing
 {
   double sheet_width = 210., sheet_height = 297., margin = 10., spacing = 5., sheet_gap = 20.;
+  double tab = 0.;        ///< width of the glue tabs, mm: room left around every piece
   double scale = 0.;      ///< output: mm per model unit
   std::size_t sheets = 0; ///< output
   std::vector<Packed_piece> pieces;
@@ -151,7 +153,11 @@ inline std::vector<Eigen::Vector2d> pack_pieces(const std::vector<Eigen::Vector2
     size[k] = hi - lo;
     packing.pieces[k].rotation = angle;
   }
-  const double W = packing.sheet_width - 2. * packing.margin, H = packing.sheet_height - 2. * packing.margin;
+  // a piece and its tabs fit in its box grown by the tab width on every side
+  const double T = 2. * packing.tab;
+  const double W = packing.sheet_width - 2. * packing.margin - T, H = packing.sheet_height - 2. * packing.margin - T;
+  if(!(W > 0. && H > 0.))
+    throw Invalid_parameter("glue_tab_width", "tabs of " + to_text(packing.tab) + " mm leave no room inside the margins");
   // the scale at which piece k fits (turned by 90 degrees if that fits better)
   auto fit = [&](std::size_t k) {
     const double w = (std::max)(size[k].x(), 1e-300), h = (std::max)(size[k].y(), 1e-300);
@@ -200,7 +206,7 @@ inline std::vector<Eigen::Vector2d> pack_pieces(const std::vector<Eigen::Vector2
   const double gap = packing.spacing;
   for(std::size_t k : order)
   {
-    const double w = size[k].x() * scale, h = size[k].y() * scale;
+    const double w = size[k].x() * scale + T, h = size[k].y() * scale + T;
     Shelf* target = nullptr;
     for(Shelf& s : shelves)
       if(h <= s.height * (1. + 1e-12) && s.used + w <= W * (1. + 1e-12))
@@ -221,11 +227,11 @@ inline std::vector<Eigen::Vector2d> pack_pieces(const std::vector<Eigen::Vector2
     }
     Packed_piece& piece = packing.pieces[k];
     piece.sheet = target->sheet;
-    piece.x = packing.margin + target->used;
+    piece.x = packing.margin + target->used + packing.tab;
     // shelves fill the sheet from the top down (y up: the first shelf is highest)
-    piece.y = packing.sheet_height - packing.margin - target->y - h;
-    piece.width = w;
-    piece.height = h;
+    piece.y = packing.sheet_height - packing.margin - target->y - h + packing.tab;
+    piece.width = w - T;
+    piece.height = h - T;
     target->used += w + gap;
   }
   packing.sheets = sheet_used.size();
@@ -251,8 +257,29 @@ struct Pattern_drawing
   double fold_angle = 0.;
 };
 
-inline void write_pattern_svg(std::ostream& os, const Pattern_drawing& d)
+struct Pattern_report;
+
+/// One glue tab per seam curve, along the side met first: its boundary edges in the order of its
+/// piece's boundary, outside the piece; width d.layout.tab mm, else half, else a quarter, else
+/// none, whichever first overlaps no piece and no tab drawn before (glue_tab_fits()). Drawn as
+/// filled polygons whose outer edges are cut lines, numbered like their seam.
+template <class Sides>
+void write_glue_tabs(std::ostream& os, const Pattern_drawing& d, const std::vector<std::size_t>& boundary_next,
+                     const std::vector<std::vector<unsigned long long>>& chains, Sides& sides, std::size_t n_original,
+                     Pattern_report& report);
+
+/// What the drawing holds besides the pieces.
+struct Pattern_report
 {
+  std::size_t seams = 0;          ///< seam curves, each labelled on both sides
+  std::size_t tabs = 0;           ///< glue tabs drawn (one per seam, with a tab width)
+  std::size_t narrowed_tabs = 0;  ///< of those, drawn at half or a quarter of the width to fit
+  std::size_t omitted_tabs = 0;   ///< seams whose tab would overlap a piece or a tab at any width
+};
+
+inline Pattern_report write_pattern_svg(std::ostream& os, const Pattern_drawing& d)
+{
+  Pattern_report report;
   const double s = d.layout.scale, H = d.layout.sheet_height;
   const std::size_t nv = d.uv.size(), nf = d.faces.size();
   auto X = [&](std::size_t v) { return d.uv[v].x() * s; };
@@ -437,6 +464,9 @@ inline void write_pattern_svg(std::ostream& os, const Pattern_drawing& d)
     for(unsigned long long e : rest)
       if(!visited[e])
         walk(std::size_t(e / n_original), e);
+    report.seams = chains.size();
+    if(d.layout.tab > 0.)
+      write_glue_tabs(os, d, boundary_next, chains, sides, n_original, report);
     os << "<g id=\"seams\" font-family=\"sans-serif\" font-size=\"2.5\" fill=\"#1f4fbf\" text-anchor=\"middle\" "
           "dominant-baseline=\"middle\">\n";
     for(std::size_t c = 0; c < chains.size(); ++c)
@@ -472,6 +502,105 @@ inline void write_pattern_svg(std::ostream& os, const Pattern_drawing& d)
        << d.layout.sheets << std::fixed << std::setprecision(3) << "</text>\n";
   }
   os << "</g>\n</svg>\n";
+  return report;
+}
+
+template <class Sides>
+void write_glue_tabs(std::ostream& os, const Pattern_drawing& d, const std::vector<std::size_t>& boundary_next,
+                     const std::vector<std::vector<unsigned long long>>& chains, Sides& sides, std::size_t n_original,
+                     Pattern_report& report)
+{
+  (void)n_original;
+  const double s = d.layout.scale, H = d.layout.sheet_height;
+  const std::size_t nv = d.uv.size();
+  auto mm = [&](std::size_t v) { return Eigen::Vector2d(d.uv[v] * s); }; // on the sheet, y up
+  // the piece outlines
+  std::vector<std::vector<Eigen::Vector2d>> pieces;
+  std::vector<bool> done(nv, false);
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    if(boundary_next[v] == npos || done[v])
+      continue;
+    pieces.emplace_back();
+    for(std::size_t x = v; x != npos && !done[x]; x = boundary_next[x])
+    {
+      done[x] = true;
+      pieces.back().push_back(mm(x));
+    }
+  }
+  std::vector<std::vector<Eigen::Vector2d>> placed;
+  std::ostringstream shapes, cuts, folds, labels;
+  for(std::ostringstream* o : {&shapes, &cuts, &folds, &labels})
+    *o << std::fixed << std::setprecision(3);
+  for(std::size_t c = 0; c < chains.size(); ++c)
+  {
+    // the side: the boundary edges of the first side, walked in boundary order
+    std::vector<std::size_t> walk;
+    for(unsigned long long k : chains[c])
+    {
+      bool joined = false;
+      for(const auto& [a, b] : sides[k])
+      {
+        if(walk.empty())
+          walk = {a, b};
+        else if(walk.back() == a)
+          walk.push_back(b);
+        else if(walk.front() == b)
+          walk.insert(walk.begin(), a);
+        else
+          continue;
+        joined = true;
+        break;
+      }
+      if(!joined)
+        break; // the side does not go on (a seam along which the pieces branch): the tab stops
+    }
+    std::vector<Eigen::Vector2d> p;
+    for(std::size_t v : walk)
+      p.push_back(mm(v));
+    bool drawn = false;
+    for(int halving = 0; halving < 3 && !drawn; ++halving)
+    {
+      const double width = d.layout.tab / double(1 << halving);
+      const std::vector<Eigen::Vector2d> q = glue_tab_outer(p, width);
+      if(!glue_tab_fits(p, q, pieces, placed))
+        continue;
+      drawn = true;
+      ++report.tabs;
+      report.narrowed_tabs += halving > 0;
+      std::vector<Eigen::Vector2d> polygon(p);
+      polygon.insert(polygon.end(), q.rbegin(), q.rend());
+      placed.push_back(polygon);
+      // the polygon (filled), its outer edges (cut) and its base (folded)
+      shapes << "<path d=\"M" << p.front().x() << ',' << H - p.front().y();
+      for(std::size_t i = 1; i < p.size(); ++i)
+        shapes << " L" << p[i].x() << ',' << H - p[i].y();
+      for(auto x = q.rbegin(); x != q.rend(); ++x)
+        shapes << " L" << x->x() << ',' << H - x->y();
+      shapes << " Z\"/>\n";
+      cuts << "M" << p.front().x() << ',' << H - p.front().y();
+      for(const Eigen::Vector2d& x : q)
+        cuts << " L" << x.x() << ',' << H - x.y();
+      cuts << " L" << p.back().x() << ',' << H - p.back().y() << ' ';
+      folds << "M" << p.front().x() << ',' << H - p.front().y();
+      for(std::size_t i = 1; i < p.size(); ++i)
+        folds << " L" << p[i].x() << ',' << H - p[i].y();
+      folds << ' ';
+      const std::size_t i = p.size() / 2;
+      const Eigen::Vector2d at = 0.5 * (p[i] + glue_tab_outer(p, width)[i]);
+      labels << "<text x=\"" << at.x() << "\" y=\"" << H - at.y() << "\">" << c + 1 << "</text>\n";
+    }
+    report.omitted_tabs += !drawn;
+  }
+  os << "<g id=\"tabs\" fill=\"#dde7f3\" stroke=\"none\">\n" << shapes.str() << "</g>\n";
+  if(report.tabs > 0)
+    os << "<g id=\"tab-cuts\" fill=\"none\" stroke=\"#000000\" stroke-width=\"0.25\" stroke-linejoin=\"round\">\n"
+       << "<path d=\"" << cuts.str() << "\"/>\n</g>\n"
+       << "<g id=\"tab-folds\" fill=\"none\" stroke=\"#1f4fbf\" stroke-width=\"0.2\" stroke-dasharray=\"1,1\">\n"
+       << "<path d=\"" << folds.str() << "\"/>\n</g>\n";
+  os << "<g id=\"tab-labels\" font-family=\"sans-serif\" font-size=\"2\" fill=\"#1f4fbf\" text-anchor=\"middle\" "
+        "dominant-baseline=\"middle\">\n"
+     << labels.str() << "</g>\n";
 }
 
 } // namespace internal
