@@ -14,6 +14,7 @@
 
 #include <CGAL/Surface_design/developability.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -93,29 +94,40 @@ inline void developability_evaluation_workload(const Mesh& mesh, const std::stri
   }
 }
 
-/// The flow of the CLI's default run (two 4-1 subdivisions, at most 1000 iterations per level)
-/// with one energy. Phases: `flow`, `metrics`. Checks: hinge share of the result (as 1 - share
-/// < 0.2: at least 80% hinges), Hausdorff distance to the input / bbox diagonal, iterations,
-/// evaluations, and the flow time at which 90% of the measured vertices first were hinges in the
-/// last level (looked at after every iteration when checks are on; the time spent looking is
-/// subtracted; infinite if never).
+/// The flow of the CLI's default run (two 4-1 subdivisions, each level until it has converged,
+/// at most 10000 iterations) with one energy. Phases: `flow`, `metrics`. Checks: hinge share of
+/// the result (as 1 - share < 0.2: at least 80% hinges), Hausdorff distance to the input / bbox
+/// diagonal, iterations, evaluations, whether the last level converged, and the flow time and
+/// iterations (all levels) at which 90%, 95% and 99% of the measured vertices first were hinges
+/// in the last level (looked at every 50 iterations when checks are on; the time spent looking
+/// is subtracted; infinite if never).
 template <CGAL::Surface_design::Developability_energy energy>
 void developable_flow_workload(const Mesh& input, const std::string&, Run& run)
 {
   using namespace developability_detail;
   Mesh mesh = input;
   SD::Developability_flow_result result;
-  double reached_90 = std::numeric_limits<double>::infinity(), looking = 0.;
+  const std::array<double, 3> shares{0.9, 0.95, 0.99};
+  std::array<double, 3> reached_ms, reached_iterations;
+  reached_ms.fill(std::numeric_limits<double>::infinity());
+  reached_iterations.fill(std::numeric_limits<double>::infinity());
+  double looking = 0.;
   const auto start = Clock::now();
   run.phase("flow", [&] {
     result = SD::make_piecewise_developable(
       mesh, SD::parameters::developability_energy(energy, SD::parameters::number_of_subdivisions(std::size_t(2)))
               .visitor([&](const SD::Developability_iteration& it) {
-                if(run.checks_enabled() && it.level == 2 && reached_90 == std::numeric_limits<double>::infinity())
+                if(run.checks_enabled() && it.level == 2 && it.level_iteration % 50 == 0 &&
+                   reached_ms.back() == std::numeric_limits<double>::infinity())
                 {
                   const auto look = Clock::now();
-                  if(hinge_share(mesh) >= 0.9)
-                    reached_90 = std::chrono::duration<double, std::milli>(look - start).count() - looking;
+                  const double share = hinge_share(mesh);
+                  for(std::size_t k = 0; k < shares.size(); ++k)
+                    if(share >= shares[k] && reached_ms[k] == std::numeric_limits<double>::infinity())
+                    {
+                      reached_ms[k] = std::chrono::duration<double, std::milli>(look - start).count() - looking;
+                      reached_iterations[k] = double(it.iteration);
+                    }
                   looking += std::chrono::duration<double, std::milli>(Clock::now() - look).count();
                 }
                 return true;
@@ -124,10 +136,18 @@ void developable_flow_workload(const Mesh& input, const std::string&, Run& run)
   SD::Developability_metrics m;
   run.phase("metrics", [&] { m = SD::developability_metrics(mesh, input); });
   run.check("1 - hinge share (lambda < 2 pi 1e-4)", 1. - m.hinge_share_1e4, 0.2);
-  run.check("Hausdorff distance / bbox diagonal", m.hausdorff_distance, 0.06);
-  run.check("iterations", double(result.iterations), 3001.);
+  // converged flows move the shape farther than the 1000-iteration levels before (0.06)
+  run.check("Hausdorff distance / bbox diagonal", m.hausdorff_distance, 0.12);
+  run.check("iterations", double(result.iterations), 30001.);
   run.check("evaluations", double(result.evaluations), 1e9);
-  run.check("ms of flow to 90% hinges (last level)", reached_90, 30000.);
+  run.check("1 - converged (last level)", result.converged ? 0. : 1., 0.5);
+  for(std::size_t k = 0; k < shares.size(); ++k)
+    if(std::isfinite(reached_ms[k])) // shares never reached are left out of the table
+    {
+      const std::string share = std::to_string(int(100. * shares[k] + 0.5)) + "%";
+      run.check("ms of flow to " + share + " hinges (last level; informative)", reached_ms[k], 1e300);
+      run.check("iterations to " + share + " hinges (all levels; informative)", reached_iterations[k], 1e300);
+    }
   run.check("seam curvature share (informative)", m.seam_curvature_share, 2.);
   // the other figures of developability_metrics(), informative (bounds that always hold)
   run.check("lambda max (informative)", m.lambda_max, 3.);

@@ -14,6 +14,7 @@ Usage: python3 scripts/make_design_meshes.py [OUTPUT_FOLDER]   (default: data/)
 """
 import math
 import os
+import random
 import sys
 
 
@@ -57,6 +58,49 @@ def pebble(p):
     return (x, math.cos(a) * y - math.sin(a) * z, math.sin(a) * y + math.cos(a) * z)
 
 
+def noisy_torus(major, minor, R, r, noise, seed):
+    """A torus of major x minor quads split along one diagonal, every vertex moved by up to `noise`
+    per coordinate at random (the regular torus is a stationary point of the energies)."""
+    rng = random.Random(seed)
+    points = []
+    for i in range(major):
+        u = 2.0 * math.pi * i / major
+        for j in range(minor):
+            v = 2.0 * math.pi * j / minor
+            p = ((R + r * math.cos(v)) * math.cos(u), (R + r * math.cos(v)) * math.sin(u), r * math.sin(v))
+            points.append(tuple(c + rng.uniform(-noise, noise) for c in p))
+    faces = []
+    for i in range(major):
+        for j in range(minor):
+            a, b = i * minor + j, ((i + 1) % major) * minor + j
+            c, d = ((i + 1) % major) * minor + (j + 1) % minor, i * minor + (j + 1) % minor
+            faces += [(a, b, c), (a, c, d)]
+    return points, faces
+
+
+def noisy_sheet(around, along, noise, seed):
+    """Half a cylinder (radius 1, length 2): a developable sheet, its interior vertices moved off
+    it by up to `noise` radially and noise / 2.5 along the axis (the paper's Fig. 7 input)."""
+    rng = random.Random(seed)
+    points = []
+    for j in range(along + 1):
+        for i in range(around + 1):
+            a = math.pi * i / around
+            x, y, z = math.cos(a), math.sin(a), 2.0 * j / along
+            if 0 < i < around and 0 < j < along:
+                k = 1.0 + rng.uniform(-noise, noise)
+                x, y = k * x, k * y
+                z += rng.uniform(-noise / 2.5, noise / 2.5)
+            points.append((x, y, z))
+    faces = []
+    for j in range(along):
+        for i in range(around):
+            a, b = j * (around + 1) + i, j * (around + 1) + i + 1
+            c, d = (j + 1) * (around + 1) + i + 1, (j + 1) * (around + 1) + i
+            faces += [(a, b, c), (a, c, d)] if (i + j) % 2 == 0 else [(a, b, d), (b, c, d)]
+    return points, faces
+
+
 def write_off(path, points, faces, comment):
     with open(path, "w") as f:
         f.write("OFF\n# %s\n%d %d 0\n" % (comment, len(points), len(faces)))
@@ -76,6 +120,12 @@ def main():
     points, faces = icosphere(2)
     write_off(os.path.join(out, "pebble_320.off"), [pebble(p) for p in points], faces,
               "twisted pebble: icosphere (2 levels), ellipsoid 1.2 x 0.8 x 0.5 twisted 0.9 rad per unit about x")
+    points, faces = noisy_torus(32, 16, 1.0, 0.45, 0.01, 2026)
+    write_off(os.path.join(out, "torus_1k.off"), points, faces,
+              "torus 32 x 16, R = 1, r = 0.45, every coordinate moved by up to 0.01 at random (seed 2026)")
+    points, faces = noisy_sheet(28, 20, 0.025, 7)
+    write_off(os.path.join(out, "noisy_sheet.off"), points, faces,
+              "half cylinder 28 x 20, interior vertices moved by up to 0.025 radially at random (seed 7)")
 
 
 if __name__ == "__main__":

@@ -404,7 +404,8 @@ TEST_CASE("an icosphere becomes piecewise developable with its curvature on seam
 TEST_CASE("acceptance: coarse egg, twisted pebble and bunny become piecewise developable with the CLI's defaults",
           "[developability][flow][acceptance]")
 {
-  // the CLI's defaults: intrinsic width energy, 2 subdivisions, 1000 iterations per level. Under
+  // the CLI's defaults before the flow converged: intrinsic width energy, 2 subdivisions, at most
+  // 1000 iterations per level (a level may now also end when it has converged). Under
   // the sanitizers (~20x slower) the same flows without subdivision and 100 iterations, checked
   // for validity only.
   using Mesh = test::Surface_mesh;

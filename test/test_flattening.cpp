@@ -1204,6 +1204,12 @@ TEMPLATE_TEST_CASE("Bad input to cutting and flattening throws clear exceptions"
   CHECK_THROWS_AS(SD::compute_developable_cut(disk, std::back_inserter(cut), P::cut_tolerance(nan)), SD::Invalid_parameter);
   CHECK_THROWS_AS(SD::compute_developable_cut(disk, std::back_inserter(cut), P::ruling_alignment_weight(nan)),
                   SD::Invalid_parameter);
+  CHECK_THROWS_AS(SD::compute_developable_cut(disk, std::back_inserter(cut), P::distortion_bound(-0.1)),
+                  SD::Invalid_parameter);
+  CHECK_THROWS_AS(SD::compute_developable_cut(disk, std::back_inserter(cut), P::distortion_bound(nan)),
+                  SD::Invalid_parameter);
+  CHECK_THROWS_AS(SD::compute_developable_cut(disk, std::back_inserter(cut), P::cut_edge_cost(SD::Developable_cut_cost(9))),
+                  SD::Invalid_parameter);
   CHECK(cut.empty());
   SD::Boundary_first_flattener<Mesh> flattener(disk);
   std::map<Vertex<Mesh>, double> values;
@@ -1244,6 +1250,10 @@ TEMPLATE_TEST_CASE("Bad input to cutting and flattening throws clear exceptions"
   CHECK_THROWS_AS(SD::lay_out_flattened_pieces(disk, uv_map, P::sheet_size(std::make_pair(nan, 100.))),
                   SD::Invalid_parameter);
   CHECK_THROWS_AS(SD::lay_out_flattened_pieces(disk, uv_map, P::sheet_margin(200.)), SD::Invalid_parameter);
+  CHECK_THROWS_AS(SD::lay_out_flattened_pieces(disk, uv_map, P::glue_tab_width(-1.)), SD::Invalid_parameter);
+  CHECK_THROWS_AS(SD::lay_out_flattened_pieces(disk, uv_map, P::glue_tab_width(nan)), SD::Invalid_parameter);
+  // tabs so wide that nothing fits inside the margins
+  CHECK_THROWS_AS(SD::lay_out_flattened_pieces(disk, uv_map, P::glue_tab_width(100.)), SD::Invalid_parameter);
   CHECK((uv == before));
   // an edge of another mesh
   Mesh other;

@@ -273,9 +273,16 @@ int run(const Options& o, Traits traits)
                 o.epsilon, r.terminals, r.lambda_max, r.boundary_loops, r.generator_loops, r.cut_edges, r.cut_length,
                 r.pieces, clock.lap() / 1000.);
     if(o.distortion_bound > 0.)
+    {
       std::printf("  distortion bound %.3g: %zu terminals added in %zu rounds; largest |log area scale| of the "
                   "conformal flattening %.3g\n",
                   o.distortion_bound, r.distortion_terminals, r.distortion_rounds, r.largest_log_area_scale);
+      if(r.largest_log_area_scale > o.distortion_bound)
+        throw std::runtime_error("the cut did not bring the distortion under --distortion-bound " +
+                                 program::text(o.distortion_bound) + " in " + std::to_string(r.distortion_rounds) +
+                                 " rounds (largest |log area scale| " + program::text(r.largest_log_area_scale) +
+                                 "); no output written");
+    }
   }
   else
   {

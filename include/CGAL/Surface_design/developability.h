@@ -234,8 +234,9 @@ Developability_flow_options developability_flow_options(const NamedParameters& n
 /// \cgalNamedParamsEnd
 ///
 /// The parameters of `make_piecewise_developable()` that this function does not use are checked all
-/// the same: `number_of_subdivisions`, `gradient_tolerance`, `energy_tolerance`, `minimum_angle` or
-/// `descent_method` out of its range throws `Invalid_parameter` here too.
+/// the same: `number_of_subdivisions`, `gradient_tolerance`, `energy_tolerance`,
+/// `developability_target`, `minimum_angle` or `descent_method` out of its range throws
+/// `Invalid_parameter` here too.
 ///
 /// \returns the total energy
 /// \throws Invalid_mesh, Invalid_parameter; nothing is written then
@@ -275,12 +276,19 @@ double developability_energy(const TriangleMesh& tm, const NamedParameters& np =
 /// subdivisions (sec. 4.2: start coarse, then refine to sharpen the seams). Curvature
 /// concentrates on a sparse set of seam curves; elsewhere the vertex stars become hinges.
 ///
-/// **A level** runs the descent until `number_of_iterations` iterations were made, or the scaled
-/// gradient norm (RMS of the gradient's coordinates times the mean edge length, dimensionless) is
-/// at most `gradient_tolerance`, or the energy fell by at most `energy_tolerance` (relative) over
-/// the last 100 iterations (counted since the last flip or collapse, which may raise it), or the
-/// line search failed twice in a row (at a kink the descent cannot pass). Then the mesh is
-/// subdivided (if subdivisions remain) and the next level starts from a reset optimizer.
+/// **A level** runs the descent until it has *converged*: every 50 iterations the flow counts the
+/// measured vertices (interior, valence >= 4) whose covariance lambda_i (eq. 3, the measure of
+/// `developability_metrics()`) exceeds the target (`developability_target`, by default the hinge
+/// threshold 2 pi 1e-4), and the level has converged when, over the last 300 iterations, the
+/// descent steps gained at most `energy_tolerance` of the energy (the jumps of flips and
+/// collapses taken out) and that count fell by at most max(1, 0.5% of the measured vertices).
+/// A level also ends when a target was given and every measured vertex is at most the target,
+/// when the scaled gradient norm (RMS of the gradient's coordinates times the mean edge length,
+/// dimensionless) is at most `gradient_tolerance`, when the line search failed twice in a row (at
+/// a kink the descent cannot pass), or after `number_of_iterations` iterations (a safety cap;
+/// `Developability_flow_result::converged` tells whether the last level stopped for a better
+/// reason). Then the mesh is subdivided (if subdivisions remain) and the next level starts from
+/// a reset optimizer.
 ///
 /// **Small angles** (sec. 4.3, Fig. 18): after every step, a triangle with two corner angles
 /// below `minimum_angle` has its longest edge flipped, a triangle with one has its shortest edge
@@ -318,10 +326,20 @@ double developability_energy(const TriangleMesh& tm, const NamedParameters& np =
 ///     \cgalParamExtra{throws `Invalid_parameter` if it is larger than 6 (each multiplies the faces by 4)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations}
-///     \cgalParamDescription{the largest number of descent iterations per level}
+///     \cgalParamDescription{the largest number of descent iterations per level (a safety cap: levels end
+///                           when they have converged)}
 ///     \cgalParamType{`std::size_t`}
-///     \cgalParamDefault{`1000`}
+///     \cgalParamDefault{`10000`}
 ///     \cgalParamExtra{not validated: 0 makes no iteration}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{developability_target}
+///     \cgalParamDescription{L: the lambda_i (covariance, eq. 3) at most which a vertex counts as developable.
+///                           The convergence test counts the vertices above it; given, a level also ends as
+///                           soon as every measured vertex is at most L (the vertices left above L at the end
+///                           are the seams, which `compute_developable_cut()` with `cut_tolerance` L cuts)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{2 pi 1e-4 (a hinge, as the metrics count them), without the early end}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is not in [0, 2 pi / 3] (lambda_i <= 2 pi / 3)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{gradient_tolerance}
 ///     \cgalParamDescription{a level ends when the scaled gradient norm (RMS of the gradient's coordinates
@@ -331,10 +349,11 @@ double developability_energy(const TriangleMesh& tm, const NamedParameters& np =
 ///     \cgalParamExtra{throws `Invalid_parameter` if it is negative or not finite}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{energy_tolerance}
-///     \cgalParamDescription{a level ends when the energy fell by at most this, relative, over the last 100
-///                           iterations (counted since the last flip or collapse)}
+///     \cgalParamDescription{the convergence test: the largest relative gain of the descent steps over the last
+///                           300 iterations (with the vertices above the target no longer falling); 0: only a
+///                           descent that gained nothing at all has converged}
 ///     \cgalParamType{`double`}
-///     \cgalParamDefault{`1e-5`}
+///     \cgalParamDefault{`1e-2`}
 ///     \cgalParamExtra{throws `Invalid_parameter` if it is negative or not finite}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{minimum_angle}

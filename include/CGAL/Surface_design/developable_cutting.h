@@ -65,6 +65,11 @@ struct Developable_cut_result
 /// cuts follow rulings (paper: length times alignment). Every piece is checked to be a disk
 /// (one boundary loop, Euler characteristic 1). Smaller epsilon: more cuts, less distortion.
 ///
+/// **Distortion.** The vertices under epsilon may still carry curvature, which adds up over a
+/// piece and distorts its flattening (a sphere of evenly spread curvature has no vertex above a
+/// large epsilon at all). With `distortion_bound` the cut grows, from the peaks of the log
+/// conformal factor of the flattening, until that factor is bounded everywhere.
+///
 /// \param tm a triangle mesh (validated: manifold, no degenerate face, finite coordinates), any
 ///        genus, boundaries and number of components
 /// \param cut_edges output iterator receiving the `edge_descriptor`s of the cut
@@ -90,6 +95,30 @@ struct Developable_cut_result
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{`1`}
 ///     \cgalParamExtra{throws `Invalid_parameter` if it is negative or not finite}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{cut_edge_cost}
+///     \cgalParamDescription{the edge cost of the tree (see `Developable_cut_cost`): along the rulings, or the
+///                           paper's words taken literally (across them)}
+///     \cgalParamType{`Developable_cut_cost`}
+///     \cgalParamDefault{`Developable_cut_cost::ruling_alignment`}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is not an enumerator of `Developable_cut_cost`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{distortion_bound}
+///     \cgalParamDescription{B > 0: after the tree, cut further until the conformal flattening that keeps the
+///                           cut's lengths (Boundary First Flattening with u_B = 0) has |log area scale| = 2 |u_i|
+///                           at most B at every vertex. The curvature the flow left spread under epsilon is what
+///                           distorts a piece; each round solves A_II u = -K_I on the mesh (one factorization)
+///                           and cuts from every local maximum of |u| above the bound along the cheapest path
+///                           to the cut (at most 64 rounds; `largest_log_area_scale` in the result says whether
+///                           the bound was met). 0: cut only through the vertices above epsilon}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`0` (the CLI `flatten`: 10 epsilon)}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is negative or not finite}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{sparse_linear_solver}
+///     \cgalParamDescription{the solver of the distortion rounds (symmetric positive definite systems)}
+///     \cgalParamType{a model of `SparseLinearAlgebraWithFactorTraits_d`}
+///     \cgalParamDefault{`Default_solver_traits`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_energy_map}
 ///     \cgalParamDescription{output: lambda_i of every vertex}
@@ -146,8 +175,11 @@ struct Developable_cut_result
 /// \cgalNamedParamsEnd
 ///
 /// \returns what was cut
-/// \throws Invalid_mesh, Invalid_parameter (nothing written then)
-/// Complexity: O(|E| log |V|) (two Dijkstra searches and two Kruskal passes).
+/// \throws Invalid_mesh, Invalid_parameter (nothing written then), Linear_solver_failure (with a
+///         distortion bound)
+/// Complexity: O(|E| log |V|) (two Dijkstra searches and two Kruskal passes); with a distortion
+/// bound, per round one factorization of the Laplacian of the vertices off the cut and one
+/// Dijkstra search.
 template <class TriangleMesh, class EdgeOutputIterator,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 Developable_cut_result compute_developable_cut(const TriangleMesh& tm, EdgeOutputIterator cut_edges,

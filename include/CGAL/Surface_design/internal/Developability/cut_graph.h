@@ -53,6 +53,7 @@ struct Cut_graph_options
 struct Cut_graph
 {
   std::vector<bool> edge_is_cut;
+  std::vector<double> edge_cost;                 ///< per edge: the cost the tree minimized
   std::vector<double> lambda;                    ///< per vertex: covariance lambda_i (eq. 3)
   std::vector<Eigen::Vector3d> ruling;           ///< per vertex: unit ruling direction
   std::vector<std::size_t> terminals;            ///< interior vertices with lambda_i > epsilon
@@ -129,6 +130,25 @@ void cut_path_to_source(const Indices& idx, const Shortest_paths& p, std::size_t
   }
 }
 
+
+// The corners and pieces of the cut; every piece must be a disk.
+template <class Indices>
+void finish_and_check(const Indices& idx, Cut_graph& g)
+{
+  g.corners = cut_corners(idx, g.edge_is_cut);
+  g.topology = cut_topology(idx, g.edge_is_cut, g.corners);
+  for(std::size_t k = 0; k < g.topology.pieces.size(); ++k)
+  {
+    const Component_info& piece = g.topology.pieces[k];
+    if(piece.euler_characteristic() != 1 || piece.boundary_loops != 1)
+    {
+      std::ostringstream s;
+      s << "the cut left piece " << k << " (face " << piece.root_face << ") with " << piece.boundary_loops
+        << " boundary loops and Euler characteristic " << piece.euler_characteristic();
+      throw Internal_error(s.str());
+    }
+  }
+}
 
 } // namespace cut_graph_detail
 
@@ -329,19 +349,8 @@ Cut_graph developable_cut_graph(const Indices& idx, const VertexPointMap& vpm, c
       g.edge_is_cut[around[k].second] = true;
   }
 
-  g.corners = cut_corners(idx, g.edge_is_cut);
-  g.topology = cut_topology(idx, g.edge_is_cut, g.corners);
-  for(std::size_t k = 0; k < g.topology.pieces.size(); ++k)
-  {
-    const Component_info& piece = g.topology.pieces[k];
-    if(piece.euler_characteristic() != 1 || piece.boundary_loops != 1)
-    {
-      std::ostringstream s;
-      s << "the cut left piece " << k << " (face " << piece.root_face << ") with " << piece.boundary_loops
-        << " boundary loops and Euler characteristic " << piece.euler_characteristic();
-      throw Internal_error(s.str());
-    }
-  }
+  g.edge_cost = std::move(cost);
+  cut_graph_detail::finish_and_check(idx, g);
   return g;
 }
 
@@ -408,24 +417,24 @@ std::vector<double> cut_scale_factors(const Indices& idx, const VertexPointMap& 
   return u;
 }
 
-/// The cut graph of `developable_cut_graph()`, cut again until the flattening that keeps the
+/// The cut graph of `developable_cut_graph()`, cut further until the flattening that keeps the
 /// cut's lengths distorts no area by more than `o.distortion_bound` (|log area scale| = 2 |u_i|,
-/// u from cut_scale_factors()): each round adds as terminals the vertices off the cut where |u|
-/// is a local maximum (no neighbour larger; ties to the lower index) with 2 |u| above the bound,
-/// and computes the Steiner tree through all terminals anew (so that it stays short).
-/// Curvature that the flow left spread under epsilon is what these rounds cut through; the
-/// boundary of a flattening with u_B = 0 absorbs it. Stops after `o.max_distortion_rounds`.
+/// u from cut_scale_factors()). Each round takes the vertices off the cut where |u| is a local
+/// maximum (no neighbour larger; ties to the lower index) with 2 |u| above the bound, and cuts
+/// from each along the cheapest path (the tree's edge costs) to the cut or the boundary: the
+/// cut only grows, its new branches are a forest hanging from it, so the pieces stay disks, and
+/// the boundary of a flattening with u_B = 0 now passes where the curvature left spread under
+/// epsilon had pushed u furthest. Stops after `o.max_distortion_rounds` rounds.
 template <class Indices, class VertexPointMap, class SolverTraits>
-Cut_graph distortion_bounded_cut_graph(const Indices& idx, const VertexPointMap& vpm, Cut_graph_options o,
+Cut_graph distortion_bounded_cut_graph(const Indices& idx, const VertexPointMap& vpm, const Cut_graph_options& o,
                                        const SolverTraits& traits)
 {
+  using namespace cut_graph_detail;
   Cut_graph g = developable_cut_graph(idx, vpm, o);
   if(!(o.distortion_bound > 0.))
     return g;
   const auto& tm = idx.mesh();
-  const std::size_t nv = idx.number_of_vertices();
-  if(o.forced_terminal.empty())
-    o.forced_terminal.assign(nv, false);
+  const std::size_t nv = idx.number_of_vertices(), ne = idx.number_of_edges();
   for(;; ++g.distortion_rounds)
   {
     const std::vector<double> u = cut_scale_factors(idx, vpm, g.edge_is_cut, traits);
@@ -450,13 +459,26 @@ Cut_graph distortion_bounded_cut_graph(const Indices& idx, const VertexPointMap&
     g.largest_log_area_scale = largest;
     if(peaks.empty() || g.distortion_rounds == o.max_distortion_rounds)
       break;
+    // the cut and the boundary are the sources; every peak is joined to them
+    std::vector<std::size_t> source(nv, npos);
+    for(std::size_t e = 0; e < ne; ++e)
+    {
+      const auto h = halfedge(idx.edge(e), tm);
+      if(g.edge_is_cut[e] || idx.is_border(h) || idx.is_border(opposite(h, tm)))
+      {
+        const auto ab = idx.edge_vertices(e);
+        source[ab.first] = source[ab.second] = 0;
+      }
+    }
+    const Shortest_paths p = multi_source_dijkstra(idx, g.edge_cost, source);
     for(std::size_t v : peaks)
-      o.forced_terminal[v] = true;
-    const std::size_t added = g.distortion_terminals + peaks.size(), rounds = g.distortion_rounds;
-    g = developable_cut_graph(idx, vpm, o);
-    g.distortion_terminals = added;
-    g.distortion_rounds = rounds;
+    {
+      cut_path_to_source(idx, p, v, g.edge_is_cut);
+      g.terminals.push_back(v);
+    }
+    g.distortion_terminals += peaks.size();
   }
+  finish_and_check(idx, g);
   return g;
 }
 

@@ -8,6 +8,8 @@
 #ifndef CGAL_SURFACE_DESIGN_INTERNAL_DEVELOPABILITY_GLUE_TABS_H
 #define CGAL_SURFACE_DESIGN_INTERNAL_DEVELOPABILITY_GLUE_TABS_H
 
+#include <CGAL/Surface_design/internal/Developability/distortion.h>
+
 #include <Eigen/Core>
 
 #include <algorithm>
@@ -18,23 +20,6 @@
 namespace CGAL {
 namespace Surface_design {
 namespace internal {
-
-inline double cross_2d(const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); }
-
-/// Whether the closed segments [a, b] and [c, d] have a point in common.
-inline bool segments_meet(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
-                          const Eigen::Vector2d& d)
-{
-  const double d1 = cross_2d(b - a, c - a), d2 = cross_2d(b - a, d - a);
-  const double d3 = cross_2d(d - c, a - c), d4 = cross_2d(d - c, b - c);
-  if(((d1 > 0. && d2 < 0.) || (d1 < 0. && d2 > 0.)) && ((d3 > 0. && d4 < 0.) || (d3 < 0. && d4 > 0.)))
-    return true;
-  auto on = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& x, double o) {
-    return o == 0. && x.x() >= (std::min)(p.x(), q.x()) && x.x() <= (std::max)(p.x(), q.x()) &&
-           x.y() >= (std::min)(p.y(), q.y()) && x.y() <= (std::max)(p.y(), q.y());
-  };
-  return on(a, b, c, d1) || on(a, b, d, d2) || on(c, d, a, d3) || on(c, d, b, d4);
-}
 
 /// Whether x lies strictly inside the closed polygon (even-odd rule; on the boundary: either).
 inline bool inside_polygon(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& x)
@@ -120,13 +105,33 @@ inline bool glue_tab_fits(const std::vector<Eigen::Vector2d>& p, const std::vect
   for(std::size_t i = 0; i < cut.size(); ++i)
   {
     for(std::size_t j = i + 2; j < cut.size(); ++j)
-      if(segments_meet(cut[i].first, cut[i].second, cut[j].first, cut[j].second))
+      if(segments_intersect(cut[i].first, cut[i].second, cut[j].first, cut[j].second))
         return false;
     for(std::size_t k = 0; k < m; ++k)
-      if(segments_meet(cut[i].first, cut[i].second, p[k], p[k + 1]))
+      if(segments_intersect(cut[i].first, cut[i].second, p[k], p[k + 1]))
         return false;
   }
   auto is_base = [&](const Eigen::Vector2d& x) { return std::find(p.begin(), p.end(), x) != p.end(); };
+  // a closed polygon (a piece's outline, a tab placed before) against this tab: one of its
+  // vertices inside the tab, or one of its edges meeting a cut segment of the tab (the base, and
+  // chords of it, excepted when `skip_base`)
+  auto meets = [&](const std::vector<Eigen::Vector2d>& other, bool skip_base) {
+    for(std::size_t i = 0; i < other.size(); ++i)
+    {
+      const Eigen::Vector2d& a = other[i];
+      const Eigen::Vector2d& b = other[(i + 1) % other.size()];
+      if(!near(a, b))
+        continue;
+      if(!is_base(a) && inside_polygon(polygon, a))
+        return true;
+      if(skip_base && is_base(a) && is_base(b))
+        continue;
+      for(const auto& s : cut)
+        if(segments_intersect(s.first, s.second, a, b))
+          return true;
+    }
+    return false;
+  };
   for(const auto& piece : pieces)
   {
     // a tab lying on a piece without meeting its boundary (on a piece that overlaps itself)
@@ -140,38 +145,12 @@ inline bool glue_tab_fits(const std::vector<Eigen::Vector2d>& p, const std::vect
       for(const Eigen::Vector2d& x : q)
         if(inside_polygon(piece, x))
           return false;
-    for(std::size_t i = 0; i < piece.size(); ++i)
-    {
-      const Eigen::Vector2d& a = piece[i];
-      const Eigen::Vector2d& b = piece[(i + 1) % piece.size()];
-      if(!near(a, b))
-        continue;
-      if(!is_base(a) && inside_polygon(polygon, a))
-        return false;
-      if(is_base(a) && is_base(b))
-        continue; // the base itself, or a chord of it
-      for(const auto& s : cut)
-        if(segments_meet(s.first, s.second, a, b))
-          return false;
-    }
-  }
-  for(const auto& other : placed)
-  {
-    for(std::size_t i = 0; i < other.size(); ++i)
-    {
-      const Eigen::Vector2d& a = other[i];
-      const Eigen::Vector2d& b = other[(i + 1) % other.size()];
-      if(!near(a, b))
-        continue;
-      if(!is_base(a) && inside_polygon(polygon, a))
-        return false;
-      for(const auto& s : cut)
-        if(segments_meet(s.first, s.second, a, b))
-          return false;
-    }
-    if(inside_polygon(other, 0.5 * (q[m / 2] + p[m / 2])))
+    if(meets(piece, true))
       return false;
   }
+  for(const auto& other : placed)
+    if(meets(other, false) || inside_polygon(other, 0.5 * (q[m / 2] + p[m / 2])))
+      return false;
   return true;
 }
 
