@@ -8,6 +8,7 @@
 #include "common/program_support.h"
 
 #include <CGAL/Surface_design/developability.h>
+#include <CGAL/Surface_design/developable_cutting.h>
 
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 
@@ -48,6 +49,8 @@ const char* usage =
   "                        every step (default 0.573 = 0.01 rad; 0 turns it off)\n"
   "  --keep-valence-3      let valence-3 vertices carry energy too (default: omitted, triple points)\n"
   "  --progress N          a progress line every N iterations (default 100; 0: none)\n"
+  "  --cut-report E        on every progress line, the cut that flatten --epsilon E would make of\n"
+  "                        the design so far (terminals, edges, length; the paper's Fig. 20, bottom)\n"
   "  --output OUT.off      the design (.off, .obj, .ply, .stl); required\n"
   "  --picture OUT.png     faces flat-shaded, edges darker the more they bend, vertices far from\n"
   "                        hinges (lambda >= 2pi 1e-3) red\n"
@@ -59,6 +62,7 @@ struct Options
   SD::Developability_energy energy = SD::Developability_energy::intrinsic_width;
   std::size_t subdivisions = 2, iterations = 10000, progress = 100;
   double target = 2. * CGAL_PI * 1e-4;
+  double cut_report = 0.; // 0: none
   bool target_given = false;
   SD::Developability_descent descent = SD::Developability_descent::lbfgs;
   double minimum_angle = 0.01;
@@ -106,6 +110,7 @@ Options parse(int argc, char** argv)
     .value("--minimum-angle",
            [&](const std::string& v) { o.minimum_angle = program::parse_double(v, "--minimum-angle", 0., 30.) * CGAL_PI / 180.; })
     .flag("--keep-valence-3", [&] { o.keep_valence_3 = true; })
+    .value("--cut-report", [&](const std::string& v) { o.cut_report = program::parse_positive(v, "--cut-report"); })
     .value("--progress",
            [&](const std::string& v) { o.progress = std::size_t(program::parse_integer(v, "--progress", 0, 100000000)); })
     .output("--output", o.output, {".off", ".obj", ".ply", ".stl"})
@@ -254,11 +259,23 @@ int run(const Options& o)
                                                              o.descent, P::omit_valence_three_vertices(
                                                                             !o.keep_valence_3, P::developability_target(o.target))))))
             .number_of_iterations(o.iterations)
-            .visitor([&o](const SD::Developability_iteration& it) {
+            .visitor([&o, &mesh](const SD::Developability_iteration& it) {
               if(o.progress > 0 && (it.level_iteration % o.progress == 0 || it.level_iteration == 1))
-                std::printf("level %zu iteration %5zu: energy %.6g, gradient %.3g, step %.3g, %zu faces%s\n", it.level,
+              {
+                std::printf("level %zu iteration %5zu: energy %.6g, gradient %.3g, step %.3g, %zu faces%s", it.level,
                             it.level_iteration, it.energy, it.gradient_norm, it.step, it.faces,
                             it.flips + it.collapses > 0 ? " (small angles removed)" : "");
+                if(o.cut_report > 0.)
+                {
+                  // the mesh holds the positions of this iteration
+                  std::vector<Mesh::Edge_index> cut;
+                  const SD::Developable_cut_result c =
+                    SD::compute_developable_cut(mesh, std::back_inserter(cut), P::cut_tolerance(o.cut_report));
+                  std::printf("; cut at %.3g: %zu terminals, %zu edges, length %.4g", o.cut_report, c.terminals,
+                              c.cut_edges, c.cut_length);
+                }
+                std::printf("\n");
+              }
               std::fflush(stdout);
               return true;
             }));
