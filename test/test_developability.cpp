@@ -701,6 +701,29 @@ TEMPLATE_TEST_CASE("the flow stops when it has converged, not at the iteration c
   CHECK(!c.converged);
 }
 
+// A zero gradient ends a level as converged: the L1 energy of a closed surface whose defects are
+// all positive is the constant 4 pi (Gauss-Bonnet), so the flow of a noisy sphere has nothing to
+// descend from its first iteration.
+TEST_CASE("a stationary start ends the level as converged", "[developability][flow][stopping]")
+{
+  using Mesh = test::Surface_mesh;
+  Mesh sphere = make_icosphere<Mesh>(2);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-0.01, 0.01);
+  for(auto v : vertices(sphere))
+  {
+    const test::Point q = get(CGAL::vertex_point, sphere, v);
+    put(get(CGAL::vertex_point, sphere), v, test::Point(q.x() + u(rng), q.y() + u(rng), q.z() + u(rng)));
+  }
+  const SD::Developability_flow_result r = SD::make_piecewise_developable(
+    sphere, SD::parameters::developability_energy(SD::Developability_energy::absolute_angle_defect));
+  REQUIRE(r.levels.size() == 1);
+  CHECK(r.levels[0].end == std::string("gradient below tolerance"));
+  CHECK(r.converged);
+  CHECK(r.iterations <= 2);
+  CHECK(r.levels[0].final_energy == Approx(4. * SDI::pi).epsilon(1e-12));
+}
+
 // A target on lambda: the flow of a noisy tube stops as soon as every measured vertex is at
 // most the target (counted here apart), before the flow without a target, which goes on to a
 // zero gradient.

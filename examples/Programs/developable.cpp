@@ -41,16 +41,18 @@ const char* usage =
   "                        ends before when it has converged: over 300 iterations the energy fell\n"
   "                        by less than 1% and the vertices above the target by at most 0.5%\n"
   "  --target L            lambda (covariance, eq. 3) that counts as developable (default 2pi 1e-4,\n"
-  "                        a hinge): a level also ends when every vertex is at most L; at the end\n"
-  "                        the vertices above L are the seams (flatten --epsilon L cuts through\n"
-  "                        them); exits 1 without output if the flow did not converge\n"
+  "                        a hinge): a level also ends as soon as every vertex is at most L (with\n"
+  "                        the default too: nothing is left to do); at the end the vertices above\n"
+  "                        L are the seams (flatten --epsilon L cuts through them); given, the\n"
+  "                        program exits 1 without output if the flow did not converge\n"
   "  --descent lbfgs|gradient   L-BFGS with the Lewis-Overton line search (default) or gradient descent\n"
   "  --minimum-angle DEG   corner angles below this are removed by flips and collapses after\n"
   "                        every step (default 0.573 = 0.01 rad; 0 turns it off)\n"
   "  --keep-valence-3      let valence-3 vertices carry energy too (default: omitted, triple points)\n"
   "  --progress N          a progress line every N iterations (default 100; 0: none)\n"
-  "  --cut-report E        on every progress line, the cut that flatten --epsilon E would make of\n"
-  "                        the design so far (terminals, edges, length; the paper's Fig. 20, bottom)\n"
+  "  --cut-report E        on every progress line, the tree that flatten --epsilon E\n"
+  "                        --distortion-bound 0 would cut in the design so far (terminals, edges,\n"
+  "                        length; the paper's Fig. 20, bottom); needs progress lines\n"
   "  --output OUT.off      the design (.off, .obj, .ply, .stl); required\n"
   "  --picture OUT.png     faces flat-shaded, edges darker the more they bend, vertices far from\n"
   "                        hinges (lambda >= 2pi 1e-3) red\n"
@@ -118,6 +120,8 @@ Options parse(int argc, char** argv)
     .parse(argc, argv);
   if(o.output.empty())
     throw program::Usage_error("--output OUT.off is required");
+  if(o.cut_report > 0. && o.progress == 0)
+    throw program::Usage_error("--cut-report prints on the progress lines: not with --progress 0");
   program::check_paths_and_picture({{"INPUT", o.input}, {"--output", o.output}}, o.picture, p.given("--up"));
   return o;
 }
@@ -267,12 +271,20 @@ int run(const Options& o)
                             it.flips + it.collapses > 0 ? " (small angles removed)" : "");
                 if(o.cut_report > 0.)
                 {
-                  // the mesh holds the positions of this iteration
-                  std::vector<Mesh::Edge_index> cut;
-                  const SD::Developable_cut_result c =
-                    SD::compute_developable_cut(mesh, std::back_inserter(cut), P::cut_tolerance(o.cut_report));
-                  std::printf("; cut at %.3g: %zu terminals, %zu edges, length %.4g", o.cut_report, c.terminals,
-                              c.cut_edges, c.cut_length);
+                  // the mesh holds the positions of this iteration; a report that fails (a face the
+                  // flow made degenerate, without small-angle handling) does not stop the flow
+                  try
+                  {
+                    std::vector<Mesh::Edge_index> cut;
+                    const SD::Developable_cut_result c =
+                      SD::compute_developable_cut(mesh, std::back_inserter(cut), P::cut_tolerance(o.cut_report));
+                    std::printf("; cut at %.3g: %zu terminals, %zu edges, length %.4g", o.cut_report, c.terminals,
+                                c.cut_edges, c.cut_length);
+                  }
+                  catch(const std::exception& e)
+                  {
+                    std::printf("; no cut at this iteration (%s)", e.what());
+                  }
                 }
                 std::printf("\n");
               }
@@ -296,9 +308,12 @@ int run(const Options& o)
   {
     const std::string why = "the last level ended with \"" + r.levels.back().end + "\" before converging (" +
                             std::to_string(r.levels.back().vertices_above_target) + " vertices above the target)";
+    const bool capped = r.levels.back().end == "iteration limit";
+    const std::string advice = capped ? "raise --iterations (now " + std::to_string(o.iterations) + ")"
+                                      : "the descent cannot pass a kink here; try another --energy or --descent";
     if(o.target_given)
-      throw std::runtime_error(why + ": no output written; raise --iterations (now " + std::to_string(o.iterations) + ")");
-    std::printf("note: %s; raise --iterations to converge\n", why.c_str());
+      throw std::runtime_error(why + ": no output written; " + advice);
+    std::printf("note: %s; %s\n", why.c_str(), advice.c_str());
   }
   print_metrics(SD::developability_metrics(mesh, input, P::developability_energy(o.energy)));
   print_target_report(mesh, o.target);

@@ -184,7 +184,8 @@ check_developable() {
 for args in "--energy magic" "--subdivisions 5" "--subdivisions -1" "--iterations -1" "--iterations x" \
             "--minimum-angle 45" "--minimum-angle nan" "--descent newton" "--progress -1" "--output $O/d.xyz" \
             "--energy intrinsic --energy covariance" "--up +Z" "--bogus" "--target 0" "--target -1e-3" \
-            "--target 3" "--target nan" "--target 1e-3x" "--cut-report 0" "--cut-report -1" "--cut-report nan"; do
+            "--target 3" "--target nan" "--target 1e-3x" "--cut-report 0" "--cut-report -1" "--cut-report nan" \
+            "--cut-report 1e-3 --progress 0"; do
   # shellcheck disable=SC2086
   refuse developable "$B1K" $args --output "$O/d.off"
 done

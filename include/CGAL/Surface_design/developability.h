@@ -546,7 +546,9 @@ Developability_flow_result make_piecewise_developable(TriangleMesh& tm,
         report.end = to_string(internal::Developability_level_end::visitor);
         break;
       }
-      if(accepted && info.gradient_norm <= o.gradient_tolerance)
+      // a zero gradient (the minimizer reports a stationary point) or one below the tolerance,
+      // whether or not a step was taken: nothing is left to descend
+      if(s.status == internal::Lbfgs_step_status::stationary || info.gradient_norm <= o.gradient_tolerance)
       {
         report.end = to_string(internal::Developability_level_end::gradient_small);
         break;

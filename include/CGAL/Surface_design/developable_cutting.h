@@ -33,7 +33,7 @@ namespace Surface_design {
 /// What `compute_developable_cut()` found.
 struct Developable_cut_result
 {
-  std::size_t terminals = 0;       ///< interior vertices with lambda_i > epsilon
+  std::size_t terminals = 0;       ///< interior vertices with lambda_i > epsilon, and the `distortion_terminals`
   std::size_t boundary_loops = 0;  ///< boundary loops of the input (each joined to the cut)
   std::size_t generator_loops = 0; ///< loops added because of genus (2g per component of genus g)
   std::size_t cut_edges = 0;       ///< edges of the cut

@@ -324,7 +324,7 @@ Fabrication_pattern_report write_fabrication_pattern_svg(std::ostream& os, const
   drawing.layout.sheet_gap = layout.sheet_gap;
   drawing.layout.scale = layout.scale;
   drawing.layout.sheets = layout.sheets;
-  drawing.layout.tab = layout.glue_tab_width;
+  drawing.layout.tab = internal::require_nonnegative("Fabrication_layout::glue_tab_width", layout.glue_tab_width);
   drawing.fold_angle = fold_angle;
   const std::size_t nv = idx.number_of_vertices();
   drawing.uv = internal::plane_coordinates(idx, uv);

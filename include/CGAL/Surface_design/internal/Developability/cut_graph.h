@@ -56,7 +56,7 @@ struct Cut_graph
   std::vector<double> edge_cost;                 ///< per edge: the cost the tree minimized
   std::vector<double> lambda;                    ///< per vertex: covariance lambda_i (eq. 3)
   std::vector<Eigen::Vector3d> ruling;           ///< per vertex: unit ruling direction
-  std::vector<std::size_t> terminals;            ///< interior vertices with lambda_i > epsilon
+  std::vector<std::size_t> terminals;            ///< interior vertices with lambda_i > epsilon (or forced), then the distortion peaks
   std::size_t generator_loops = 0;               ///< loops added for genus
   std::size_t boundary_loops = 0;
   std::size_t extra_edges = 0;                   ///< edges added so that a closed sphere opens into a disk

@@ -36,9 +36,10 @@ inline bool inside_polygon(const std::vector<Eigen::Vector2d>& polygon, const Ei
 }
 
 /// A glue tab on the base polyline p_0 .. p_m (a side of a seam, in the order of its piece's
-/// boundary: the piece on the left, y up): the outer points q_0 .. q_m at `width` outside, at the
-/// mitred vertex normals (mitres capped at twice the width), the ends pulled in along the base
-/// by `width` (or a third of the base's length, if shorter) so that the tab tapers at 45 degrees.
+/// boundary: the piece on the left, y up): the outer points q_0 .. q_m at `width` outside, along
+/// the vertex normals (the mean of the two edges' outward normals: no mitre, so that no outer
+/// point is farther than `width` from its base point), the ends pulled in along the base by
+/// `width` (or a third of the base's length, if shorter) so that the tab tapers at 45 degrees.
 /// The tab is the polygon p_0 .. p_m, q_m .. q_0.
 inline std::vector<Eigen::Vector2d> glue_tab_outer(const std::vector<Eigen::Vector2d>& p, double width)
 {
@@ -56,8 +57,7 @@ inline std::vector<Eigen::Vector2d> glue_tab_outer(const std::vector<Eigen::Vect
     Eigen::Vector2d n = i == 0 ? normal[0] : i == m ? normal[m - 1] : normal[i - 1] + normal[i];
     const double c = n.norm();
     n = c > 0. ? Eigen::Vector2d(n / c) : normal[(std::min)(i, m - 1)];
-    const double cos_half = i == 0 || i == m ? 1. : (std::max)(0.5, n.dot(normal[i]));
-    q[i] = p[i] + width / cos_half * n;
+    q[i] = p[i] + width * n;
   }
   const double taper = (std::min)(width, length / 3.);
   q[0] += taper * (p[1] - p[0]).normalized();

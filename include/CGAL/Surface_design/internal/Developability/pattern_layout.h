@@ -153,9 +153,11 @@ inline std::vector<Eigen::Vector2d> pack_pieces(const std::vector<Eigen::Vector2
     size[k] = hi - lo;
     packing.pieces[k].rotation = angle;
   }
-  // a piece and its tabs fit in its box grown by the tab width on every side
+  // a piece and its tabs fit in its box grown by the tab width on every side: W, H inside the
+  // margins; the box of a piece must fit in them, and so must the box grown by T
   const double T = 2. * packing.tab;
-  const double W = packing.sheet_width - 2. * packing.margin - T, H = packing.sheet_height - 2. * packing.margin - T;
+  const double W0 = packing.sheet_width - 2. * packing.margin, H0 = packing.sheet_height - 2. * packing.margin;
+  const double W = W0 - T, H = H0 - T;
   if(!(W > 0. && H > 0.))
     throw Invalid_parameter("glue_tab_width", "tabs of " + to_text(packing.tab) + " mm leave no room inside the margins");
   // the scale at which piece k fits (turned by 90 degrees if that fits better)
@@ -209,7 +211,7 @@ inline std::vector<Eigen::Vector2d> pack_pieces(const std::vector<Eigen::Vector2
     const double w = size[k].x() * scale + T, h = size[k].y() * scale + T;
     Shelf* target = nullptr;
     for(Shelf& s : shelves)
-      if(h <= s.height * (1. + 1e-12) && s.used + w <= W * (1. + 1e-12))
+      if(h <= s.height * (1. + 1e-12) && s.used + w <= W0 * (1. + 1e-12))
       {
         target = &s;
         break;
@@ -217,7 +219,7 @@ inline std::vector<Eigen::Vector2d> pack_pieces(const std::vector<Eigen::Vector2
     if(!target)
     {
       std::size_t sheet = 0;
-      while(sheet < sheet_used.size() && sheet_used[sheet] + h > H * (1. + 1e-12))
+      while(sheet < sheet_used.size() && sheet_used[sheet] + h > H0 * (1. + 1e-12))
         ++sheet;
       if(sheet == sheet_used.size())
         sheet_used.push_back(0.);
@@ -261,8 +263,9 @@ struct Pattern_report;
 
 /// One glue tab per seam curve, along the side met first: its boundary edges in the order of its
 /// piece's boundary, outside the piece; width d.layout.tab mm, else half, else a quarter, else
-/// none, whichever first overlaps no piece and no tab drawn before (glue_tab_fits()). Drawn as
-/// filled polygons whose outer edges are cut lines, numbered like their seam.
+/// none, whichever first stays inside its sheet's margins and overlaps no piece and no tab drawn
+/// before (glue_tab_fits()). Drawn as filled polygons whose outer edges are cut lines, numbered
+/// like their seam.
 template <class Sides>
 void write_glue_tabs(std::ostream& os, const Pattern_drawing& d, const std::vector<std::size_t>& boundary_next,
                      const std::vector<std::vector<unsigned long long>>& chains, Sides& sides, std::size_t n_original,
@@ -558,12 +561,23 @@ void write_glue_tabs(std::ostream& os, const Pattern_drawing& d, const std::vect
     std::vector<Eigen::Vector2d> p;
     for(std::size_t v : walk)
       p.push_back(mm(v));
+    // the inside of the margins of the tab's sheet (sheet k spans [k (W + G), k (W + G) + W])
+    const double period = d.layout.sheet_width + d.layout.sheet_gap;
+    const double x0 = std::floor(p.front().x() / period) * period + d.layout.margin;
+    const double x1 = x0 + d.layout.sheet_width - 2. * d.layout.margin;
+    const double y0 = d.layout.margin, y1 = H - d.layout.margin;
+    auto on_sheet = [&](const std::vector<Eigen::Vector2d>& q) {
+      for(const Eigen::Vector2d& x : q)
+        if(!(x.x() >= x0 && x.x() <= x1 && x.y() >= y0 && x.y() <= y1))
+          return false;
+      return true;
+    };
     bool drawn = false;
     for(int halving = 0; halving < 3 && !drawn; ++halving)
     {
       const double width = d.layout.tab / double(1 << halving);
       const std::vector<Eigen::Vector2d> q = glue_tab_outer(p, width);
-      if(!glue_tab_fits(p, q, pieces, placed))
+      if(!on_sheet(q) || !glue_tab_fits(p, q, pieces, placed))
         continue;
       drawn = true;
       ++report.tabs;
