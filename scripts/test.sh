@@ -7,7 +7,8 @@
 #                                     at -Og, see CMakeLists.txt; line tables only (-g1); assertions on)
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-install_packages "${BUILD_PACKAGES[@]}" "${EDITOR_PACKAGES[@]}" python3 chromium
+# poppler-utils: pdfinfo reads the PDF patterns back in the command-line checks
+install_packages "${BUILD_PACKAGES[@]}" "${EDITOR_PACKAGES[@]}" python3 chromium poppler-utils
 
 # every optional dependency is installed above, so none may be missing: the tests that compare
 # CHOLMOD, METIS orderings and TBB loops with the rest must not pass by being skipped

@@ -13,7 +13,10 @@
 //   |log area scale| <= 0.01 and no flipped face;
 // - pieces whose flattening overlaps itself are split: a developable cone of 1.34 turns into two
 //   disks of less than a turn each, still isometric; the design until no piece overlaps;
-// - the pattern: pieces inside their sheets and apart, seam labels in pairs, the SVG parses;
+// - gluing cracks: the predicted openings are BFF's, the glued cut keeps the pieces disks and the
+//   distortion bound, flat slits glue entirely, a cone slit by its opening, loops stay;
+// - the pattern: pieces inside their sheets and apart, seam labels in pairs, the SVG parses; the
+//   PDF is well formed, one page per sheet, with the SVG's outlines and tabs;
 // - bad input throws clear exceptions (not a disk, not triangles, empty, bad parameters, uv not
 //   finite).
 
@@ -545,7 +548,8 @@ TEMPLATE_TEST_CASE("A design of the developability flow, cut at epsilon = 1e-3, 
   }
 }
 
-// The Fig. 20 sweep again, with the cut also going through the curvature that the flow left
+// The Fig. 20 sweep again, on two designs (the pebble, and a torus made by the CLI from a coarse
+// mesh nobody tuned: genus 1, generator loops), with the cut also going through the curvature that the flow left
 // spread under epsilon (distortion bound 10 epsilon, flatten's default): the log scale factors of the cut (a
 // Dirichlet problem on the uncut mesh) equal BFF's on the cut mesh, the bound holds at every
 // vertex, and the mean area distortion falls below the issue's 0.005 at epsilon = 1e-3.
@@ -553,54 +557,341 @@ TEMPLATE_TEST_CASE("Cutting through the curvature left under epsilon bounds the 
                    "[flattening][design][distortion]", SD_MESH_TYPES)
 {
   using Mesh = TestType;
-  const Mesh design = test::load_mesh<Mesh>("pebble_design.off");
-  double previous = std::numeric_limits<double>::infinity();
-  for(double epsilon : {1e-2, 5e-3, 2e-3, 1e-3})
+  for(const char* name : {"pebble_design.off", "torus_design.off"})
   {
-    INFO("epsilon " << epsilon);
-    const double bound = 10. * epsilon;
-    std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> cut, plain_cut;
-    const SD::Developable_cut_result report =
-      SD::compute_developable_cut(design, std::back_inserter(cut), P::cut_tolerance(epsilon, P::distortion_bound(bound)));
-    const SD::Developable_cut_result plain = SD::compute_developable_cut(design, std::back_inserter(plain_cut), P::cut_tolerance(epsilon));
-    CHECK(report.terminals == plain.terminals + report.distortion_terminals);
-    CHECK(report.distortion_rounds >= 1);
-    CHECK(report.largest_log_area_scale <= bound);
-    CHECK(report.cut_length > plain.cut_length);
-
-    Mesh pieces;
-    std::vector<std::pair<Vertex<Mesh>, Vertex<Mesh>>> pairs;
-    SD::cut_mesh_along_edges(design, cut, pieces, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(pairs)));
-    std::map<Vertex<Mesh>, Vertex<Mesh>> original;
-    for(const auto& [in, out] : pairs)
-      original[out] = in;
-    Uv_map<Mesh> uv;
-    std::map<Vertex<Mesh>, double> u_bff;
-    SD::Boundary_first_flattener<Mesh> flattener(pieces);
-    flattener.flatten(boost::make_assoc_property_map(uv));
-    flattener.scale_factors(boost::make_assoc_property_map(u_bff));
-    // the same factors from the uncut mesh, as the cut computed them
-    const SDI::Mesh_indices<Mesh> idx(design);
-    std::vector<bool> edge_is_cut(idx.number_of_edges(), false);
-    for(auto e : cut)
-      edge_is_cut[idx.edge_index(halfedge(e, design))] = true;
-    const std::vector<double> u = SDI::cut_scale_factors(idx, get(CGAL::vertex_point, design), edge_is_cut, SD::Default_solver_traits());
-    double largest = 0., difference = 0.;
-    for(const auto& [out, value] : u_bff)
+    INFO(name);
+    const Mesh design = test::load_mesh<Mesh>(name);
+    double previous = std::numeric_limits<double>::infinity();
+    for(double epsilon : {1e-2, 5e-3, 2e-3, 1e-3})
     {
-      largest = (std::max)(largest, 2. * std::abs(value));
-      difference = (std::max)(difference, std::abs(value - u[idx.index(original.at(out))]));
-    }
-    CHECK(difference <= 1e-9);
-    CHECK(largest == Approx(report.largest_log_area_scale).epsilon(1e-6));
+      INFO("epsilon " << epsilon);
+      const double bound = 10. * epsilon;
+      std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> cut, plain_cut;
+      const SD::Developable_cut_result report =
+        SD::compute_developable_cut(design, std::back_inserter(cut), P::cut_tolerance(epsilon, P::distortion_bound(bound)));
+      const SD::Developable_cut_result plain = SD::compute_developable_cut(design, std::back_inserter(plain_cut), P::cut_tolerance(epsilon));
+      CHECK(report.terminals == plain.terminals + report.distortion_terminals);
+      CHECK(report.distortion_rounds >= 1);
+      CHECK(report.largest_log_area_scale <= bound);
+      CHECK(report.cut_length > plain.cut_length);
 
-    const SD::Flattening_distortion d = SD::flattening_distortion(pieces, boost::make_assoc_property_map(uv));
+      Mesh pieces;
+      std::vector<std::pair<Vertex<Mesh>, Vertex<Mesh>>> pairs;
+      SD::cut_mesh_along_edges(design, cut, pieces, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(pairs)));
+      std::map<Vertex<Mesh>, Vertex<Mesh>> original;
+      for(const auto& [in, out] : pairs)
+        original[out] = in;
+      Uv_map<Mesh> uv;
+      std::map<Vertex<Mesh>, double> u_bff;
+      SD::Boundary_first_flattener<Mesh> flattener(pieces);
+      flattener.flatten(boost::make_assoc_property_map(uv));
+      flattener.scale_factors(boost::make_assoc_property_map(u_bff));
+      // the same factors from the uncut mesh, as the cut computed them
+      const SDI::Mesh_indices<Mesh> idx(design);
+      std::vector<bool> edge_is_cut(idx.number_of_edges(), false);
+      for(auto e : cut)
+        edge_is_cut[idx.edge_index(halfedge(e, design))] = true;
+      const std::vector<double> u = SDI::cut_scale_factors(idx, get(CGAL::vertex_point, design), edge_is_cut, SD::Default_solver_traits());
+      double largest = 0., difference = 0.;
+      for(const auto& [out, value] : u_bff)
+      {
+        largest = (std::max)(largest, 2. * std::abs(value));
+        difference = (std::max)(difference, std::abs(value - u[idx.index(original.at(out))]));
+      }
+      CHECK(difference <= 1e-9);
+      CHECK(largest == Approx(report.largest_log_area_scale).epsilon(1e-6));
+
+      const SD::Flattening_distortion d = SD::flattening_distortion(pieces, boost::make_assoc_property_map(uv));
+      CHECK(d.flipped_faces == 0);
+      CHECK(d.area_log_mean < previous); // the paper's Fig. 20: less distortion at smaller epsilon
+      CHECK(d.area_log_max <= 2. * bound); // per face, from the per-vertex bound
+      previous = d.area_log_mean;
+      if(epsilon == 1e-3)
+      {
+        CHECK(d.area_log_mean <= 0.005);
+  #if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
+        // the distortion rounds with another solver: the same cut
+        std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> other;
+        const SD::Developable_cut_result again = SD::compute_developable_cut(
+          design, std::back_inserter(other),
+          P::cut_tolerance(epsilon, P::distortion_bound(bound)).sparse_linear_solver(SD::Cholmod_solver_traits()));
+        CHECK(again.distortion_rounds == report.distortion_rounds);
+        CHECK(again.largest_log_area_scale == Approx(report.largest_log_area_scale).epsilon(1e-8));
+        CHECK((other == cut));
+  #else
+        SD_CHOLMOD_UNAVAILABLE("the distortion-bounded cut with CHOLMOD");
+  #endif
+      }
+    }
+  }
+}
+
+// Cut degree of every vertex (cut edges at it), and whether it is on the border.
+template <class Mesh>
+std::map<Vertex<Mesh>, std::size_t> cut_degrees(const Mesh& mesh,
+                                                const std::vector<typename boost::graph_traits<Mesh>::edge_descriptor>& cut)
+{
+  std::map<Vertex<Mesh>, std::size_t> degree;
+  for(auto v : vertices(mesh))
+    degree[v] = 0;
+  for(auto e : cut)
+  {
+    ++degree[source(halfedge(e, mesh), mesh)];
+    ++degree[target(halfedge(e, mesh), mesh)];
+  }
+  return degree;
+}
+
+// The opening of the flattening at every cut vertex off the border, read from BFF's layout of the
+// cut mesh: 2 pi minus the sum of the laid-out corner angles of all its copies.
+template <class Mesh>
+std::map<Vertex<Mesh>, double> laid_out_openings(const Mesh& mesh,
+                                                 const std::vector<typename boost::graph_traits<Mesh>::edge_descriptor>& cut)
+{
+  Mesh pieces;
+  std::vector<std::pair<Vertex<Mesh>, Vertex<Mesh>>> pairs;
+  SD::cut_mesh_along_edges(mesh, cut, pieces, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(pairs)));
+  std::map<Vertex<Mesh>, Vertex<Mesh>> original;
+  for(const auto& [in, out] : pairs)
+    original[out] = in;
+  Uv_map<Mesh> uv;
+  SD::boundary_first_flattening(pieces, boost::make_assoc_property_map(uv));
+  std::map<Vertex<Mesh>, double> opening;
+  const auto degree = cut_degrees(mesh, cut);
+  for(auto f : faces(pieces))
+    for(auto h : halfedges_around_face(halfedge(f, pieces), pieces))
+    {
+      const Vertex<Mesh> in = original.at(target(h, pieces));
+      if(degree.at(in) == 0 || is_border(in, mesh))
+        continue;
+      const Eigen::Vector2d a = eigen(uv.at(source(h, pieces))) - eigen(uv.at(target(h, pieces)));
+      const Eigen::Vector2d b = eigen(uv.at(target(next(h, pieces), pieces))) - eigen(uv.at(target(h, pieces)));
+      if(opening.count(in) == 0)
+        opening[in] = 2. * CGAL_PI;
+      opening[in] -= std::atan2(std::abs(a.x() * b.y() - a.y() * b.x()), a.dot(b));
+    }
+  return opening;
+}
+
+// Gluing cracks (sec. 4.4, Fig. 19): the opening the gluing predicts at every cut vertex,
+// delta = K + (A u), is what BFF's layout of the cut mesh shows (an independent reading of its
+// corner angles); with no distortion bound every crack tip left opens by more than the bound;
+// with one the glued cut keeps it; only dangling edges go, so every piece stays a disk; both
+// solvers agree.
+TEMPLATE_TEST_CASE("Gluing the cracks of the flattening shortens the cut and keeps the pieces disks",
+                   "[flattening][design][cracks]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  using Edge = typename boost::graph_traits<Mesh>::edge_descriptor;
+  const Mesh design = test::load_mesh<Mesh>("pebble_design.off");
+  const double epsilon = 1e-3, bound = 10. * epsilon;
+  std::vector<Edge> cut;
+  const SD::Developable_cut_result report =
+    SD::compute_developable_cut(design, std::back_inserter(cut), P::cut_tolerance(epsilon, P::distortion_bound(bound)));
+
+  const SDI::Mesh_indices<Mesh> idx(design);
+  const auto vpm = get(CGAL::vertex_point, design);
+  const std::vector<double> weight = SDI::cotangent_weights(idx, vpm);
+  const std::vector<double> angle_sum = SDI::vertex_angle_sums(idx, SDI::corner_angles(idx, vpm));
+  auto predicted_openings = [&](const std::vector<Edge>& c) {
+    std::vector<bool> edge_is_cut(idx.number_of_edges(), false);
+    for(auto e : c)
+      edge_is_cut[idx.edge_index(halfedge(e, design))] = true;
+    const std::vector<double> u = SDI::cut_scale_factors(idx, weight, angle_sum, edge_is_cut, SD::Default_solver_traits());
+    return std::make_pair(SDI::crack_openings(idx, weight, angle_sum, u), u);
+  };
+  {
+    const auto [delta, u] = predicted_openings(cut);
+    const auto laid_out = laid_out_openings(design, cut);
+    CHECK(laid_out.size() > 100);
+    double difference = 0., largest = 0.;
+    for(const auto& [v, opening] : laid_out)
+    {
+      difference = (std::max)(difference, std::abs(opening - delta[idx.index(v)]));
+      largest = (std::max)(largest, std::abs(opening));
+    }
+    CHECK(difference <= 1e-8);
+    CHECK(largest > 1e-3); // the oracle sees openings
+    double off_cut = 0.;
+    const auto degree = cut_degrees(design, cut);
+    for(auto v : vertices(design))
+      if(degree.at(v) == 0 && !is_border(v, design))
+        off_cut = (std::max)(off_cut, std::abs(delta[idx.index(v)]));
+    CHECK(off_cut <= 1e-9); // the flattening closes up off the cut
+  }
+
+  const double opening_bound = 0.02;
+  for(double certificate : {0., bound})
+  {
+    INFO("distortion bound " << certificate);
+    std::vector<Edge> glued;
+    const SD::Crack_gluing_result g = SD::glue_flattening_cracks(
+      design, cut, std::back_inserter(glued), P::crack_opening_bound(opening_bound, P::distortion_bound(certificate)));
+    CHECK(g.glued_edges > 20);
+    CHECK(g.cracks > 5);
+    CHECK(g.rounds >= 1);
+    CHECK(g.cut_edges == glued.size());
+    CHECK(g.cut_edges + g.glued_edges == cut.size());
+    std::set<Edge> before(cut.begin(), cut.end());
+    CHECK(std::all_of(glued.begin(), glued.end(), [&](Edge e) { return before.count(e) == 1; }));
+    CHECK(g.largest_log_area_scale_before == Approx(report.largest_log_area_scale).epsilon(1e-9));
+    // still one disk: BFF flattens it (it throws on anything else)
+    Mesh pieces;
+    CHECK(SD::cut_mesh_along_edges(design, glued, pieces) == report.pieces);
+    const SD::Flattening_distortion d = [&] {
+      Uv_map<Mesh> uv;
+      SD::boundary_first_flattening(pieces, boost::make_assoc_property_map(uv));
+      return SD::flattening_distortion(pieces, boost::make_assoc_property_map(uv));
+    }();
     CHECK(d.flipped_faces == 0);
-    CHECK(d.area_log_mean < previous); // the paper's Fig. 20: less distortion at smaller epsilon
-    CHECK(d.area_log_max <= 2. * bound); // per face, from the per-vertex bound
-    previous = d.area_log_mean;
-    if(epsilon == 1e-3)
-      CHECK(d.area_log_mean <= 0.005);
+    const auto [delta, u] = predicted_openings(glued);
+    double largest = 0.;
+    for(double x : u)
+      largest = (std::max)(largest, 2. * std::abs(x));
+    CHECK(largest == Approx(g.largest_log_area_scale).epsilon(1e-9));
+    if(certificate > 0.)
+      CHECK(largest <= (std::max)(certificate, g.largest_log_area_scale_before));
+    else
+    {
+      // a fixed point: every tip left opens by more than the bound in BFF's layout
+      const auto degree = cut_degrees(design, glued);
+      const auto laid_out = laid_out_openings(design, glued);
+      std::size_t tips = 0;
+      for(const auto& [v, opening] : laid_out)
+        if(degree.at(v) == 1)
+        {
+          ++tips;
+          CHECK(std::abs(opening) > opening_bound);
+        }
+      CHECK(tips > 0);
+    }
+  }
+  // another solver, the same glue
+  std::vector<Edge> ldlt;
+  const SD::Crack_gluing_result a = SD::glue_flattening_cracks(
+    design, cut, std::back_inserter(ldlt),
+    P::crack_opening_bound(opening_bound, P::distortion_bound(bound)).sparse_linear_solver(SD::Default_solver_traits()));
+#if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
+  std::vector<Edge> cholmod;
+  const SD::Crack_gluing_result b = SD::glue_flattening_cracks(
+    design, cut, std::back_inserter(cholmod),
+    P::crack_opening_bound(opening_bound, P::distortion_bound(bound)).sparse_linear_solver(SD::Cholmod_solver_traits()));
+  CHECK(a.glued_edges == b.glued_edges);
+  CHECK((ldlt == cholmod));
+#else
+  SD_CHOLMOD_UNAVAILABLE("the crack gluing with CHOLMOD");
+#endif
+}
+
+// Analytic cases: on a flat disk the flattening closes everywhere, so a cut from the border with
+// a branch glues away entirely; a cone vertex at the tip of a slit opens it by its angle defect
+// (glued below that bound, not above); on a closed sphere a cut that is one path keeps two edges;
+// on a torus the generator loops stay and every branch hanging from them goes.
+TEMPLATE_TEST_CASE("Cracks: flat disks glue entirely, cones by their angle defect, loops and two edges stay",
+                   "[flattening][cracks]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  using Edge = typename boost::graph_traits<Mesh>::edge_descriptor;
+  auto vertex_at = [](const Mesh& m, double x, double y) {
+    Vertex<Mesh> best{};
+    double d = 1e300;
+    for(auto v : vertices(m))
+    {
+      const auto p = get(CGAL::vertex_point, m, v);
+      const double dv = std::hypot(p.x() - x, p.y() - y);
+      if(dv < d)
+      {
+        d = dv;
+        best = v;
+      }
+    }
+    return best;
+  };
+  auto path = [&](const Mesh& m, const std::vector<std::pair<double, double>>& points) {
+    std::vector<Edge> c;
+    for(std::size_t k = 0; k + 1 < points.size(); ++k)
+    {
+      const auto found = halfedge(vertex_at(m, points[k].first, points[k].second),
+                                  vertex_at(m, points[k + 1].first, points[k + 1].second), m);
+      REQUIRE(found.second);
+      c.push_back(edge(found.first, m));
+    }
+    return c;
+  };
+  {
+    Mesh grid;
+    SD::make_grid(grid, 8, 8);
+    std::vector<Edge> cut = path(grid, {{0., 0.5}, {0.125, 0.5}, {0.25, 0.5}, {0.375, 0.5}, {0.5, 0.5}});
+    const std::vector<Edge> branch = path(grid, {{0.25, 0.5}, {0.25, 0.625}, {0.25, 0.75}});
+    cut.insert(cut.end(), branch.begin(), branch.end());
+    std::vector<Edge> glued;
+    const SD::Crack_gluing_result g =
+      SD::glue_flattening_cracks(grid, cut, std::back_inserter(glued), P::crack_opening_bound(1e-9));
+    CHECK(glued.empty());
+    CHECK(g.glued_edges == 6);
+    CHECK(g.cracks >= 2);
+    CHECK(g.largest_log_area_scale == Approx(0.).margin(1e-12));
+  }
+  {
+    // a cone: the grid's centre raised, a slit from the border to it
+    Mesh cone;
+    SD::make_grid(cone, 8, 8);
+    const Vertex<Mesh> apex = vertex_at(cone, 0.5, 0.5);
+    put(get(CGAL::vertex_point, cone), apex, test::Point(0.5, 0.5, 0.15));
+    const std::vector<Edge> cut = path(cone, {{0.5, 0.}, {0.5, 0.125}, {0.5, 0.25}, {0.5, 0.375}, {0.5, 0.5}});
+    const SDI::Mesh_indices<Mesh> idx(cone);
+    const std::vector<double> angle_sum = SDI::vertex_angle_sums(idx, SDI::corner_angles(idx, get(CGAL::vertex_point, cone)));
+    const auto laid_out = laid_out_openings(cone, cut);
+    const double defect = 2. * CGAL_PI - angle_sum[idx.index(apex)];
+    INFO("angle defect at the apex " << defect << ", opening " << laid_out.at(apex));
+    REQUIRE(defect > 0.05);
+    // the neighbours of the apex carry negative curvature, which the flattening spreads: the
+    // opening at the tip is the defect corrected by (A u), read off the layout
+    const double opening = laid_out.at(apex);
+    CHECK(opening > 0.);
+    std::vector<Edge> kept, glued;
+    SD::glue_flattening_cracks(cone, cut, std::back_inserter(kept), P::crack_opening_bound(0.99 * opening));
+    CHECK(kept.size() == cut.size());
+    const SD::Crack_gluing_result g =
+      SD::glue_flattening_cracks(cone, cut, std::back_inserter(glued), P::crack_opening_bound(1.01 * opening));
+    CHECK(g.glued_edges >= 1);
+    CHECK(glued.size() < cut.size());
+  }
+  {
+    Mesh sphere;
+    SD::make_sphere(sphere, 2);
+    SD::Developable_cut_result report;
+    const std::vector<Edge> cut = developable_cut(sphere, 1e-6, report);
+    REQUIRE(cut.size() > 2);
+    std::vector<Edge> glued;
+    SD::glue_flattening_cracks(sphere, cut, std::back_inserter(glued), P::crack_opening_bound(100.));
+    CHECK(glued.size() == 2); // all but the two edges a closed surface needs
+    Mesh pieces;
+    CHECK(SD::cut_mesh_along_edges(sphere, glued, pieces) == 1);
+    Uv_map<Mesh> uv;
+    CHECK_NOTHROW(SD::boundary_first_flattening(pieces, boost::make_assoc_property_map(uv))); // a disk
+    const auto degree = cut_degrees(sphere, glued);
+    std::size_t tips = 0;
+    for(const auto& [v, d] : degree)
+      tips += d == 1 ? 1 : 0;
+    CHECK(tips == 2); // a path: its two ends, two edges or more
+  }
+  {
+    Mesh torus;
+    SD::make_torus(torus, 24, 12, 1., 0.4);
+    SD::Developable_cut_result report;
+    const std::vector<Edge> cut = developable_cut(torus, 1e-6, report);
+    CHECK(report.generator_loops == 2);
+    std::vector<Edge> glued;
+    const SD::Crack_gluing_result g =
+      SD::glue_flattening_cracks(torus, cut, std::back_inserter(glued), P::crack_opening_bound(100.));
+    CHECK(g.glued_edges > 0);
+    const auto degree = cut_degrees(torus, glued);
+    CHECK(std::none_of(degree.begin(), degree.end(), [](const auto& vd) { return vd.second == 1; }));
+    Mesh pieces;
+    CHECK(SD::cut_mesh_along_edges(torus, glued, pieces) == 1);
+    Uv_map<Mesh> uv;
+    CHECK_NOTHROW(SD::boundary_first_flattening(pieces, boost::make_assoc_property_map(uv)));
   }
 }
 
@@ -965,6 +1256,97 @@ std::vector<std::vector<Eigen::Vector2d>> svg_polygons(const boost::property_tre
   return out;
 }
 
+// A PDF read independently of its writer: the structure checked (every cross-reference offset at
+// its object, startxref at the table, every stream as long as its /Length says), then per page
+// (in the order of /Kids) the filled paths: their points in mm on the drawing of the sheets side
+// by side (y down, as in the SVG), the fill colour ("r g b") and the painting operator.
+struct Pdf_path
+{
+  std::vector<Eigen::Vector2d> points;
+  std::string fill, paint;
+};
+std::vector<std::vector<Pdf_path>> read_pdf(const std::string& doc, double sheet_width, double sheet_gap,
+                                            double sheet_height)
+{
+  REQUIRE(doc.compare(0, 8, "%PDF-1.4") == 0);
+  const std::size_t startxref = doc.rfind("startxref\n");
+  REQUIRE(startxref != std::string::npos);
+  const std::size_t xref = std::stoul(doc.substr(startxref + 10));
+  REQUIRE(doc.compare(xref, 5, "xref\n") == 0);
+  std::istringstream table(doc.substr(xref + 5));
+  std::size_t first = 0, count = 0;
+  table >> first >> count;
+  REQUIRE(first == 0);
+  std::vector<std::size_t> offset(count, 0);
+  std::string line;
+  std::getline(table, line);
+  for(std::size_t i = 0; i < count; ++i)
+  {
+    std::getline(table, line);
+    REQUIRE(line.size() == 19); // 20 bytes with the newline
+    offset[i] = std::stoul(line.substr(0, 10));
+    if(i > 0)
+    {
+      const std::string head = std::to_string(i) + " 0 obj";
+      CHECK(doc.compare(offset[i], head.size(), head) == 0);
+    }
+  }
+  auto object = [&](std::size_t i) {
+    REQUIRE(i < count);
+    const std::size_t end = doc.find("endobj", offset[i]);
+    REQUIRE(end != std::string::npos);
+    return doc.substr(offset[i], end - offset[i]);
+  };
+  auto reference = [](const std::string& text, const std::string& key) {
+    const std::size_t at = text.find(key);
+    REQUIRE(at != std::string::npos);
+    return std::size_t(std::stoul(text.substr(at + key.size())));
+  };
+  const std::string tree = object(reference(object(1), "/Pages "));
+  const std::size_t open = tree.find("/Kids [") + 7, close = tree.find(']', open);
+  std::istringstream kids(tree.substr(open, close - open));
+  std::vector<std::vector<Pdf_path>> out;
+  const double pt = 72. / 25.4;
+  std::size_t kid, zero;
+  std::string r;
+  while(kids >> kid >> zero >> r)
+  {
+    const std::size_t page = out.size();
+    out.emplace_back();
+    const std::string content = object(reference(object(kid), "/Contents "));
+    const std::size_t length = reference(content, "/Length ");
+    const std::size_t start = content.find("stream\n") + 7;
+    REQUIRE(content.size() >= start + length + 9);
+    CHECK(content.compare(start + length, 9, "endstream") == 0);
+    std::istringstream ops(content.substr(start, length));
+    std::vector<std::string> operands;
+    std::string token, fill;
+    Pdf_path path;
+    while(ops >> token)
+    {
+      if(token == "rg" && operands.size() >= 3)
+        fill = operands[operands.size() - 3] + ' ' + operands[operands.size() - 2] + ' ' + operands.back();
+      else if((token == "m" || token == "l") && operands.size() >= 2)
+        path.points.emplace_back(std::stod(operands[operands.size() - 2]) / pt + double(page) * (sheet_width + sheet_gap),
+                                 sheet_height - std::stod(operands.back()) / pt);
+      else if(token == "B" || token == "f" || token == "S" || token == "n")
+      {
+        path.fill = fill;
+        path.paint = token;
+        out.back().push_back(path);
+        path = Pdf_path();
+      }
+      else if(token == "Q")
+        fill.clear();
+      if(token.find_first_not_of("0123456789.-") == std::string::npos)
+        operands.push_back(token);
+      else
+        operands.clear();
+    }
+  }
+  return out;
+}
+
 // Whether the open segments ab and cd cross at a single interior point (strictly: touching or
 // sharing an end point does not count).
 bool cross_properly(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c, const Eigen::Vector2d& d)
@@ -1081,6 +1463,45 @@ TEMPLATE_TEST_CASE("Glue tabs overlap no piece and no other tab", "[flattening][
     const auto piece_outlines = svg_polygons(root, "cuts");
     const auto tabs = svg_polygons(root, "tabs");
     CHECK(tabs.size() == r.glue_tabs);
+    // the PDF: the same piece outlines and tabs, one page per sheet
+    {
+      std::ostringstream pdf;
+      const SD::Fabrication_pattern_report same =
+        SD::write_fabrication_pattern_pdf(pdf, pieces, boost::make_assoc_property_map(uv), layout,
+                                          P::seam_vertex_index_map(boost::make_assoc_property_map(seam_index)));
+      CHECK(same.glue_tabs == r.glue_tabs);
+      const auto pages = read_pdf(pdf.str(), layout.sheet_width, layout.sheet_gap, layout.sheet_height);
+      CHECK(pages.size() == layout.sheets);
+      std::vector<std::vector<Eigen::Vector2d>> pdf_outlines, pdf_tabs;
+      for(const auto& page : pages)
+        for(const Pdf_path& path : page)
+        {
+          if(path.paint == "B")
+            pdf_outlines.push_back(path.points); // filled and stroked: the pieces
+          if(path.paint == "f" && path.fill == "0.8667 0.9059 0.9529")
+            pdf_tabs.push_back(path.points);
+        }
+      REQUIRE(pdf_outlines.size() == piece_outlines.size());
+      REQUIRE(pdf_tabs.size() == tabs.size());
+      // the pages list the polygons sheet by sheet: match them by their first points
+      auto difference = [](const std::vector<std::vector<Eigen::Vector2d>>& a,
+                           const std::vector<std::vector<Eigen::Vector2d>>& b) {
+        double worst = 0.;
+        for(const auto& polygon : a)
+        {
+          const auto match = std::min_element(b.begin(), b.end(), [&](const auto& x, const auto& y) {
+            return (x.front() - polygon.front()).norm() < (y.front() - polygon.front()).norm();
+          });
+          if(match->size() != polygon.size())
+            return 1e300;
+          for(std::size_t i = 0; i < polygon.size(); ++i)
+            worst = (std::max)(worst, (polygon[i] - (*match)[i]).norm());
+        }
+        return worst;
+      };
+      CHECK(difference(piece_outlines, pdf_outlines) <= 2e-3); // 3 decimals of mm in the SVG, of points in the PDF
+      CHECK(difference(tabs, pdf_tabs) <= 2e-3);
+    }
     CHECK(overlaps(tabs, piece_outlines, false) == 0);
     CHECK(overlaps(tabs, tabs, true) == 0);
     // inside the margins of a sheet (SVG y points down; the sheets side by side)
@@ -1211,6 +1632,16 @@ TEMPLATE_TEST_CASE("Bad input to cutting and flattening throws clear exceptions"
   CHECK_THROWS_AS(SD::compute_developable_cut(disk, std::back_inserter(cut), P::cut_edge_cost(SD::Developable_cut_cost(9))),
                   SD::Invalid_parameter);
   CHECK(cut.empty());
+  {
+    const std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> some{*edges(disk).begin()};
+    CHECK_THROWS_AS(SD::glue_flattening_cracks(disk, some, std::back_inserter(cut), P::crack_opening_bound(-1.)),
+                    SD::Invalid_parameter);
+    CHECK_THROWS_AS(SD::glue_flattening_cracks(disk, some, std::back_inserter(cut), P::crack_opening_bound(nan)),
+                    SD::Invalid_parameter);
+    CHECK_THROWS_AS(SD::glue_flattening_cracks(disk, some, std::back_inserter(cut), P::distortion_bound(-1.)),
+                    SD::Invalid_parameter);
+    CHECK(cut.empty());
+  }
   SD::Boundary_first_flattener<Mesh> flattener(disk);
   std::map<Vertex<Mesh>, double> values;
   for(auto v : vertices(disk))
@@ -1261,6 +1692,10 @@ TEMPLATE_TEST_CASE("Bad input to cutting and flattening throws clear exceptions"
   std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> foreign{*edges(other).begin()};
   Mesh out;
   if constexpr(!std::is_same<Mesh, test::Surface_mesh>::value) // Surface_mesh edges are plain indices
+  {
     CHECK_THROWS_AS(SD::cut_mesh_along_edges(disk, foreign, out), SD::Invalid_constraints);
+    CHECK_THROWS_AS(SD::glue_flattening_cracks(disk, foreign, std::back_inserter(cut)), SD::Invalid_constraints);
+    CHECK(cut.empty());
+  }
   CHECK(num_vertices(out) == 0);
 }

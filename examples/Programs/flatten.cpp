@@ -44,6 +44,9 @@ const char* usage =
   "  --alignment W         weight of the alignment of cuts with the rulings (default 1; 0: shortest)\n"
   "  --cut-cost C          ruling (default: |e| (1 + W misalignment), cuts along the rulings) or\n"
   "                        paper (|e| times the alignment, sec. 4.4 literally: cuts across them)\n"
+  "  --glue-cracks DEG     glue the cracks of the cut: its dangling branches whose two sides open by\n"
+  "                        at most DEG degrees in the flattening (sec. 4.4, Fig. 19), as long as the\n"
+  "                        distortion bound holds, and flatten again (default: none glued)\n"
   "  --no-cut              flatten the input as it is: every component must be a disk\n"
   "  --no-split            keep pieces whose flattening overlaps itself (default: split them in\n"
   "                        two between the overlapping parts and flatten again, until none does)\n"
@@ -59,7 +62,8 @@ const char* usage =
   "  --output PIECES.obj   the cut mesh: v = 3-D positions of the input's vertices, vt = the laid-out\n"
   "                        2-D positions (model units) of every corner, f v/vt; required\n"
   "  --pattern PATTERN.svg the cutting pattern in mm: cut lines, fold lines, seam numbers matching\n"
-  "                        across pieces, a scale bar per sheet; required\n"
+  "                        across pieces, a scale bar per sheet; PATTERN.pdf: the same, one page per\n"
+  "                        sheet, to print at 100%; required\n"
   "  --picture OUT.png     the design with its cuts (left) and the pattern coloured by the log of\n"
   "                        the area scale, blue -0.05 .. white 0 .. red +0.05 (right)\n"
   "  --up +Y|+Z|...        up direction of the design in the picture (default +Y)\n";
@@ -70,6 +74,7 @@ struct Options
   double epsilon = 1e-3, alignment = 1., margin = 10., fold_angle = 5., scale = 0.;
   double distortion_bound = -1.; // -1: 10 epsilon
   double glue_tabs = 0.;
+  double crack_opening = -1.; // degrees; < 0: no gluing
   SD::Developable_cut_cost cut_cost = SD::Developable_cut_cost::ruling_alignment;
   double sheet_width = 210., sheet_height = 297.;
   bool cut = true, split = true;
@@ -90,6 +95,8 @@ Options parse(int argc, char** argv)
                             : SD::Developable_cut_cost::ruling_alignment;
            })
     .value("--alignment", [&](const std::string& v) { o.alignment = program::parse_double(v, "--alignment", 0., 1e3); })
+    .value("--glue-cracks",
+           [&](const std::string& v) { o.crack_opening = program::parse_double(v, "--glue-cracks", 0., 90.); })
     .flag("--no-cut", [&] { o.cut = false; })
     .flag("--no-split", [&] { o.split = false; })
     .value("--sheet",
@@ -106,17 +113,17 @@ Options parse(int argc, char** argv)
     .value("--fold-angle", [&](const std::string& v) { o.fold_angle = program::parse_double(v, "--fold-angle", 0., 180.); })
     .solver(o.solver)
     .output("--output", o.output, {".obj"})
-    .output("--pattern", o.pattern, {".svg"})
+    .output("--pattern", o.pattern, {".svg", ".pdf"})
     .picture(o.picture, o.up)
     .parse(argc, argv);
   if(o.output.empty())
     throw program::Usage_error("--output PIECES.obj is required");
   if(o.pattern.empty())
-    throw program::Usage_error("--pattern PATTERN.svg is required");
+    throw program::Usage_error("--pattern PATTERN.svg (or .pdf) is required");
   if(!o.cut && (p.given("--epsilon") || p.given("--alignment") || p.given("--no-split") || p.given("--distortion-bound") ||
-                 p.given("--cut-cost")))
-    throw program::Usage_error("--epsilon, --distortion-bound, --alignment, --cut-cost and --no-split apply to the cut, "
-                               "not to --no-cut");
+                 p.given("--cut-cost") || p.given("--glue-cracks")))
+    throw program::Usage_error("--epsilon, --distortion-bound, --alignment, --cut-cost, --glue-cracks and --no-split "
+                               "apply to the cut, not to --no-cut");
   if(p.given("--alignment") && o.cut_cost == SD::Developable_cut_cost::paper)
     throw program::Usage_error("--alignment weighs the ruling cost; --cut-cost paper has no weight");
   if(o.distortion_bound < 0.)
@@ -261,13 +268,6 @@ int run(const Options& o, Traits traits)
       input, std::back_inserter(cut),
       P::cut_tolerance(o.epsilon, P::ruling_alignment_weight(o.alignment, P::distortion_bound(o.distortion_bound, P::cut_edge_cost(o.cut_cost))))
         .sparse_linear_solver(traits));
-    for(auto e : cut)
-      cut_edge[std::size_t(e)] = true;
-    std::vector<std::pair<Mesh::Vertex_index, Mesh::Vertex_index>> pairs;
-    SD::cut_mesh_along_edges(input, cut, pieces, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(pairs)));
-    original.resize(num_vertices(pieces));
-    for(const auto& [in, out] : pairs)
-      original[std::size_t(out)] = in;
     std::printf("cut (epsilon %.3g): %zu terminals (largest lambda %.3g), %zu boundary loops, %zu generator loops; "
                 "%zu edges, length %.4g -> %zu pieces (%.3f s)\n",
                 o.epsilon, r.terminals, r.lambda_max, r.boundary_loops, r.generator_loops, r.cut_edges, r.cut_length,
@@ -283,6 +283,26 @@ int run(const Options& o, Traits traits)
                                  " rounds (largest |log area scale| " + program::text(r.largest_log_area_scale) +
                                  "); no output written");
     }
+    if(o.crack_opening >= 0.)
+    {
+      std::vector<Mesh::Edge_index> glued;
+      const SD::Crack_gluing_result g = SD::glue_flattening_cracks(
+        input, cut, std::back_inserter(glued),
+        P::crack_opening_bound(o.crack_opening * CGAL_PI / 180., P::distortion_bound(o.distortion_bound))
+          .sparse_linear_solver(traits));
+      std::printf("glued %zu edges of %zu cracks in %zu rounds: cut %zu edges, length %.4g; largest |log area scale| "
+                  "%.3g (%.3g before) (%.3f s)\n",
+                  g.glued_edges, g.cracks, g.rounds, g.cut_edges, g.cut_length, g.largest_log_area_scale,
+                  g.largest_log_area_scale_before, clock.lap() / 1000.);
+      cut = std::move(glued);
+    }
+    for(auto e : cut)
+      cut_edge[std::size_t(e)] = true;
+    std::vector<std::pair<Mesh::Vertex_index, Mesh::Vertex_index>> pairs;
+    SD::cut_mesh_along_edges(input, cut, pieces, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(pairs)));
+    original.resize(num_vertices(pieces));
+    for(const auto& [in, out] : pairs)
+      original[std::size_t(out)] = in;
   }
   else
   {
@@ -364,12 +384,14 @@ int run(const Options& o, Traits traits)
   program::Output_files outputs;
   write_obj(outputs.stage(o.output), input, pieces, original, uv);
   {
-    std::ofstream svg(outputs.stage(o.pattern));
-    const SD::Fabrication_pattern_report drawn = SD::write_fabrication_pattern_svg(
-      svg, pieces, uv, layout,
-      P::seam_vertex_index_map(boost::make_assoc_property_map(seam_index), P::fold_angle(o.fold_angle * CGAL_PI / 180.)));
-    svg.flush();
-    if(!svg)
+    std::ofstream pattern(outputs.stage(o.pattern), std::ios::binary);
+    const auto np =
+      P::seam_vertex_index_map(boost::make_assoc_property_map(seam_index), P::fold_angle(o.fold_angle * CGAL_PI / 180.));
+    const bool pdf = o.pattern.size() >= 4 && o.pattern.compare(o.pattern.size() - 4, 4, ".pdf") == 0;
+    const SD::Fabrication_pattern_report drawn = pdf ? SD::write_fabrication_pattern_pdf(pattern, pieces, uv, layout, np)
+                                                     : SD::write_fabrication_pattern_svg(pattern, pieces, uv, layout, np);
+    pattern.flush();
+    if(!pattern)
       throw std::runtime_error("writing " + o.pattern + " failed (disk full?)");
     if(o.glue_tabs > 0.)
       std::printf("glue tabs: %zu of %zu seams (%zu narrowed to fit, %zu left out: no room)\n", drawn.glue_tabs,

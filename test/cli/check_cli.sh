@@ -210,11 +210,12 @@ D="$DATA/pebble_design.off"
 for args in "--epsilon -1" "--epsilon nan" "--epsilon 1x" "--alignment -2" "--sheet 210" "--sheet 210x" "--sheet x297" \
             "--sheet 5x5" "--sheet 210x297x3" "--scale 0" "--scale -1" "--scale nan" "--margin 200" "--margin -1" \
             "--fold-angle 200" "--fold-angle nan" "--solver magic" "--no-cut --epsilon 0.01" "--up +Z" \
-            "--epsilon 0.1 --epsilon 0.2" "--output $O/p.off" "--pattern $O/p.pdf" "--picture $O/p.jpg" "--bogus" \
+            "--epsilon 0.1 --epsilon 0.2" "--output $O/p.off" "--pattern $O/p.ps" "--picture $O/p.jpg" "--bogus" \
             "--scale 1e6" "--no-cut --no-split" "--no-split --no-split" "--distortion-bound -1" \
             "--distortion-bound nan" "--no-cut --distortion-bound 0.01" "--cut-cost magic" \
             "--cut-cost paper --alignment 2" "--no-cut --cut-cost paper" "--glue-tabs -1" "--glue-tabs nan" \
-            "--glue-tabs 60"; do
+            "--glue-tabs 60" "--glue-cracks -1" "--glue-cracks nan" "--glue-cracks 91" "--glue-cracks" \
+            "--no-cut --glue-cracks 1"; do
   # shellcheck disable=SC2086
   refuse flatten "$D" $args --output "$O/p.obj" --pattern "$O/p.svg"
 done
@@ -233,6 +234,24 @@ accept flatten "$D" --glue-tabs 5 --output "$O/ok.obj" --pattern "$O/ok.svg"
 if ! grep -q "^glue tabs: [1-9][0-9]* of " "$WORK/stdout"; then
   echo "FAILED: flatten --glue-tabs drew no tab: $(grep -E "glue" "$WORK/stdout")"
   failures=$((failures + 1))
+fi
+accept flatten "$D" --glue-cracks 1 --output "$O/ok.obj" --pattern "$O/ok.svg"
+if ! grep -q "^glued [1-9][0-9]* edges of " "$WORK/stdout"; then
+  echo "FAILED: flatten --glue-cracks glued nothing: $(grep -E "glued" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
+# the pattern as PDF: one page per sheet, which poppler reads (when installed: scripts/test.sh does)
+accept flatten "$D" --glue-tabs 5 --output "$O/ok.obj" --pattern "$O/ok.pdf"
+sheets=$(sed -n 's/^pattern: \([0-9]*\) sheet(s).*/\1/p' "$WORK/stdout")
+if [ ! -s "$O/ok.pdf" ] || [ -z "$sheets" ]; then
+  echo "FAILED: flatten --pattern ok.pdf wrote no PDF"
+  failures=$((failures + 1))
+elif command -v pdfinfo > /dev/null; then
+  pages=$(pdfinfo "$O/ok.pdf" 2> "$WORK/pdfinfo.err" | sed -n 's/^Pages: *//p')
+  if [ "$pages" != "$sheets" ] || [ -s "$WORK/pdfinfo.err" ]; then
+    echo "FAILED: pdfinfo reads $pages page(s) of $sheets sheet(s): $(cat "$WORK/pdfinfo.err")"
+    failures=$((failures + 1))
+  fi
 fi
 accept flatten "$D" --no-split --output "$O/ok.obj" --pattern "$O/ok.svg"
 if grep -q "^split " "$WORK/stdout" || grep -q " 0 piece(s) overlapping themselves" "$WORK/stdout"; then

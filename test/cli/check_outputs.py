@@ -5,6 +5,7 @@ is not empty, and parses completely:
 - OFF, OBJ, PLY (ASCII or binary little-endian): the counts of the header are the elements in
   the file, every coordinate is finite, every face has at least 3 vertices, all within range;
 - SVG: well-formed XML whose root is <svg> with at least one drawn element;
+- PDF: every cross-reference offset at its object, every stream as long as its /Length, a page;
 - VTK (legacy ASCII POLYDATA, the pictures' surface files): the counts of POINTS, POLYGONS and
   POINT_DATA are the values given, every number finite, every polygon's indices within range;
 - PNG: the signature, an IHDR chunk of non-zero size, and an IEND chunk, every chunk CRC correct;
@@ -286,6 +287,42 @@ def check_png(data):
     return size
 
 
+def check_pdf(data):
+    """An uncompressed PDF with a classic cross-reference table: every offset at its object, every
+    stream as long as its /Length, startxref at the table. Returns (pages, objects)."""
+    if not data.startswith(b"%PDF-1."):
+        raise Bad("no PDF header")
+    tail = data.rstrip()
+    if not tail.endswith(b"%%EOF"):
+        raise Bad("no %%EOF at the end")
+    start = data.rfind(b"startxref")
+    xref = int(data[start + 9:].split()[0])
+    if data[xref:xref + 4] != b"xref":
+        raise Bad(f"startxref {xref} does not point at the cross-reference table")
+    lines = data[xref:].split(b"\n")
+    first, count = (int(x) for x in lines[1].split())
+    if first != 0:
+        raise Bad("the cross-reference table does not start at object 0")
+    for i in range(1, count):
+        offset = int(lines[2 + i][:10])
+        if not data[offset:].startswith(b"%d 0 obj" % i):
+            raise Bad(f"object {i} is not at its offset {offset}")
+    at = 0
+    while True:
+        at = data.find(b"/Length ", at)
+        if at < 0:
+            break
+        length = int(data[at + 8:].split()[0])
+        begin = data.find(b"stream\n", at) + 7
+        if data[begin + length:begin + length + 9] != b"endstream":
+            raise Bad(f"a stream is not {length} bytes long")
+        at = begin + length
+    pages = data.count(b"/Type /Page ") + data.count(b"/Type /Page\n")
+    if pages == 0:
+        raise Bad("no page")
+    return pages, count - 1
+
+
 def check_text(data):
     data.decode()
     return 0, 0
@@ -298,7 +335,7 @@ def check(path):
     if not data:
         raise Bad("empty")
     ext = os.path.splitext(path)[1].lower()
-    checkers = {".off": check_off, ".obj": check_obj, ".ply": check_ply, ".svg": check_svg, ".png": check_png, ".vtk": check_vtk,
+    checkers = {".off": check_off, ".obj": check_obj, ".ply": check_ply, ".svg": check_svg, ".pdf": check_pdf, ".png": check_png, ".vtk": check_vtk,
                 ".txt": check_text, ".csv": check_text, ".json": lambda d: (json.loads(d), 0)}
     if ext not in checkers:
         raise Bad(f"no reader for {ext} files")
@@ -329,7 +366,19 @@ def self_test():
     vtk = b"# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0\n1 0 0\n0 1 0\n" \
         b"POLYGONS 1 4\n3 0 1 2\nPOINT_DATA 3\nSCALARS z float 1\nLOOKUP_TABLE default\n0\n1\n2\n" \
         b"NORMALS normals float\n0 0 1\n0 0 1\n0 0 1\n"
+    def pdf(shift=0, length_error=0):
+        objects = [b"<< /Type /Catalog /Pages 2 0 R >>", b"<< /Type /Pages /Kids [3 0 R] /Count 1 >>",
+                   b"<< /Type /Page /Parent 2 0 R /MediaBox [0 0 10 10] /Contents 4 0 R >>",
+                   b"<< /Length %d >>\nstream\n0 0 m 1 1 l S\nendstream" % (14 + length_error)]
+        out, offsets = b"%PDF-1.4\n", []
+        for i, body in enumerate(objects, 1):
+            offsets.append(len(out))
+            out += b"%d 0 obj\n" % i + body + b"\nendobj\n"
+        xref = len(out)
+        out += b"xref\n0 5\n0000000000 65535 f \n" + b"".join(b"%010d 00000 n \n" % (o + shift) for o in offsets)
+        return out + b"trailer\n<< /Size 5 /Root 1 0 R >>\nstartxref\n%d\n%%%%EOF\n" % xref
     good = {"a.off": b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+            "a.pdf": pdf(),
             "b.off": b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 255 0 0\n",
             "a.obj": b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
             "lines.obj": b"v 0 0 0\nv 1 0 0\nv 0 1 0\ng level_0\nl 1 2 3 1\n",
@@ -353,6 +402,9 @@ def self_test():
            "long.ply": ply_header + ply_body + b"\0",
            "open.svg": b"<svg xmlns='http://www.w3.org/2000/svg'><path d='M0 0L1 1'/>",
            "blank.svg": b"<svg xmlns='http://www.w3.org/2000/svg'></svg>",
+           "offset.pdf": pdf(shift=1),
+           "length.pdf": pdf(length_error=2),
+           "truncated.pdf": pdf()[:-20],
            "cut.png": png[:-12],
            "crc.png": png[:20] + bytes([png[20] ^ 1]) + png[21:],
            "range.vtk": vtk.replace(b"3 0 1 2", b"3 0 1 3"),

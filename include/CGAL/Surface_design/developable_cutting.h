@@ -12,6 +12,7 @@
 #include <CGAL/Surface_design/internal/Core/cut_mesh.h>
 #include <CGAL/Surface_design/internal/Core/named_parameters.h>
 #include <CGAL/Surface_design/internal/Core/validation.h>
+#include <CGAL/Surface_design/internal/Developability/crack_gluing.h>
 #include <CGAL/Surface_design/internal/Developability/cut_graph.h>
 #include <CGAL/Surface_design/parameters.h>
 
@@ -232,6 +233,139 @@ Developable_cut_result compute_developable_cut(const TriangleMesh& tm, EdgeOutpu
 }
 
 /// \ingroup PkgDevelopabilityRef
+/// What `glue_flattening_cracks()` glued.
+struct Crack_gluing_result
+{
+  std::size_t cracks = 0;      ///< dangling branches of the cut glued, in part or whole (over all rounds)
+  std::size_t glued_edges = 0; ///< cut edges glued
+  std::size_t rounds = 0;      ///< rounds of flattening again that glued something
+  std::size_t cut_edges = 0;   ///< edges of the glued cut
+  double cut_length = 0.;      ///< total length of the glued cut
+  /// largest |log area scale| 2 |u_i| of the conformal flattening keeping the cut's lengths, with
+  /// the cut given and with the glued cut
+  double largest_log_area_scale_before = 0., largest_log_area_scale = 0.;
+};
+
+/// \ingroup PkgDevelopabilityRef
+///
+/// Glues the small cracks of a flattening and flattens again, until none is left (Stein,
+/// Grinspun & Crane 2018, sec. 4.4 and Fig. 19, bottom): a shorter cut whose pieces lay out with
+/// fewer, longer seams.
+///
+/// **Cracks.** A cut through every vertex far from developable also passes through vertices
+/// whose curvature is small, for example along the seams between developable patches (where
+/// lambda_i is large but the angle defect is not): there its two sides barely open in the plane.
+/// A crack is a dangling branch of the cut, from its tip (a vertex with one cut edge, off the
+/// border) along vertices with two cut edges. In the conformal flattening that keeps the cut's
+/// lengths (u_i the log scale factor, u = 0 on the cut: Boundary First Flattening with u_B = 0),
+/// the sides of a crack leave its tip v_0 at the angle delta_0 and turn apart by delta_i at each
+/// v_i, delta_i = K_i + (A u)_i (the angle defect, plus the cotangent Laplacian of u: what the
+/// flattening's angle sum at v_i lacks of 2 pi). The crack opens at v_j by Phi_j = delta_0 + ... +
+/// delta_j, and its edges from the tip up to where |Phi| first exceeds `crack_opening_bound` are
+/// glued (removed from the cut). With `distortion_bound` B, the glue must keep the largest
+/// |log area scale| 2 |u_i| of the new flattening at most max(B, its value before): else the half
+/// of the edges with the widest openings is left, until the rest passes. Then the flattening is
+/// computed again and the cracks' new tips are glued, until a round glues nothing. Only
+/// dangling edges are glued, so every piece keeps its topology (a disk stays a disk); a
+/// connected part of the cut that does not reach the border keeps two edges.
+///
+/// \param tm a triangle mesh (validated: manifold, no degenerate face, finite coordinates)
+/// \param cut a range of `edge_descriptor`s of `tm` (normally from `compute_developable_cut()`;
+///        border edges are ignored)
+/// \param glued_cut output iterator receiving the `edge_descriptor`s of the glued cut
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as
+///                    value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{crack_opening_bound}
+///     \cgalParamDescription{the largest angle (radians) by which the two sides of a crack may open in the
+///                           flattening where it is glued}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`0.02` (about 1 degree)}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is negative or not finite}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{distortion_bound}
+///     \cgalParamDescription{B > 0: glue only as long as the flattening distorts no area by more than
+///                           max(B, what the cut given distorts) (|log area scale| = 2 |u_i|); 0: no bound}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`0`}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is negative or not finite}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{sparse_linear_solver}
+///     \cgalParamDescription{the solver of the flattenings (symmetric positive definite systems)}
+///     \cgalParamType{a model of `SparseLinearAlgebraWithFactorTraits_d`}
+///     \cgalParamDefault{`Default_solver_traits`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{as in `compute_developable_cut()`}
+///     \cgalParamType{as in `compute_developable_cut()`}
+///     \cgalParamDefault{the mesh's own}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{halfedge_index_map}
+///     \cgalParamDescription{as in `compute_developable_cut()`}
+///     \cgalParamType{as in `compute_developable_cut()`}
+///     \cgalParamDefault{the mesh's own}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_index_map}
+///     \cgalParamDescription{as in `compute_developable_cut()`}
+///     \cgalParamType{as in `compute_developable_cut()`}
+///     \cgalParamDefault{the order of `edges(tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{as in `compute_developable_cut()`}
+///     \cgalParamType{as in `compute_developable_cut()`}
+///     \cgalParamDefault{the mesh's own}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns what was glued
+/// \throws Invalid_mesh, Invalid_parameter, Invalid_constraints (an edge of `cut` is not an edge of
+///         `tm`), Linear_solver_failure; nothing is written then
+/// Complexity: per round, one factorization of the Laplacian of the vertices off the cut, and
+/// one more each time the candidates are halved.
+template <class TriangleMesh, class EdgeRange, class EdgeOutputIterator,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Crack_gluing_result glue_flattening_cracks(const TriangleMesh& tm, const EdgeRange& cut, EdgeOutputIterator glued_cut,
+                                           const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  internal::Crack_gluing_options o;
+  o.opening_bound = internal::require_nonnegative(
+    "crack_opening_bound", choose_parameter(get_parameter(np, internal_np::crack_opening_bound), 0.02));
+  o.distortion_bound = internal::require_nonnegative(
+    "distortion_bound", choose_parameter(get_parameter(np, internal_np::distortion_bound), 0.));
+  const auto vpm = internal::const_vertex_point_map(tm, np);
+  const internal::Mesh_indices<TriangleMesh> idx(tm, np);
+  internal::validate_mesh(idx, vpm);
+  const internal::Crack_gluing g =
+    internal::glue_cracks(idx, vpm, internal::edge_flags(idx, cut), o, internal::solver_traits(np));
+  Crack_gluing_result r;
+  r.cracks = g.cracks;
+  r.glued_edges = g.glued_edges;
+  r.rounds = g.rounds;
+  r.largest_log_area_scale_before = g.largest_log_area_scale_before;
+  r.largest_log_area_scale = g.largest_log_area_scale;
+  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+    if(g.edge_is_cut[e])
+    {
+      ++r.cut_edges;
+      const auto ab = idx.edge_vertices(e);
+      r.cut_length += (internal::position(vpm, idx.vertex(ab.first)) - internal::position(vpm, idx.vertex(ab.second))).norm();
+    }
+  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+    if(g.edge_is_cut[e])
+      *glued_cut++ = idx.edge(e);
+  return r;
+}
+
+/// \ingroup PkgDevelopabilityRef
 ///
 /// Copies `tm` into `out` cut open along `edges`: every vertex becomes one vertex per fan of its
 /// faces between cut or border edges, so each cut edge becomes two boundary edges. An uncut mesh
@@ -339,18 +473,7 @@ std::size_t cut_mesh_along_edges(const TriangleMesh& tm, const EdgeRange& edges,
   const auto vpm = internal::const_vertex_point_map(tm, np_in);
   const internal::Mesh_indices<TriangleMesh> idx(tm, np_in);
   internal::validate_mesh(idx, vpm);
-  std::vector<bool> edge_is_cut(idx.number_of_edges(), false);
-  for(const auto& e : edges)
-  {
-    const auto h = CGAL::halfedge(e, tm);
-    const auto s = source(h, tm), t = target(h, tm);
-    const auto found = idx.find(s) != internal::npos && idx.find(t) != internal::npos
-                         ? CGAL::halfedge(s, t, tm)
-                         : std::make_pair(h, false);
-    if(!found.second)
-      throw Invalid_constraints("an edge to cut is not an edge of the mesh");
-    edge_is_cut[idx.edge_index(found.first)] = true;
-  }
+  const std::vector<bool> edge_is_cut = internal::edge_flags(idx, edges);
   const internal::Cut_corners corners = internal::cut_corners(idx, edge_is_cut);
   const internal::Cut_topology topology = internal::cut_topology(idx, edge_is_cut, corners);
   const std::vector<std::array<std::size_t, 3>> faces = internal::cut_faces(idx, corners);

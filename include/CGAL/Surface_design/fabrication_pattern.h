@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The CGAL Surface Design authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Fabrication patterns: flattened pieces laid out without overlap on sheets, written as SVG with
-// cut lines, fold lines, matching seam labels and a scale bar.
+// Fabrication patterns: flattened pieces laid out without overlap on sheets, written as SVG or PDF
+// with cut lines, fold lines, matching seam labels, glue tabs and a scale bar.
 
 #ifndef CGAL_SURFACE_DESIGN_FABRICATION_PATTERN_H
 #define CGAL_SURFACE_DESIGN_FABRICATION_PATTERN_H
@@ -214,6 +214,61 @@ Fabrication_layout lay_out_flattened_pieces(const TriangleMesh& tm, UVMap uv,
   return layout;
 }
 
+namespace internal {
+
+// The drawing of write_fabrication_pattern_svg() and write_fabrication_pattern_pdf(), validated
+// before anything is written.
+template <class TriangleMesh, class UVMap, class NamedParameters>
+Fabrication_pattern_report draw_fabrication_pattern(const TriangleMesh& tm, const UVMap& uv,
+                                                    const Fabrication_layout& layout, const NamedParameters& np,
+                                                    Pattern_scene& scene)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const double fold_angle = require_in_range(
+    "fold_angle", choose_parameter(get_parameter(np, internal_np::fold_angle), 5. * pi / 180.), 0., pi);
+  const auto vpm = const_vertex_point_map(tm, np);
+  const Mesh_indices<TriangleMesh> idx(tm, np);
+  Pattern_drawing drawing;
+  drawing.layout.sheet_width = layout.sheet_width;
+  drawing.layout.sheet_height = layout.sheet_height;
+  drawing.layout.margin = layout.margin;
+  drawing.layout.sheet_gap = layout.sheet_gap;
+  drawing.layout.scale = layout.scale;
+  drawing.layout.sheets = layout.sheets;
+  drawing.layout.tab = require_nonnegative("Fabrication_layout::glue_tab_width", layout.glue_tab_width);
+  drawing.fold_angle = fold_angle;
+  const std::size_t nv = idx.number_of_vertices();
+  drawing.uv = plane_coordinates(idx, uv);
+  drawing.position.resize(nv);
+  for(std::size_t v = 0; v < nv; ++v)
+    drawing.position[v] = position(vpm, idx.vertex(v));
+  const auto seam_map = get_parameter(np, internal_np::seam_vertex_index_map);
+  if constexpr(!std::is_same<std::decay_t<decltype(seam_map)>, CGAL::internal_np::Param_not_found>::value)
+  {
+    drawing.original.resize(nv);
+    for(std::size_t v = 0; v < nv; ++v)
+      drawing.original[v] = std::size_t(get(seam_map, idx.vertex(v)));
+  }
+  const auto& mesh = idx.mesh();
+  drawing.faces.resize(idx.number_of_faces());
+  for(std::size_t f = 0; f < drawing.faces.size(); ++f)
+  {
+    auto h = halfedge(idx.face(f), mesh);
+    for(std::size_t k = 0; k < 3; ++k, h = next(h, mesh))
+      drawing.faces[f][k] = idx.target_index(h);
+  }
+  const Pattern_report r = draw_pattern(drawing, scene);
+  Fabrication_pattern_report report;
+  report.seams = r.seams;
+  report.glue_tabs = r.tabs;
+  report.narrowed_glue_tabs = r.narrowed_tabs;
+  report.omitted_glue_tabs = r.omitted_tabs;
+  return report;
+}
+
+} // namespace internal
+
 /// \ingroup PkgFlatteningRef
 ///
 /// Writes the cutting pattern of laid-out pieces (`lay_out_flattened_pieces()`) as SVG, in
@@ -311,47 +366,27 @@ Fabrication_pattern_report write_fabrication_pattern_svg(std::ostream& os, const
                                    const Fabrication_layout& layout,
                                    const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const double fold_angle = internal::require_in_range(
-    "fold_angle", choose_parameter(get_parameter(np, internal_np::fold_angle), 5. * internal::pi / 180.), 0., internal::pi);
-  const auto vpm = internal::const_vertex_point_map(tm, np);
-  const internal::Mesh_indices<TriangleMesh> idx(tm, np);
-  internal::Pattern_drawing drawing;
-  drawing.layout.sheet_width = layout.sheet_width;
-  drawing.layout.sheet_height = layout.sheet_height;
-  drawing.layout.margin = layout.margin;
-  drawing.layout.sheet_gap = layout.sheet_gap;
-  drawing.layout.scale = layout.scale;
-  drawing.layout.sheets = layout.sheets;
-  drawing.layout.tab = internal::require_nonnegative("Fabrication_layout::glue_tab_width", layout.glue_tab_width);
-  drawing.fold_angle = fold_angle;
-  const std::size_t nv = idx.number_of_vertices();
-  drawing.uv = internal::plane_coordinates(idx, uv);
-  drawing.position.resize(nv);
-  for(std::size_t v = 0; v < nv; ++v)
-    drawing.position[v] = internal::position(vpm, idx.vertex(v));
-  const auto seam_map = get_parameter(np, internal_np::seam_vertex_index_map);
-  if constexpr(!std::is_same<std::decay_t<decltype(seam_map)>, CGAL::internal_np::Param_not_found>::value)
-  {
-    drawing.original.resize(nv);
-    for(std::size_t v = 0; v < nv; ++v)
-      drawing.original[v] = std::size_t(get(seam_map, idx.vertex(v)));
-  }
-  const auto& mesh = idx.mesh();
-  drawing.faces.resize(idx.number_of_faces());
-  for(std::size_t f = 0; f < drawing.faces.size(); ++f)
-  {
-    auto h = halfedge(idx.face(f), mesh);
-    for(std::size_t k = 0; k < 3; ++k, h = next(h, mesh))
-      drawing.faces[f][k] = idx.target_index(h);
-  }
-  const internal::Pattern_report r = internal::write_pattern_svg(os, drawing);
-  Fabrication_pattern_report report;
-  report.seams = r.seams;
-  report.glue_tabs = r.tabs;
-  report.narrowed_glue_tabs = r.narrowed_tabs;
-  report.omitted_glue_tabs = r.omitted_tabs;
+  internal::Pattern_scene scene;
+  const Fabrication_pattern_report report = internal::draw_fabrication_pattern(tm, uv, layout, np, scene);
+  internal::write_scene_svg(os, scene);
+  return report;
+}
+
+/// \ingroup PkgFlatteningRef
+///
+/// Writes the cutting pattern of `write_fabrication_pattern_svg()` as a PDF document, one page
+/// per sheet at the sheet's size, ready to print at 100%: the same cut lines, fold lines, piece
+/// and seam numbers, glue tabs and scale bars, in the same colours (PDF 1.4 written directly,
+/// vector paths and the standard Helvetica fonts; no library needed). The parameters, named
+/// parameters, report and exceptions are those of `write_fabrication_pattern_svg()`.
+template <class TriangleMesh, class UVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Fabrication_pattern_report write_fabrication_pattern_pdf(std::ostream& os, const TriangleMesh& tm, const UVMap& uv,
+                                                         const Fabrication_layout& layout,
+                                                         const NamedParameters& np = CGAL::parameters::default_values())
+{
+  internal::Pattern_scene scene;
+  const Fabrication_pattern_report report = internal::draw_fabrication_pattern(tm, uv, layout, np, scene);
+  internal::write_scene_pdf(os, scene);
   return report;
 }
 

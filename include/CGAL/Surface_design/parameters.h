@@ -41,6 +41,7 @@ enum vertex_energy_map_t { vertex_energy_map };
 enum vertex_gradient_map_t { vertex_gradient_map };
 enum cut_tolerance_t { cut_tolerance };
 enum distortion_bound_t { distortion_bound };
+enum crack_opening_bound_t { crack_opening_bound };
 enum cut_edge_cost_t { cut_edge_cost };
 enum ruling_alignment_weight_t { ruling_alignment_weight };
 enum boundary_scale_factor_map_t { boundary_scale_factor_map };
@@ -117,6 +118,7 @@ CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(vertex_energy_map)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(vertex_gradient_map)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(cut_tolerance)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(distortion_bound)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(crack_opening_bound)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(cut_edge_cost)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(ruling_alignment_weight)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(boundary_scale_factor_map)

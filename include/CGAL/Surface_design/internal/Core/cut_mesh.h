@@ -8,17 +8,38 @@
 #ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_CUT_MESH_H
 #define CGAL_SURFACE_DESIGN_INTERNAL_CORE_CUT_MESH_H
 
+#include <CGAL/Surface_design/exceptions.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/Core/topology.h>
 
 #include <array>
 #include <cstddef>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Surface_design {
 namespace internal {
+
+/// Per edge index: whether it is in `edges` (a range of edge descriptors of the mesh, found by
+/// their end vertices, so that an edge of another mesh is refused).
+template <class Indices, class EdgeRange>
+std::vector<bool> edge_flags(const Indices& idx, const EdgeRange& edges)
+{
+  const auto& tm = idx.mesh();
+  std::vector<bool> flag(idx.number_of_edges(), false);
+  for(const auto& e : edges)
+  {
+    const auto h = CGAL::halfedge(e, tm);
+    const auto s = source(h, tm), t = target(h, tm);
+    const auto found = idx.find(s) != npos && idx.find(t) != npos ? CGAL::halfedge(s, t, tm) : std::make_pair(h, false);
+    if(!found.second)
+      throw Invalid_constraints("an edge to cut is not an edge of the mesh");
+    flag[idx.edge_index(found.first)] = true;
+  }
+  return flag;
+}
 
 /// The corners of a mesh cut along edges.
 struct Cut_corners

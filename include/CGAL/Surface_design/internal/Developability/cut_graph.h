@@ -360,8 +360,11 @@ Cut_graph developable_cut_graph(const Indices& idx, const VertexPointMap& vpm, c
 /// angle defects of the vertices off the cut and the boundary; u = 0 on the cut and the boundary.
 /// Each vertex off the cut keeps its whole star in the cut mesh, so the system is set up on the
 /// uncut mesh. The area of the flattening near vertex i is e^{2 u_i} times the area in space.
-template <class Indices, class VertexPointMap, class SolverTraits>
-std::vector<double> cut_scale_factors(const Indices& idx, const VertexPointMap& vpm, const std::vector<bool>& edge_is_cut,
+/// `weight` are the cotangent weights of the edges (cotangent_weights()), `angle_sum` the angle
+/// sums of the vertices (vertex_angle_sums()).
+template <class Indices, class SolverTraits>
+std::vector<double> cut_scale_factors(const Indices& idx, const std::vector<double>& weight,
+                                      const std::vector<double>& angle_sum, const std::vector<bool>& edge_is_cut,
                                       const SolverTraits& traits)
 {
   const auto& tm = idx.mesh();
@@ -384,8 +387,6 @@ std::vector<double> cut_scale_factors(const Indices& idx, const VertexPointMap& 
   std::vector<double> u(nv, 0.);
   if(n == 0)
     return u;
-  const std::vector<double> weight = cotangent_weights(idx, vpm);
-  const std::vector<double> angle_sum = vertex_angle_sums(idx, corner_angles(idx, vpm));
   std::vector<Eigen::Triplet<double>> entries;
   std::vector<double> diagonal(n, 0.);
   for(std::size_t e = 0; e < ne; ++e)
@@ -417,6 +418,14 @@ std::vector<double> cut_scale_factors(const Indices& idx, const VertexPointMap& 
   return u;
 }
 
+template <class Indices, class VertexPointMap, class SolverTraits>
+std::vector<double> cut_scale_factors(const Indices& idx, const VertexPointMap& vpm, const std::vector<bool>& edge_is_cut,
+                                      const SolverTraits& traits)
+{
+  return cut_scale_factors(idx, cotangent_weights(idx, vpm), vertex_angle_sums(idx, corner_angles(idx, vpm)),
+                           edge_is_cut, traits);
+}
+
 /// The cut graph of `developable_cut_graph()`, cut further until the flattening that keeps the
 /// cut's lengths distorts no area by more than `o.distortion_bound` (|log area scale| = 2 |u_i|,
 /// u from cut_scale_factors()). Each round takes the vertices off the cut where |u| is a local
@@ -435,9 +444,11 @@ Cut_graph distortion_bounded_cut_graph(const Indices& idx, const VertexPointMap&
     return g;
   const auto& tm = idx.mesh();
   const std::size_t nv = idx.number_of_vertices(), ne = idx.number_of_edges();
+  const std::vector<double> weight = cotangent_weights(idx, vpm);
+  const std::vector<double> angle_sum = vertex_angle_sums(idx, corner_angles(idx, vpm));
   for(;; ++g.distortion_rounds)
   {
-    const std::vector<double> u = cut_scale_factors(idx, vpm, g.edge_is_cut, traits);
+    const std::vector<double> u = cut_scale_factors(idx, weight, angle_sum, g.edge_is_cut, traits);
     std::vector<std::size_t> peaks;
     double largest = 0.;
     for(std::size_t v = 0; v < nv; ++v)
@@ -478,7 +489,8 @@ Cut_graph distortion_bounded_cut_graph(const Indices& idx, const VertexPointMap&
     }
     g.distortion_terminals += peaks.size();
   }
-  finish_and_check(idx, g);
+  if(g.distortion_rounds > 0) // else the tree's pieces, checked already
+    finish_and_check(idx, g);
   return g;
 }
 

@@ -12,6 +12,7 @@
 #include <CGAL/Surface_design/internal/Core/angles.h>
 #include <CGAL/Surface_design/internal/Core/named_parameters.h>
 #include <CGAL/Surface_design/internal/Developability/glue_tabs.h>
+#include <CGAL/Surface_design/internal/Developability/pattern_canvas.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -248,7 +249,7 @@ inline std::vector<Eigen::Vector2d> pack_pieces(const std::vector<Eigen::Vector2
   return q;
 }
 
-/// Everything the SVG drawing needs, by index.
+/// Everything the drawing of the pattern needs, by index.
 struct Pattern_drawing
 {
   Pattern_packing layout;
@@ -267,9 +268,8 @@ struct Pattern_report;
 /// before (glue_tab_fits()). Drawn as filled polygons whose outer edges are cut lines, numbered
 /// like their seam.
 template <class Sides>
-void write_glue_tabs(std::ostream& os, const Pattern_drawing& d, const std::vector<std::size_t>& boundary_next,
-                     const std::vector<std::vector<unsigned long long>>& chains, Sides& sides, std::size_t n_original,
-                     Pattern_report& report);
+void draw_glue_tabs(Pattern_scene& scene, const Pattern_drawing& d, const std::vector<std::size_t>& boundary_next,
+                    const std::vector<std::vector<unsigned long long>>& chains, Sides& sides, Pattern_report& report);
 
 /// What the drawing holds besides the pieces.
 struct Pattern_report
@@ -280,13 +280,15 @@ struct Pattern_report
   std::size_t omitted_tabs = 0;   ///< seams whose tab would overlap a piece or a tab at any width
 };
 
-inline Pattern_report write_pattern_svg(std::ostream& os, const Pattern_drawing& d)
+/// The cutting pattern of the laid-out pieces, in mm on the sheets side by side (y down): the
+/// sheets, the pieces' outlines (cut lines), the fold lines (mountain and valley), the piece
+/// numbers, the glue tabs, the seam numbers on both sides of every seam, a scale bar per sheet.
+inline Pattern_report draw_pattern(const Pattern_drawing& d, Pattern_scene& scene)
 {
   Pattern_report report;
   const double s = d.layout.scale, H = d.layout.sheet_height;
   const std::size_t nv = d.uv.size(), nf = d.faces.size();
-  auto X = [&](std::size_t v) { return d.uv[v].x() * s; };
-  auto Y = [&](std::size_t v) { return H - d.uv[v].y() * s; };
+  auto at = [&](std::size_t v) { return Eigen::Vector2d(d.uv[v].x() * s, H - d.uv[v].y() * s); };
   // directed edges -> (face, corner)
   std::unordered_map<unsigned long long, std::pair<std::size_t, std::size_t>> directed;
   directed.reserve(3 * nf);
@@ -318,98 +320,115 @@ inline Pattern_report write_pattern_svg(std::ostream& os, const Pattern_drawing&
       }
     }
 
-  const double W_total =
-    double(d.layout.sheets) * (d.layout.sheet_width + d.layout.sheet_gap) - d.layout.sheet_gap;
-  os << std::fixed << std::setprecision(3);
-  os << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-     << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W_total << "mm\" height=\"" << H << "mm\" viewBox=\"0 0 "
-     << W_total << ' ' << H << "\">\n"
-     << "<title>Cutting pattern: " << d.layout.sheets << " sheet(s) of " << d.layout.sheet_width << " x " << H
-     << " mm, scale " << std::setprecision(6) << s << std::setprecision(3) << " mm per model unit</title>\n";
-  // sheets
-  os << "<g id=\"sheets\" fill=\"none\" stroke=\"#bbbbbb\" stroke-width=\"0.2\">\n";
-  for(std::size_t k = 0; k < d.layout.sheets; ++k)
-    os << "<rect x=\"" << double(k) * (d.layout.sheet_width + d.layout.sheet_gap) << "\" y=\"0\" width=\""
-       << d.layout.sheet_width << "\" height=\"" << H << "\"/>\n";
-  os << "</g>\n";
-
-  // pieces: filled outlines = cut lines
-  os << "<g id=\"cuts\" fill=\"#f4efe6\" stroke=\"#000000\" stroke-width=\"0.25\" stroke-linejoin=\"round\">\n";
-  std::vector<bool> done(nv, false);
-  for(std::size_t v = 0; v < nv; ++v)
+  scene.sheet_width = d.layout.sheet_width;
+  scene.sheet_height = H;
+  scene.sheet_gap = d.layout.sheet_gap;
+  scene.sheets = d.layout.sheets;
   {
-    if(boundary_next[v] == npos || done[v])
-      continue;
-    os << "<path d=\"";
-    std::size_t x = v;
-    bool first = true;
-    while(x != npos && !done[x])
-    {
-      done[x] = true;
-      os << (first ? "M" : " L") << X(x) << ',' << Y(x);
-      first = false;
-      x = boundary_next[x];
-    }
-    os << " Z\"/>\n";
+    std::ostringstream title;
+    title << std::fixed << std::setprecision(3) << "Cutting pattern: " << d.layout.sheets << " sheet(s) of "
+          << d.layout.sheet_width << " x " << H << " mm, scale " << std::setprecision(6) << s << " mm per model unit";
+    scene.title = title.str();
   }
-  os << "</g>\n";
+  auto layer = [&scene](const std::string& id, const std::string& fill, const std::string& stroke, double width) {
+    scene.layers.emplace_back();
+    Pattern_layer& l = scene.layers.back();
+    l.id = id;
+    l.style.fill = fill;
+    l.style.stroke = stroke;
+    l.style.width = width;
+    return scene.layers.size() - 1;
+  };
+  // sheets
+  {
+    Pattern_layer& sheets = scene.layers[layer("sheets", "none", "#bbbbbb", 0.2)];
+    sheets.rectangles = true;
+    for(std::size_t k = 0; k < d.layout.sheets; ++k)
+    {
+      const double x = double(k) * (d.layout.sheet_width + d.layout.sheet_gap), w = d.layout.sheet_width;
+      sheets.paths.push_back({{{Eigen::Vector2d(x, 0.), Eigen::Vector2d(x + w, 0.), Eigen::Vector2d(x + w, H),
+                                Eigen::Vector2d(x, H)}},
+                              true, false, {}});
+    }
+  }
+  // pieces: filled outlines = cut lines
+  {
+    Pattern_layer& cuts = scene.layers[layer("cuts", "#f4efe6", "#000000", 0.25)];
+    cuts.round_joins = true;
+    std::vector<bool> done(nv, false);
+    for(std::size_t v = 0; v < nv; ++v)
+    {
+      if(boundary_next[v] == npos || done[v])
+        continue;
+      Pattern_path outline;
+      outline.closed = true;
+      outline.parts.emplace_back();
+      for(std::size_t x = v; x != npos && !done[x]; x = boundary_next[x])
+      {
+        done[x] = true;
+        outline.parts.back().push_back(at(x));
+      }
+      cuts.paths.push_back(std::move(outline));
+    }
+  }
 
   // fold lines
-  std::ostringstream mountain, valley;
-  mountain << std::fixed << std::setprecision(3);
-  valley << std::fixed << std::setprecision(3);
-  std::size_t folds = 0;
-  for(std::size_t f = 0; f < nf; ++f)
-    for(std::size_t k = 0; k < 3; ++k)
-    {
-      const std::size_t a = d.faces[f][k], b = d.faces[f][(k + 1) % 3], c = d.faces[f][(k + 2) % 3];
-      const auto it = directed.find(key(b, a));
-      if(it == directed.end() || a > b)
-        continue;
-      const std::size_t g = it->second.first;
-      const std::size_t c2 = d.faces[g][(it->second.second + 2) % 3];
-      const Eigen::Vector3d n1 = (d.position[b] - d.position[a]).cross(d.position[c] - d.position[a]).normalized();
-      const Eigen::Vector3d n2 = (d.position[a] - d.position[b]).cross(d.position[c2] - d.position[b]).normalized();
-      const double dihedral = std::atan2(n1.cross(n2).norm(), n1.dot(n2));
-      if(!(dihedral > d.fold_angle))
-        continue;
-      ++folds;
-      std::ostringstream& out = (d.position[c2] - d.position[a]).dot(n1) < 0. ? mountain : valley;
-      out << "M" << X(a) << ',' << Y(a) << " L" << X(b) << ',' << Y(b) << ' ';
-    }
-  if(folds > 0)
   {
-    os << "<g id=\"folds\" fill=\"none\" stroke-width=\"0.2\">\n";
-    if(!mountain.str().empty())
-      os << "<path stroke=\"#1f4fbf\" stroke-dasharray=\"2,1\" d=\"" << mountain.str() << "\"/>\n";
-    if(!valley.str().empty())
-      os << "<path stroke=\"#c0392b\" stroke-dasharray=\"2,1,0.5,1\" d=\"" << valley.str() << "\"/>\n";
-    os << "</g>\n";
+    Pattern_path mountain, valley;
+    mountain.own_style = valley.own_style = true;
+    mountain.style = {"none", "#1f4fbf", 0.2, "2,1"};
+    valley.style = {"none", "#c0392b", 0.2, "2,1,0.5,1"};
+    for(std::size_t f = 0; f < nf; ++f)
+      for(std::size_t k = 0; k < 3; ++k)
+      {
+        const std::size_t a = d.faces[f][k], b = d.faces[f][(k + 1) % 3], c = d.faces[f][(k + 2) % 3];
+        const auto it = directed.find(key(b, a));
+        if(it == directed.end() || a > b)
+          continue;
+        const std::size_t g = it->second.first;
+        const std::size_t c2 = d.faces[g][(it->second.second + 2) % 3];
+        const Eigen::Vector3d n1 = (d.position[b] - d.position[a]).cross(d.position[c] - d.position[a]).normalized();
+        const Eigen::Vector3d n2 = (d.position[a] - d.position[b]).cross(d.position[c2] - d.position[b]).normalized();
+        const double dihedral = std::atan2(n1.cross(n2).norm(), n1.dot(n2));
+        if(!(dihedral > d.fold_angle))
+          continue;
+        Pattern_path& out = (d.position[c2] - d.position[a]).dot(n1) < 0. ? mountain : valley;
+        out.parts.push_back({at(a), at(b)});
+      }
+    if(!mountain.parts.empty() || !valley.parts.empty())
+    {
+      Pattern_layer& folds = scene.layers[layer("folds", "none", "none", 0.2)];
+      for(Pattern_path* p : {&mountain, &valley})
+        if(!p->parts.empty())
+          folds.paths.push_back(std::move(*p));
+    }
   }
 
   // piece numbers at their area centroids
-  std::vector<std::size_t> piece_of_root(nf, npos);
-  std::vector<Eigen::Vector3d> centroid; // x, y, area
-  for(std::size_t f = 0; f < nf; ++f)
   {
-    const std::size_t r = find(f);
-    if(piece_of_root[r] == npos)
+    std::vector<std::size_t> piece_of_root(nf, npos);
+    std::vector<Eigen::Vector3d> centroid; // x, y, area
+    for(std::size_t f = 0; f < nf; ++f)
     {
-      piece_of_root[r] = centroid.size();
-      centroid.emplace_back(Eigen::Vector3d::Zero());
+      const std::size_t r = find(f);
+      if(piece_of_root[r] == npos)
+      {
+        piece_of_root[r] = centroid.size();
+        centroid.emplace_back(Eigen::Vector3d::Zero());
+      }
+      const Eigen::Vector2d a = d.uv[d.faces[f][0]], b = d.uv[d.faces[f][1]], c = d.uv[d.faces[f][2]];
+      const double area = std::abs(0.5 * ((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x()));
+      const Eigen::Vector2d m = (a + b + c) / 3.;
+      centroid[piece_of_root[r]] += Eigen::Vector3d(m.x() * area, m.y() * area, area);
     }
-    const Eigen::Vector2d a = d.uv[d.faces[f][0]], b = d.uv[d.faces[f][1]], c = d.uv[d.faces[f][2]];
-    const double area = std::abs(0.5 * ((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x()));
-    const Eigen::Vector2d m = (a + b + c) / 3.;
-    centroid[piece_of_root[r]] += Eigen::Vector3d(m.x() * area, m.y() * area, area);
+    Pattern_layer& pieces = scene.layers[layer("pieces", "#777777", "none", 0.)];
+    pieces.font_size = 5.;
+    pieces.bold = true;
+    for(std::size_t k = 0; k < centroid.size(); ++k)
+      if(centroid[k].z() > 0.)
+        pieces.texts.push_back({Eigen::Vector2d(centroid[k].x() / centroid[k].z() * s, H - centroid[k].y() / centroid[k].z() * s),
+                                "P" + std::to_string(k + 1)});
   }
-  os << "<g id=\"pieces\" font-family=\"sans-serif\" font-size=\"5\" font-weight=\"bold\" fill=\"#777777\" "
-        "text-anchor=\"middle\" dominant-baseline=\"middle\">\n";
-  for(std::size_t k = 0; k < centroid.size(); ++k)
-    if(centroid[k].z() > 0.)
-      os << "<text x=\"" << centroid[k].x() / centroid[k].z() * s << "\" y=\"" << H - centroid[k].y() / centroid[k].z() * s
-         << "\">P" << k + 1 << "</text>\n";
-  os << "</g>\n";
 
   // seam labels: boundary edges joining copies of the same two uncut vertices
   if(!d.original.empty())
@@ -436,14 +455,14 @@ inline Pattern_report write_pattern_svg(std::ostream& os, const Pattern_drawing&
     std::vector<std::vector<unsigned long long>> chains;
     auto walk = [&](std::size_t start, unsigned long long first) {
       std::vector<unsigned long long> chain;
-      std::size_t at = start;
+      std::size_t x = start;
       unsigned long long e = first;
       while(!visited[e])
       {
         visited[e] = true;
         chain.push_back(e);
-        at = (e / n_original == at) ? std::size_t(e % n_original) : std::size_t(e / n_original);
-        const auto& next = incident[at];
+        x = (e / n_original == x) ? std::size_t(e % n_original) : std::size_t(e / n_original);
+        const auto& next = incident[x];
         if(next.size() != 2)
           break;
         e = next[0] == e ? next[1] : next[0];
@@ -469,54 +488,59 @@ inline Pattern_report write_pattern_svg(std::ostream& os, const Pattern_drawing&
         walk(std::size_t(e / n_original), e);
     report.seams = chains.size();
     if(d.layout.tab > 0.)
-      write_glue_tabs(os, d, boundary_next, chains, sides, n_original, report);
-    os << "<g id=\"seams\" font-family=\"sans-serif\" font-size=\"2.5\" fill=\"#1f4fbf\" text-anchor=\"middle\" "
-          "dominant-baseline=\"middle\">\n";
+      draw_glue_tabs(scene, d, boundary_next, chains, sides, report);
+    Pattern_layer& seams = scene.layers[layer("seams", "#1f4fbf", "none", 0.)];
+    seams.font_size = 2.5;
     for(std::size_t c = 0; c < chains.size(); ++c)
     {
       const unsigned long long middle = chains[c][chains[c].size() / 2];
       for(const auto& [a, b] : sides[middle])
       {
         // inwards: the faces lie left of a -> b
-        const Eigen::Vector2d pa(X(a), Y(a)), pb(X(b), Y(b));
+        const Eigen::Vector2d pa = at(a), pb = at(b);
         Eigen::Vector2d t = pb - pa;
         const double length = t.norm();
         if(length > 0.)
           t /= length;
         const Eigen::Vector2d inward(t.y(), -t.x()); // left of a -> b with y pointing down
-        const Eigen::Vector2d at = 0.5 * (pa + pb) + 2. * inward;
-        os << "<text x=\"" << at.x() << "\" y=\"" << at.y() << "\">" << c + 1 << "</text>\n";
+        seams.texts.push_back({0.5 * (pa + pb) + 2. * inward, std::to_string(c + 1)});
       }
     }
-    os << "</g>\n";
   }
 
   // scale bars
-  const double bar_units = round_down(40. / s);
-  os << "<g id=\"scale\" font-family=\"sans-serif\" font-size=\"3\" fill=\"#000000\">\n";
-  for(std::size_t k = 0; k < d.layout.sheets; ++k)
   {
-    const double x0 = double(k) * (d.layout.sheet_width + d.layout.sheet_gap) + (std::max)(d.layout.margin, 2.);
-    const double y0 = H - 0.5 * (std::max)(d.layout.margin, 4.);
-    os << "<path stroke=\"#000000\" stroke-width=\"0.4\" fill=\"none\" d=\"M" << x0 << ',' << y0 - 1 << " V" << y0
-       << " H" << x0 + bar_units * s << " V" << y0 - 1 << "\"/>\n"
-       << "<text x=\"" << x0 + bar_units * s + 2 << "\" y=\"" << y0 << "\">" << std::setprecision(6)
-       << std::defaultfloat << bar_units << " model units = " << bar_units * s << " mm; sheet " << k + 1 << " of "
-       << d.layout.sheets << std::fixed << std::setprecision(3) << "</text>\n";
+    const double bar_units = round_down(40. / s);
+    Pattern_layer& scale = scene.layers[layer("scale", "#000000", "none", 0.)];
+    scale.font_size = 3.;
+    scale.centered = false;
+    for(std::size_t k = 0; k < d.layout.sheets; ++k)
+    {
+      const double x0 = double(k) * (d.layout.sheet_width + d.layout.sheet_gap) + (std::max)(d.layout.margin, 2.);
+      const double y0 = H - 0.5 * (std::max)(d.layout.margin, 4.);
+      Pattern_path bar;
+      bar.own_style = true;
+      bar.style = {"none", "#000000", 0.4, ""};
+      bar.parts.push_back({Eigen::Vector2d(x0, y0 - 1.), Eigen::Vector2d(x0, y0), Eigen::Vector2d(x0 + bar_units * s, y0),
+                           Eigen::Vector2d(x0 + bar_units * s, y0 - 1.)});
+      scale.paths.push_back(std::move(bar));
+      std::ostringstream text;
+      text << std::setprecision(6) << bar_units << " model units = " << bar_units * s << " mm; sheet " << k + 1 << " of "
+           << d.layout.sheets;
+      scale.texts.push_back({Eigen::Vector2d(x0 + bar_units * s + 2., y0), text.str()});
+    }
   }
-  os << "</g>\n</svg>\n";
   return report;
 }
 
 template <class Sides>
-void write_glue_tabs(std::ostream& os, const Pattern_drawing& d, const std::vector<std::size_t>& boundary_next,
-                     const std::vector<std::vector<unsigned long long>>& chains, Sides& sides, std::size_t n_original,
-                     Pattern_report& report)
+void draw_glue_tabs(Pattern_scene& scene, const Pattern_drawing& d, const std::vector<std::size_t>& boundary_next,
+                    const std::vector<std::vector<unsigned long long>>& chains, Sides& sides, Pattern_report& report)
 {
-  (void)n_original;
   const double s = d.layout.scale, H = d.layout.sheet_height;
   const std::size_t nv = d.uv.size();
   auto mm = [&](std::size_t v) { return Eigen::Vector2d(d.uv[v] * s); }; // on the sheet, y up
+  auto down = [H](const Eigen::Vector2d& x) { return Eigen::Vector2d(x.x(), H - x.y()); };
   // the piece outlines
   std::vector<std::vector<Eigen::Vector2d>> pieces;
   std::vector<bool> done(nv, false);
@@ -532,9 +556,19 @@ void write_glue_tabs(std::ostream& os, const Pattern_drawing& d, const std::vect
     }
   }
   std::vector<std::vector<Eigen::Vector2d>> placed;
-  std::ostringstream shapes, cuts, folds, labels;
-  for(std::ostringstream* o : {&shapes, &cuts, &folds, &labels})
-    *o << std::fixed << std::setprecision(3);
+  Pattern_layer shapes, cuts, folds, labels;
+  shapes.id = "tabs";
+  shapes.style = {"#dde7f3", "none", 0., ""};
+  cuts.id = "tab-cuts";
+  cuts.style = {"none", "#000000", 0.25, ""};
+  cuts.round_joins = true;
+  cuts.paths.emplace_back();
+  folds.id = "tab-folds";
+  folds.style = {"none", "#1f4fbf", 0.2, "1,1"};
+  folds.paths.emplace_back();
+  labels.id = "tab-labels";
+  labels.style.fill = "#1f4fbf";
+  labels.font_size = 2.;
   for(std::size_t c = 0; c < chains.size(); ++c)
   {
     // the side: the boundary edges of the first side, walked in boundary order
@@ -586,35 +620,33 @@ void write_glue_tabs(std::ostream& os, const Pattern_drawing& d, const std::vect
       polygon.insert(polygon.end(), q.rbegin(), q.rend());
       placed.push_back(polygon);
       // the polygon (filled), its outer edges (cut) and its base (folded)
-      shapes << "<path d=\"M" << p.front().x() << ',' << H - p.front().y();
-      for(std::size_t i = 1; i < p.size(); ++i)
-        shapes << " L" << p[i].x() << ',' << H - p[i].y();
-      for(auto x = q.rbegin(); x != q.rend(); ++x)
-        shapes << " L" << x->x() << ',' << H - x->y();
-      shapes << " Z\"/>\n";
-      cuts << "M" << p.front().x() << ',' << H - p.front().y();
+      Pattern_path shape;
+      shape.closed = true;
+      shape.parts.emplace_back();
+      for(const Eigen::Vector2d& x : polygon)
+        shape.parts.back().push_back(down(x));
+      shapes.paths.push_back(std::move(shape));
+      std::vector<Eigen::Vector2d> outer{down(p.front())};
       for(const Eigen::Vector2d& x : q)
-        cuts << " L" << x.x() << ',' << H - x.y();
-      cuts << " L" << p.back().x() << ',' << H - p.back().y() << ' ';
-      folds << "M" << p.front().x() << ',' << H - p.front().y();
-      for(std::size_t i = 1; i < p.size(); ++i)
-        folds << " L" << p[i].x() << ',' << H - p[i].y();
-      folds << ' ';
+        outer.push_back(down(x));
+      outer.push_back(down(p.back()));
+      cuts.paths.front().parts.push_back(std::move(outer));
+      std::vector<Eigen::Vector2d> base;
+      for(const Eigen::Vector2d& x : p)
+        base.push_back(down(x));
+      folds.paths.front().parts.push_back(std::move(base));
       const std::size_t i = p.size() / 2;
-      const Eigen::Vector2d at = 0.5 * (p[i] + glue_tab_outer(p, width)[i]);
-      labels << "<text x=\"" << at.x() << "\" y=\"" << H - at.y() << "\">" << c + 1 << "</text>\n";
+      labels.texts.push_back({down(0.5 * (p[i] + q[i])), std::to_string(c + 1)});
     }
     report.omitted_tabs += !drawn;
   }
-  os << "<g id=\"tabs\" fill=\"#dde7f3\" stroke=\"none\">\n" << shapes.str() << "</g>\n";
+  scene.layers.push_back(std::move(shapes));
   if(report.tabs > 0)
-    os << "<g id=\"tab-cuts\" fill=\"none\" stroke=\"#000000\" stroke-width=\"0.25\" stroke-linejoin=\"round\">\n"
-       << "<path d=\"" << cuts.str() << "\"/>\n</g>\n"
-       << "<g id=\"tab-folds\" fill=\"none\" stroke=\"#1f4fbf\" stroke-width=\"0.2\" stroke-dasharray=\"1,1\">\n"
-       << "<path d=\"" << folds.str() << "\"/>\n</g>\n";
-  os << "<g id=\"tab-labels\" font-family=\"sans-serif\" font-size=\"2\" fill=\"#1f4fbf\" text-anchor=\"middle\" "
-        "dominant-baseline=\"middle\">\n"
-     << labels.str() << "</g>\n";
+  {
+    scene.layers.push_back(std::move(cuts));
+    scene.layers.push_back(std::move(folds));
+  }
+  scene.layers.push_back(std::move(labels));
 }
 
 } // namespace internal
