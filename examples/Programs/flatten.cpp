@@ -290,10 +290,10 @@ int run(const Options& o, Traits traits)
         input, cut, std::back_inserter(glued),
         P::crack_opening_bound(o.crack_opening * CGAL_PI / 180., P::distortion_bound(o.distortion_bound))
           .sparse_linear_solver(traits));
-      std::printf("glued %zu edges of %zu cracks in %zu rounds: cut %zu edges, length %.4g; largest |log area scale| "
-                  "%.3g (%.3g before) (%.3f s)\n",
-                  g.glued_edges, g.cracks, g.rounds, g.cut_edges, g.cut_length, g.largest_log_area_scale,
-                  g.largest_log_area_scale_before, clock.lap() / 1000.);
+      std::printf("glued %zu edges, %zu cracks closed in %zu rounds%s: cut %zu edges, length %.4g; largest |log "
+                  "area scale| %.3g (%.3g before) (%.3f s)\n",
+                  g.glued_edges, g.cracks, g.rounds, g.converged ? "" : " (the round limit: cracks left)", g.cut_edges,
+                  g.cut_length, g.largest_log_area_scale, g.largest_log_area_scale_before, clock.lap() / 1000.);
       cut = std::move(glued);
     }
     for(auto e : cut)

@@ -236,7 +236,7 @@ if ! grep -q "^glue tabs: [1-9][0-9]* of " "$WORK/stdout"; then
   failures=$((failures + 1))
 fi
 accept flatten "$D" --glue-cracks 1 --output "$O/ok.obj" --pattern "$O/ok.svg"
-if ! grep -q "^glued [1-9][0-9]* edges of " "$WORK/stdout"; then
+if ! grep -q "^glued [1-9][0-9]* edges, " "$WORK/stdout"; then
   echo "FAILED: flatten --glue-cracks glued nothing: $(grep -E "glued" "$WORK/stdout")"
   failures=$((failures + 1))
 fi

@@ -236,9 +236,11 @@ Developable_cut_result compute_developable_cut(const TriangleMesh& tm, EdgeOutpu
 /// What `glue_flattening_cracks()` glued.
 struct Crack_gluing_result
 {
-  std::size_t cracks = 0;      ///< dangling branches of the cut glued, in part or whole (over all rounds)
-  std::size_t glued_edges = 0; ///< cut edges glued
+  std::size_t cracks = 0;      ///< cracks closed, whole or in part: connected parts of the glued edges
+  std::size_t glued_edges = 0; ///< cut edges glued (border edges given in the cut count in neither number)
   std::size_t rounds = 0;      ///< rounds of flattening again that glued something
+  std::size_t reductions = 0;  ///< candidate sets halved to keep the distortion bound
+  bool converged = true;       ///< false if the 64 rounds ran out with candidates left
   std::size_t cut_edges = 0;   ///< edges of the glued cut
   double cut_length = 0.;      ///< total length of the glued cut
   /// largest |log area scale| 2 |u_i| of the conformal flattening keeping the cut's lengths, with
@@ -265,7 +267,8 @@ struct Crack_gluing_result
 /// glued (removed from the cut). With `distortion_bound` B, the glue must keep the largest
 /// |log area scale| 2 |u_i| of the new flattening at most max(B, its value before): else the half
 /// of the edges with the widest openings is left, until the rest passes. Then the flattening is
-/// computed again and the cracks' new tips are glued, until a round glues nothing. Only
+/// computed again and the cracks' new tips are glued, until a round glues nothing (at most 64
+/// rounds: `converged` says whether that was reached). Only
 /// dangling edges are glued, so every piece keeps its topology (a disk stays a disk); a
 /// connected part of the cut that does not reach the border keeps two edges.
 ///
@@ -326,7 +329,8 @@ struct Crack_gluing_result
 ///
 /// \returns what was glued
 /// \throws Invalid_mesh, Invalid_parameter, Invalid_constraints (an edge of `cut` is not an edge of
-///         `tm`), Linear_solver_failure; nothing is written then
+///         `tm`), Linear_solver_failure, Internal_error (the pieces' topology changed: a bug);
+///         nothing is written then
 /// Complexity: per round, one factorization of the Laplacian of the vertices off the cut, and
 /// one more each time the candidates are halved.
 template <class TriangleMesh, class EdgeRange, class EdgeOutputIterator,
@@ -350,6 +354,8 @@ Crack_gluing_result glue_flattening_cracks(const TriangleMesh& tm, const EdgeRan
   r.cracks = g.cracks;
   r.glued_edges = g.glued_edges;
   r.rounds = g.rounds;
+  r.reductions = g.reductions;
+  r.converged = g.converged;
   r.largest_log_area_scale_before = g.largest_log_area_scale_before;
   r.largest_log_area_scale = g.largest_log_area_scale;
   for(std::size_t e = 0; e < idx.number_of_edges(); ++e)

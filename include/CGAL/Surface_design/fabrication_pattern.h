@@ -233,7 +233,7 @@ Fabrication_pattern_report draw_fabrication_pattern(const TriangleMesh& tm, cons
   drawing.layout.sheet_width = layout.sheet_width;
   drawing.layout.sheet_height = layout.sheet_height;
   drawing.layout.margin = layout.margin;
-  drawing.layout.sheet_gap = layout.sheet_gap;
+  drawing.layout.sheet_gap = require_nonnegative("Fabrication_layout::sheet_gap", layout.sheet_gap);
   drawing.layout.scale = layout.scale;
   drawing.layout.sheets = layout.sheets;
   drawing.layout.tab = require_nonnegative("Fabrication_layout::glue_tab_width", layout.glue_tab_width);
@@ -377,8 +377,9 @@ Fabrication_pattern_report write_fabrication_pattern_svg(std::ostream& os, const
 /// Writes the cutting pattern of `write_fabrication_pattern_svg()` as a PDF document, one page
 /// per sheet at the sheet's size, ready to print at 100%: the same cut lines, fold lines, piece
 /// and seam numbers, glue tabs and scale bars, in the same colours (PDF 1.4 written directly,
-/// vector paths and the standard Helvetica fonts; no library needed). The parameters, named
-/// parameters, report and exceptions are those of `write_fabrication_pattern_svg()`.
+/// vector paths and the standard Helvetica fonts; no library needed). `os` must be a binary
+/// stream (`std::ios::binary`: the cross-reference table holds byte offsets). The parameters,
+/// named parameters, report and exceptions are those of `write_fabrication_pattern_svg()`.
 template <class TriangleMesh, class UVMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Fabrication_pattern_report write_fabrication_pattern_pdf(std::ostream& os, const TriangleMesh& tm, const UVMap& uv,
                                                          const Fabrication_layout& layout,

@@ -35,10 +35,11 @@ struct Crack_gluing_options
 struct Crack_gluing
 {
   std::vector<bool> edge_is_cut;  ///< the cut after gluing
-  std::size_t cracks = 0;         ///< dangling branches glued (in part or whole), over all rounds
+  std::size_t cracks = 0;         ///< connected parts of the glued edges (the cracks closed, whole or in part)
   std::size_t glued_edges = 0;
   std::size_t rounds = 0;         ///< rounds that glued something
   std::size_t reductions = 0;     ///< candidate sets halved because the distortion bound would break
+  bool converged = true;          ///< false if the rounds ran out while cracks were still being glued
   double largest_log_area_scale_before = 0., largest_log_area_scale = 0.; ///< 2 max |u| of the flattenings
   Cut_topology topology;          ///< of the glued cut (same pieces, all of the input cut's topology)
 };
@@ -95,10 +96,11 @@ std::vector<double> crack_openings(const Indices& idx, const std::vector<double>
 /// (a prefix of every crack); a connected part of the cut that does not reach the border keeps
 /// two edges (a single edge would leave a free slit, nothing a closed surface opens along). With
 /// a distortion bound, the candidates are glued only if the new flattening keeps 2 max |u| at
-/// most max(bound, its value before): else the half with the widest openings is dropped, until
-/// the rest passes or none is left. Every round solves again and glues the cracks' new tips,
-/// until nothing is glued. Gluing dangling edges keeps every piece's topology (one vertex and one
-/// edge fewer in the cut mesh), which is checked.
+/// most max(bound, its value before the gluing): else the half with the widest openings is
+/// dropped, until the rest passes or none is left. Every round solves again and glues the cracks'
+/// new tips, until nothing is glued (or `max_rounds` rounds have: `converged` false). Gluing
+/// dangling edges keeps every piece's topology (one vertex and one edge fewer in the cut mesh),
+/// which is checked.
 template <class Indices, class VertexPointMap, class SolverTraits>
 Crack_gluing glue_cracks(const Indices& idx, const VertexPointMap& vpm, const std::vector<bool>& edge_is_cut,
                          const Crack_gluing_options& o, const SolverTraits& traits)
@@ -127,6 +129,7 @@ Crack_gluing glue_cracks(const Indices& idx, const VertexPointMap& vpm, const st
     if(idx.is_border(h) || idx.is_border(opposite(h, tm)))
       r.edge_is_cut[e] = false;
   }
+  const std::vector<bool> was_cut = r.edge_is_cut;
   const Cut_corners corners_before = cut_corners(idx, r.edge_is_cut);
   const Cut_topology before = cut_topology(idx, r.edge_is_cut, corners_before);
 
@@ -134,7 +137,7 @@ Crack_gluing glue_cracks(const Indices& idx, const VertexPointMap& vpm, const st
   r.largest_log_area_scale_before = r.largest_log_area_scale = largest_scale(u);
   std::vector<std::size_t> degree(nv);
   std::vector<Candidate> candidates;
-  for(std::size_t round = 0; round < o.max_rounds; ++round)
+  for(std::size_t round = 0;; ++round)
   {
     std::fill(degree.begin(), degree.end(), std::size_t(0));
     for(std::size_t e = 0; e < ne; ++e)
@@ -186,9 +189,9 @@ Crack_gluing glue_cracks(const Indices& idx, const VertexPointMap& vpm, const st
           }
         }
         phi += delta[v];
-        widest = (std::max)(widest, std::abs(phi));
-        if(!(widest <= o.opening_bound))
+        if(!(std::abs(phi) <= o.opening_bound)) // (NaN included)
           break;
+        widest = (std::max)(widest, std::abs(phi));
         candidates.push_back({widest, position, crack, next});
         const auto ab = idx.edge_vertices(next);
         v = ab.first == v ? ab.second : ab.first;
@@ -200,16 +203,20 @@ Crack_gluing glue_cracks(const Indices& idx, const VertexPointMap& vpm, const st
     }
     if(candidates.empty())
       break;
+    if(round == o.max_rounds)
+    {
+      r.converged = false; // candidates left
+      break;
+    }
     // narrowest openings first; within a crack from its tip (the openings grow along it), so that
     // every prefix of this order glues a prefix of every crack
     std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
       return std::tie(a.opening, a.position, a.crack) < std::tie(b.opening, b.position, b.crack);
     });
     // the first `count` candidates, within the budgets; a crack stops at its first edge left out
-    std::vector<bool> trial, crack_glued;
+    std::vector<bool> trial;
     auto select = [&](std::size_t count) {
       trial = r.edge_is_cut;
-      crack_glued.assign(crack, false);
       std::vector<bool> blocked(crack, false);
       std::vector<std::size_t> left = budget;
       std::size_t glued = 0;
@@ -224,12 +231,11 @@ Crack_gluing glue_cracks(const Indices& idx, const VertexPointMap& vpm, const st
         }
         --part;
         trial[c.edge] = false;
-        crack_glued[c.crack] = true;
         ++glued;
       }
       return glued;
     };
-    const double allowed = (std::max)(o.distortion_bound, r.largest_log_area_scale);
+    const double allowed = (std::max)(o.distortion_bound, r.largest_log_area_scale_before);
     std::size_t count = candidates.size(), glued = 0;
     std::vector<double> trial_u;
     for(; count > 0; count /= 2)
@@ -244,7 +250,6 @@ Crack_gluing glue_cracks(const Indices& idx, const VertexPointMap& vpm, const st
     }
     if(count == 0)
       break;
-    r.cracks += std::size_t(std::count(crack_glued.begin(), crack_glued.end(), true));
     r.glued_edges += glued;
     ++r.rounds;
     r.edge_is_cut = std::move(trial);
@@ -252,6 +257,19 @@ Crack_gluing glue_cracks(const Indices& idx, const VertexPointMap& vpm, const st
     r.largest_log_area_scale = largest_scale(u);
   }
 
+  // the cracks closed: connected parts of the glued edges
+  {
+    Union_find closed(nv);
+    for(std::size_t e = 0; e < ne; ++e)
+      if(was_cut[e] && !r.edge_is_cut[e])
+        closed.unite(idx.edge_vertices(e).first, idx.edge_vertices(e).second);
+    std::vector<std::size_t> roots;
+    for(std::size_t e = 0; e < ne; ++e)
+      if(was_cut[e] && !r.edge_is_cut[e])
+        roots.push_back(closed.find(idx.edge_vertices(e).first));
+    std::sort(roots.begin(), roots.end());
+    r.cracks = std::size_t(std::unique(roots.begin(), roots.end()) - roots.begin());
+  }
   const Cut_corners corners = cut_corners(idx, r.edge_is_cut);
   r.topology = cut_topology(idx, r.edge_is_cut, corners);
   bool same = r.topology.pieces.size() == before.pieces.size();
