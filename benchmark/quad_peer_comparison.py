@@ -1,19 +1,26 @@
 #!/usr/bin/env python3
 # Copyright (c) 2026 The CGAL Surface Design authors.
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Side-by-side: quad_remesh (ours) and gmsh's quad recombination on the same meshes.
+"""Side by side: quad_remesh (ours), gmsh's quad recombination and QuadriFlow on the same meshes.
 
-usage: gmsh_comparison.py BUILD_DIR [--mesh FILE.off]... [--runs R] [--json OUT.json]
+usage: quad_peer_comparison.py BUILD_DIR [--mesh FILE.off]... [--runs R] [--json OUT.json]
+                               [--peers gmsh,quadriflow]
 
-gmsh (Debian package `gmsh`) is run when it is installed, else the script says so and exits 0.
-Both outputs are measured by BUILD_DIR/benchmark/quad_mesh_report (the library's
-quad_mesh_quality(): the same code for both). gmsh: STL input, ClassifySurfaces (the angle tried
-at 40, 20, 30, 50, 60, 70, 80 degrees until a mesh comes out), CreateGeometry, Frontal-Delaunay (Mesh.Algorithm 6)
-and Blossom recombination, uniform size h = the size ours aims at, sqrt(area / 3000), with the
-size-from-points and extend-from-boundary options off. Times are medians of R runs (default 3)
-of the whole program, reading and writing included, on both sides ("program s"; ours also
-certifies its Hausdorff distance there), and for ours the remeshing alone from its own report
-("remeshing s"; for gmsh the same as the program).
+Every peer runs when it is installed, else the script says so and goes on without it: gmsh
+(Debian package `gmsh`) and QuadriFlow (Huang et al. 2018) inside Blender (Debian package
+`blender`, run headless: `blender -b --factory-startup --python quadriflow_blender.py`). All
+outputs are measured by BUILD_DIR/benchmark/quad_mesh_report (the library's quad_mesh_quality():
+the same code for all).
+- gmsh: STL input, ClassifySurfaces (the angle tried at 40, 20, 30, 50, 60, 70, 80 degrees until a
+  mesh comes out), CreateGeometry, Frontal-Delaunay (Mesh.Algorithm 6) and Blossom recombination,
+  uniform size h = the size ours aims at, sqrt(area / 3000), with the size-from-points and
+  extend-from-boundary options off.
+- QuadriFlow: OBJ input, `bpy.ops.object.quadriflow_remesh` with target_faces = the number of
+  faces ours made (the same target), the boundary kept, no symmetry, seed 0.
+Times are medians of R runs (default 3) of the whole program, reading and writing included
+("program s"; ours also certifies its Hausdorff distance there; Blender's start-up is in it),
+and the remeshing alone ("remeshing s": ours from its own report, QuadriFlow the operator's time
+measured inside Blender, gmsh the same as the program).
 """
 import json
 import math
@@ -28,7 +35,8 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ANGLES = (40, 20, 30, 50, 60, 70, 80) # degrees for ClassifySurfaces, tried in this order
-DEFAULT_MESHES = ["eight.off", "kitten.off", "fertility.off", "hemisphere.off", "camelhead.off", "torus.off"]
+DEFAULT_MESHES = ["eight.off", "kitten.off", "fertility.off", "hemisphere.off", "camelhead.off", "torus.off", "bunny_8k.off",
+                  "spot_2k.off"]
 
 
 def read_off(path):
@@ -135,29 +143,68 @@ def run_gmsh(stl, out_vtk, h, angle, runs):
     return ok, seconds, result.stderr + result.stdout
 
 
+def write_obj(points, faces, path):
+    with open(path, "w") as f:
+        for p in points:
+            f.write("v %r %r %r\n" % p)
+        for t in faces:
+            f.write("f " + " ".join(str(i + 1) for i in t) + "\n")
+
+
+def run_quadriflow(obj, out_obj, target_faces, runs):
+    """QuadriFlow inside Blender: (ok, program seconds, operator seconds, log)."""
+    script = os.path.join(HERE, "quadriflow_blender.py")
+    operator = []
+    seconds, result = None, None
+    times = []
+    for _ in range(runs):
+        if os.path.exists(out_obj):
+            os.remove(out_obj)
+        start = time.perf_counter()
+        result = subprocess.run(["blender", "-b", "--factory-startup", "--python", script, "--", obj, out_obj,
+                                 str(target_faces)], capture_output=True, text=True)
+        times.append(time.perf_counter() - start)
+        found = re.search(r"quadriflow: seconds ([\d.]+) faces (\d+)", result.stdout)
+        if result.returncode != 0 or not found or not os.path.exists(out_obj):
+            failed = re.search(r"quadriflow: failed.*", result.stdout)
+            return False, None, None, failed.group(0) if failed else (result.stderr.strip().splitlines() or ["failed"])[-1]
+        operator.append(float(found.group(1)))
+    seconds = statistics.median(times)
+    return True, seconds, statistics.median(operator), ""
+
+
 def main(argv):
     if len(argv) < 2 or argv[1].startswith("-"):
         print(__doc__)
         return 1
     build = argv[1]
-    meshes, runs, out_json = [], 3, "gmsh_comparison.json"
+    meshes, runs, out_json = [], 3, "quad_peer_comparison.json"
+    peers = ["gmsh", "quadriflow"]
     k = 2
     while k < len(argv):
         if argv[k] == "--mesh" and k + 1 < len(argv):
             meshes.append(argv[k + 1])
+        elif argv[k] == "--peers" and k + 1 < len(argv):
+            peers = [p for p in argv[k + 1].split(",") if p]
+            if any(p not in ("gmsh", "quadriflow") for p in peers):
+                print("quad_peer_comparison.py: --peers takes gmsh and/or quadriflow")
+                return 1
         elif argv[k] == "--runs" and k + 1 < len(argv):
             runs = int(argv[k + 1])
         elif argv[k] == "--json" and k + 1 < len(argv):
             out_json = argv[k + 1]
         else:
-            print("gmsh_comparison.py: unknown option " + argv[k])
+            print("quad_peer_comparison.py: unknown option " + argv[k])
             return 1
         k += 2
     if not meshes:
         meshes = [os.path.join(HERE, "..", "data", m) for m in DEFAULT_MESHES]
-    if shutil.which("gmsh") is None:
-        print("gmsh is not installed (Debian: apt-get install gmsh): the comparison is skipped")
-        return 0
+    if "gmsh" in peers and shutil.which("gmsh") is None:
+        print("gmsh is not installed (Debian: apt-get install gmsh): it is left out")
+        peers.remove("gmsh")
+    if "quadriflow" in peers and shutil.which("blender") is None:
+        print("Blender is not installed (Debian: apt-get install blender): QuadriFlow is left out")
+        peers.remove("quadriflow")
     quad_remesh = os.path.join(build, "examples", "quad_remesh")
     rows = []
     with tempfile.TemporaryDirectory() as work:
@@ -177,6 +224,24 @@ def main(argv):
                                   r"curves ([\d.]+) s, meshing ([\d.]+) s", line)
                 if phases:
                     ours["remesh_seconds"] = sum(float(x) for x in phases.groups())
+            row = {"mesh": name, "input_faces": len(faces), "h": h, "ours": ours}
+            if "quadriflow" in peers:
+                obj = os.path.join(work, name + ".obj")
+                write_obj(points, faces, obj)
+                target = ours.get("faces") or int(round(area(points, faces) / (h * h)))
+                out_obj = os.path.join(work, name + "_quadriflow.obj")
+                ok, seconds, operator, log = run_quadriflow(obj, out_obj, target, runs)
+                if ok:
+                    row["quadriflow"] = report(build, mesh, out_obj)
+                    row["quadriflow"].update({"seconds": seconds, "remesh_seconds": operator, "target_faces": target})
+                else:
+                    row["quadriflow"] = {"error": "refused or failed: " + log}
+            if "gmsh" not in peers:
+                rows.append(row)
+                for who in ("ours", "quadriflow"):
+                    if who in row:
+                        print("  %-10s %s" % (who, json.dumps(row[who])), flush=True)
+                continue
             stl = os.path.join(work, name + ".stl")
             write_stl(points, faces, stl)
             vtk = os.path.join(work, name + "_gmsh.vtk")
@@ -193,9 +258,11 @@ def main(argv):
                 errors = [l for l in log.splitlines() if "Error" in l]
                 gmsh = {"error": "no mesh with any of the angles %s; last: %s" % (
                     ", ".join(map(str, ANGLES)), errors[-1].strip() if errors else "failed")}
-            rows.append({"mesh": name, "input_faces": len(faces), "h": h, "ours": ours, "gmsh": gmsh})
-            for who, r in (("ours", ours), ("gmsh", gmsh)):
-                print("  %-5s %s" % (who, json.dumps(r)), flush=True)
+            row["gmsh"] = gmsh
+            rows.append(row)
+            for who in ("ours", "gmsh", "quadriflow"):
+                if who in row:
+                    print("  %-10s %s" % (who, json.dumps(row[who])), flush=True)
     with open(out_json, "w") as f:
         json.dump(rows, f, indent=1)
     keys = [("faces", "faces", "%d"), ("quads %", "quad_fraction", "%.1f"), ("irregular / face", None, "%.3f"),
@@ -205,7 +272,9 @@ def main(argv):
     print("\n| mesh | who | " + " | ".join(k[0] for k in keys) + " |")
     print("|---|---|" + "---:|" * len(keys))
     for row in rows:
-        for who in ("ours", "gmsh"):
+        for who in ("ours", "gmsh", "quadriflow"):
+            if who not in row:
+                continue
             r = row[who]
             if "error" in r:
                 print("| %s | %s | %s |" % (row["mesh"], who, r["error"]))
