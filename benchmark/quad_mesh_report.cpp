@@ -3,7 +3,7 @@
 //
 // quad_mesh_report REFERENCE POLYGONS: the quality of any polygon mesh against the triangle mesh
 // it approximates (quad_mesh_quality()), as one JSON object on standard output. Used by
-// gmsh_comparison.py to measure a peer's output and ours with the same code. The polygons are
+// quad_peer_comparison.py to measure a peer's output and ours with the same code. The polygons are
 // read as a soup, repaired and oriented consistently first (gmsh orients its patches one by one);
 // "reoriented_faces" tells how many faces had to be flipped.
 
