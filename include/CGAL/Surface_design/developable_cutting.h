@@ -30,6 +30,25 @@
 namespace CGAL {
 namespace Surface_design {
 
+namespace internal {
+
+// Writes the edges flagged in `edge_is_cut` to `out` and adds their number and total length.
+template <class Indices, class VertexPointMap, class EdgeOutputIterator>
+void write_cut(const Indices& idx, const VertexPointMap& vpm, const std::vector<bool>& edge_is_cut,
+               EdgeOutputIterator out, std::size_t& count, double& length)
+{
+  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+    if(edge_is_cut[e])
+    {
+      ++count;
+      const auto ab = idx.edge_vertices(e);
+      length += (position(vpm, idx.vertex(ab.first)) - position(vpm, idx.vertex(ab.second))).norm();
+      *out++ = idx.edge(e);
+    }
+}
+
+} // namespace internal
+
 /// \ingroup PkgDevelopabilityRef
 /// What `compute_developable_cut()` found.
 struct Developable_cut_result
@@ -215,20 +234,11 @@ Developable_cut_result compute_developable_cut(const TriangleMesh& tm, EdgeOutpu
   for(std::size_t v = 0; v < idx.number_of_vertices(); ++v)
     if(!is_border(idx.vertex(v), tm))
       r.lambda_max = (std::max)(r.lambda_max, g.lambda[v]);
-  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
-    if(g.edge_is_cut[e])
-    {
-      ++r.cut_edges;
-      const auto ab = idx.edge_vertices(e);
-      r.cut_length += (internal::position(vpm, idx.vertex(ab.first)) - internal::position(vpm, idx.vertex(ab.second))).norm();
-    }
   internal::if_given(np, internal_np::vertex_energy_map, [&](auto map) {
     for(std::size_t v = 0; v < idx.number_of_vertices(); ++v)
       put(map, idx.vertex(v), g.lambda[v]);
   });
-  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
-    if(g.edge_is_cut[e])
-      *cut_edges++ = idx.edge(e);
+  internal::write_cut(idx, vpm, g.edge_is_cut, cut_edges, r.cut_edges, r.cut_length);
   return r;
 }
 
@@ -358,16 +368,7 @@ Crack_gluing_result glue_flattening_cracks(const TriangleMesh& tm, const EdgeRan
   r.converged = g.converged;
   r.largest_log_area_scale_before = g.largest_log_area_scale_before;
   r.largest_log_area_scale = g.largest_log_area_scale;
-  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
-    if(g.edge_is_cut[e])
-    {
-      ++r.cut_edges;
-      const auto ab = idx.edge_vertices(e);
-      r.cut_length += (internal::position(vpm, idx.vertex(ab.first)) - internal::position(vpm, idx.vertex(ab.second))).norm();
-    }
-  for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
-    if(g.edge_is_cut[e])
-      *glued_cut++ = idx.edge(e);
+  internal::write_cut(idx, vpm, g.edge_is_cut, glued_cut, r.cut_edges, r.cut_length);
   return r;
 }
 
