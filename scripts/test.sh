@@ -7,8 +7,9 @@
 #                                     at -Og, see CMakeLists.txt; line tables only (-g1); assertions on)
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-# poppler-utils: pdfinfo reads the PDF patterns back in the command-line checks
-install_packages "${BUILD_PACKAGES[@]}" "${EDITOR_PACKAGES[@]}" python3 chromium poppler-utils
+# poppler-utils: pdfinfo reads the PDF patterns back in the command-line checks; f3d, xvfb and
+# xauth: the programs' --picture, which those checks run (as scripts/demo.sh installs them)
+install_packages "${BUILD_PACKAGES[@]}" "${EDITOR_PACKAGES[@]}" python3 chromium poppler-utils f3d xvfb xauth
 
 # every optional dependency is installed above, so none may be missing: the tests that compare
 # CHOLMOD, METIS orderings and TBB loops with the rest must not pass by being skipped
@@ -24,7 +25,9 @@ if [ "${1:-}" = "--sanitize" ]; then
   export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 else
   BUILD="$ROOT/build"
-  configure_and_build "$BUILD" -DCMAKE_BUILD_TYPE=Release -DCGAL_SURFACE_DESIGN_WERROR=ON "${REQUIRED[@]}"
+  # the benchmark harness is built for its smoke test only, at the test programs' -O1 (benchmark/CMakeLists.txt)
+  configure_and_build "$BUILD" -DCMAKE_BUILD_TYPE=Release -DCGAL_SURFACE_DESIGN_WERROR=ON "${REQUIRED[@]}" \
+    -DCGAL_SURFACE_DESIGN_BENCHMARK_SMOKE_BUILD=ON
 fi
 
 echo "== Running the tests in $BUILD"
