@@ -21,6 +21,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <map>
@@ -335,11 +336,40 @@ void check_pattern(const Parameterizer& p)
       prescribed += p.index(idx.face(f), a) != 0 ? 1 : 0;
   REQUIRE(singular == prescribed);
   REQUIRE(largest_jump(tm, idx, value, families) < 1e-9);
-  // optimality over the continuous part: d_P^T W (y - omega) = 0 at every vertex not pinned,
-  // relative to the size of the terms it sums
   const auto& solver = p.solver();
   const auto& y = p.one_form();
   const auto& omega = p.target_one_form();
+  if(solver.has_spokes())
+  {
+    // the energy also holds the spokes of the branch faces (W couples their edges): optimality
+    // over the continuous part read off the energy alone, which is quadratic: along y +- d_P delta
+    // (delta random, 0 where pinned) it changes by 4 <gradient, d_P delta>, which must vanish
+    std::uint32_t state = 7;
+    for(int trial = 0; trial < 3; ++trial)
+    {
+      std::vector<Eigen::Vector2d> delta(idx.number_of_vertices(), Eigen::Vector2d::Zero());
+      for(std::size_t v = 0; v < delta.size(); ++v)
+        for(int a = 0; a < families; ++a)
+        {
+          state = state * 1664525u + 1013904223u;
+          delta[v][a] = solver.is_pinned(v) ? 0. : double(state >> 8) / double(1u << 24) - 0.5;
+        }
+      std::vector<Eigen::Vector2d> plus = y, minus = y;
+      for(std::size_t e = 0; e < y.size(); ++e)
+      {
+        const auto ij = idx.edge_vertices(e);
+        const Eigen::Vector2d z = solver.transition(e) * delta[ij.second] - delta[ij.first];
+        plus[e] += z;
+        minus[e] -= z;
+      }
+      const double ep = solver.energy(plus, omega), em = solver.energy(minus, omega);
+      INFO("energy along +- d_P delta: " << ep << " " << em);
+      REQUIRE(std::abs(ep - em) <= 1e-9 * (ep + em));
+    }
+    return;
+  }
+  // optimality over the continuous part: d_P^T W (y - omega) = 0 at every vertex not pinned,
+  // relative to the size of the terms it sums
   std::vector<Eigen::Vector2d> gradient(idx.number_of_vertices(), Eigen::Vector2d::Zero());
   double scale = 0.;
   for(std::size_t e = 0; e < y.size(); ++e)
@@ -1052,4 +1082,221 @@ TEST_CASE("Twisted fields without singularity and singularities in new branch fa
   REQUIRE(q.branch_faces().size() == 4);
   q.solve();
   check_pattern(q);
+}
+
+TEST_CASE("Integer points of given parities: the coset against brute force", "[branched_stripes][lattice]")
+{
+  // random systems A (x, s) = b (mod 2) with n unknowns and n_aux auxiliary binary ones
+  std::uint32_t state = 12345;
+  auto bit = [&state]() {
+    state = state * 1664525u + 1013904223u;
+    return std::uint8_t((state >> 16) & 1u);
+  };
+  std::size_t feasible_seen = 0, infeasible_seen = 0;
+  for(int trial = 0; trial < 300; ++trial)
+  {
+    const std::size_t n = 1 + std::size_t(trial % 5), n_aux = std::size_t(trial / 5 % 3), rows = 1 + std::size_t(trial % 7);
+    std::vector<std::vector<std::uint8_t>> A(rows, std::vector<std::uint8_t>(n + n_aux));
+    std::vector<std::uint8_t> b(rows);
+    for(auto& row : A)
+      for(auto& a : row)
+        a = bit();
+    for(auto& x : b)
+      x = bit();
+    // brute force: the parities x in {0,1}^n for which some s solves the system
+    auto solves = [&](std::size_t xbits, std::size_t sbits) {
+      for(std::size_t r = 0; r < rows; ++r)
+      {
+        std::uint8_t sum = 0;
+        for(std::size_t j = 0; j < n; ++j)
+          sum ^= std::uint8_t(A[r][j] & ((xbits >> j) & 1u));
+        for(std::size_t j = 0; j < n_aux; ++j)
+          sum ^= std::uint8_t(A[r][n + j] & ((sbits >> j) & 1u));
+        if(sum != b[r])
+          return false;
+      }
+      return true;
+    };
+    std::set<std::size_t> allowed;
+    for(std::size_t x = 0; x < (std::size_t(1) << n); ++x)
+      for(std::size_t s = 0; s < (std::size_t(1) << n_aux); ++s)
+        if(solves(x, s))
+          allowed.insert(x);
+    const SDI::Parity_coset coset = SDI::parity_coset(A, b, n, n_aux);
+    INFO("trial " << trial);
+    REQUIRE(coset.feasible == !allowed.empty());
+    if(!coset.feasible)
+    {
+      ++infeasible_seen;
+      continue;
+    }
+    ++feasible_seen;
+    auto parity_bits = [n](const Eigen::VectorXi& x) {
+      std::size_t bits = 0;
+      for(std::size_t j = 0; j < n; ++j)
+        bits |= std::size_t(((x[Eigen::Index(j)] % 2) + 2) % 2) << j;
+      return bits;
+    };
+    // every point offset + B z for small z is allowed, and the lattice has the index the
+    // allowed parities give: 2^n / |allowed| (then B generates all of it, as it lies inside)
+    REQUIRE(allowed.count(parity_bits(coset.offset)) == 1);
+    for(int k = 0; k < 50; ++k)
+    {
+      Eigen::VectorXi z = Eigen::VectorXi::Zero(Eigen::Index(n));
+      for(std::size_t j = 0; j < n; ++j)
+        z[Eigen::Index(j)] = int(bit()) + 2 * int(bit()) - int(bit());
+      REQUIRE(allowed.count(parity_bits(coset.offset + coset.basis * z)) == 1);
+    }
+    const double det = std::abs(coset.basis.cast<double>().determinant());
+    REQUIRE(std::abs(det * double(allowed.size()) - double(std::size_t(1) << n)) < 1e-9);
+  }
+  REQUIRE(feasible_seen > 50);
+  REQUIRE(infeasible_seen > 20);
+}
+
+// The isolines that end at the branch point of branch face f (its centroid), by level (0 or pi).
+template <class Parameterizer>
+std::array<std::size_t, 2> ends_at_branch_point(const Parameterizer& p,
+                                                const std::vector<typename Parameterizer::Isoline>& lines,
+                                                std::size_t f, double tolerance)
+{
+  const auto& idx = p.indices();
+  const auto& tm = idx.mesh();
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for(auto v : vertices_around_face(halfedge(idx.face(f), tm), tm))
+  {
+    const auto q = get(CGAL::vertex_point, tm, v);
+    centroid += Eigen::Vector3d(q.x(), q.y(), q.z()) / 3.;
+  }
+  std::array<std::size_t, 2> count{0, 0};
+  for(const auto& line : lines)
+  {
+    if(line.closed || line.points.empty())
+      continue;
+    for(const auto& q : {line.points.front(), line.points.back()})
+      if((Eigen::Vector3d(q.x(), q.y(), q.z()) - centroid).norm() < tolerance)
+        ++count[std::abs(line.level) < 1e-9 ? 0 : 1];
+  }
+  return count;
+}
+
+TEMPLATE_TEST_CASE("Branch points on the lattice: the lines end at every cone, 4 - k of them where the map is injective",
+                   "[branched_stripes][lattice]", SD_MESH_TYPES)
+{
+  const char* disk = CGAL_SURFACE_DESIGN_TESTS_UNDER_SANITIZERS ? "band" : "hemisphere.off";
+  std::size_t off_lattice_before = 0, cones = 0, injective_cross_cones = 0;
+  for(const std::string name : {"sphere", "eight.off", disk, "bunny_1k.off"})
+    for(int n : {2, 4})
+    {
+      INFO(name << ", n = " << n);
+      const TestType mesh = make_case<TestType>(name);
+      const double h = diagonal(mesh);
+      Bsp<TestType> p(mesh, SD::parameters::symmetry_order(n));
+      p.set_field(field_map(mesh, smoothest(mesh, n)), 10. / h);
+      p.solve();
+      const std::vector<std::size_t> branch = p.branch_faces();
+      const auto before = p.isolines();
+      for(std::size_t f : branch)
+        off_lattice_before += ends_at_branch_point(p, before, f, 1e-9 * h)[0] == 0 ? 1 : 0;
+
+      // the branch faces' spokes enter the system: one more factorization
+      p.set_lattice_branch_points(true);
+      REQUIRE_FALSE(p.is_solved());
+      REQUIRE(p.number_of_factorizations() == 2);
+      p.solve();
+      check_pattern(p); // continuity, indices, branch values, optimality (with the spokes)
+      const auto lines = p.isolines();
+      for(std::size_t f : branch)
+      {
+        ++cones;
+        const auto fd = p.indices().face(f);
+        const auto c = p.branch_point_value(fd);
+        for(int a = 0; a < p.number_of_families(); ++a)
+          REQUIRE(std::abs(SDI::wrap_angle(c[std::size_t(a)])) < 1e-9);
+        // the values around the branch point: corners 0, 1, 2 and corner 0 again after the walk
+        // (read on the side of the third edge), relative to the branch point
+        std::array<Eigen::Vector2d, 4> around;
+        for(int a = 0; a < p.number_of_families(); ++a)
+        {
+          const auto cv = p.corner_values(fd, a);
+          for(int k = 0; k < 3; ++k)
+            around[std::size_t(k)][a] = cv[std::size_t(k)] - c[std::size_t(a)];
+          around[3][a] = p.value(fd, {1. - 1e-12, 0., 1e-12}, a) - c[std::size_t(a)];
+        }
+        const auto ends = ends_at_branch_point(p, lines, f, 1e-9 * h);
+        INFO("branch face " << f << ", index " << p.field_index_numerator(fd) << "/" << n);
+        REQUIRE(ends[1] == 0); // no line of level pi there
+        if(n == 2)
+        {
+          // as many lines end there as the angle changes sign around it: at least one
+          std::size_t changes = 0;
+          for(int k = 0; k < 3; ++k)
+            changes += (around[std::size_t(k)][0] < 0.) != (around[std::size_t(k + 1)][0] < 0.) ? 1 : 0;
+          REQUIRE(ends[0] == changes);
+          REQUIRE(changes >= 1);
+          continue;
+        }
+        // a cross field where the three triangles around the branch point keep their orientation
+        // in the (alpha, beta) plane: a crossing of 4 - k lines (a +1/4 cone: valence 3, -1/4: 5)
+        bool injective = true;
+        for(int k = 0; k < 3; ++k)
+        {
+          const Eigen::Vector2d& x = around[std::size_t(k)];
+          const Eigen::Vector2d& y = around[std::size_t(k + 1)];
+          injective = injective && x.x() * y.y() - x.y() * y.x() > 0.;
+        }
+        std::ostringstream values;
+        for(const auto& x : around)
+          values << "(" << x[0] << ", " << x[1] << ") ";
+        INFO("around the branch point: " << values.str() << "ends " << ends[0]);
+        if(injective)
+        {
+          ++injective_cross_cones;
+          REQUIRE(int(ends[0]) == 4 - p.field_index_numerator(fd));
+        }
+      }
+    }
+  REQUIRE(cones > 20);
+  REQUIRE(injective_cross_cones > 5);
+  // without the condition some branch points are off the lattice: the test can see the difference
+  REQUIRE(off_lattice_before > 0);
+}
+
+TEST_CASE("Branch points on the lattice: a torus with two +1/4 and two -1/4 cones", "[branched_stripes][lattice]")
+{
+  using Mesh = test::Surface_mesh;
+  Mesh torus;
+  SD::make_torus(torus, 36, 12, 1., 0.35, true);
+  SD::Trivial_connection tc(torus, SD::parameters::symmetry_order(4));
+  for(const auto& [f, k] : std::vector<std::pair<std::size_t, int>>{{10, 1}, {200, 1}, {500, -1}, {700, -1}})
+    tc.set_index(f, k);
+  tc.solve();
+  std::vector<Vector_of<Mesh>> x(num_vertices(torus));
+  tc.field(CGAL::make_property_map(x));
+  // switched on before the field: no extra factorization
+  Bsp<Mesh> p(torus, SD::parameters::symmetry_order(4));
+  p.set_lattice_branch_points(true);
+  p.set_field(field_map(torus, x), 3.);
+  REQUIRE(p.number_of_factorizations() == 1);
+  REQUIRE(p.branch_faces().size() == 4);
+  p.solve();
+  check_pattern(p);
+  for(std::size_t f : p.branch_faces())
+  {
+    const auto c = p.branch_point_value(p.indices().face(f));
+    REQUIRE(std::abs(SDI::wrap_angle(c[0])) < 1e-9);
+    REQUIRE(std::abs(SDI::wrap_angle(c[1])) < 1e-9);
+  }
+#if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
+  // the other solver: the same pattern
+  Bsp<Mesh, SD::Cholmod_solver_traits> q(torus, SD::parameters::symmetry_order(4));
+  q.set_lattice_branch_points(true);
+  q.set_field(field_map(torus, x), 3.);
+  q.solve();
+  REQUIRE(std::abs(q.energy() - p.energy()) <= 1e-8 * p.energy());
+  for(std::size_t v = 0; v < p.vertex_values().size(); ++v)
+    REQUIRE((q.vertex_values()[v] - p.vertex_values()[v]).norm() < 1e-7);
+#else
+  SD_CHOLMOD_UNAVAILABLE("the lattice branch points with CHOLMOD");
+#endif
 }

@@ -65,6 +65,10 @@ const char* usage =
   "                            family. Without --singularity, the stripe singularities of line and\n"
   "                            cross fields are placed automatically (where they lower the energy)\n"
   "  --no-automatic            no automatic singularities on line and cross fields\n"
+  "  --lattice-cones           line and cross fields: every branch point on the lattice (all stripe\n"
+  "                            angles 0 there): a line field's stripes run through its branch\n"
+  "                            points, a cross field's cones become crossings of both families\n"
+  "                            (valence 4 - k at a cone of index k/4), as a quad mesh needs\n"
   "  --winding LOOP:N          prescribe the winding of a loop (repeatable; others automatic;\n"
   "                            vector fields only)\n"
   "  --solver S                sparse solver: default (simplicial LDLT below 20k\n"
@@ -85,7 +89,7 @@ struct Options
   std::string input, field = "axis:0,1,0", output, isolines, picture, up = "+Y", solver = "default";
   std::optional<double> scale;
   std::vector<std::array<long, 3>> singularities; // face, index, family
-  bool automatic = true;
+  bool automatic = true, lattice = false;
   std::map<std::size_t, int> windings;
   SD::One_form_convention convention = SD::One_form_convention::projected;
 };
@@ -139,6 +143,7 @@ Options parse(int argc, char** argv)
                 o.singularities.push_back({long(f), long(k), family});
               })
     .flag("--no-automatic", [&] { o.automatic = false; })
+    .flag("--lattice-cones", [&] { o.lattice = true; })
     .repeated("--winding",
               [&](const std::string& v) {
                 const auto [l, n] = parse_pair(v, "--winding LOOP:N");
@@ -163,6 +168,9 @@ Options parse(int argc, char** argv)
                                    p.given("--up"));
   if(!o.automatic && !o.singularities.empty())
     throw program::Usage_error("--no-automatic with --singularity: prescribed singularities are never automatic");
+  if(o.lattice && field_order(o.field) == 1)
+    throw program::Usage_error("--lattice-cones applies to line and cross fields (--field smoothest:2, smoothest:4, "
+                               "principal, trivial2:, trivial4:): a vector field has no branch points");
   if(!o.automatic && field_order(o.field) == 1)
     throw program::Usage_error("--no-automatic applies to line and cross fields (--field smoothest:2, smoothest:4, "
                                "principal, trivial2:, trivial4:): a vector field's singularities are never automatic");
@@ -535,6 +543,7 @@ int run_branched(const Options& o, const Mesh& mesh, const std::vector<Vector>& 
     throw program::Usage_error("--winding applies to vector fields: the windings of line and cross field stripes "
                                "are chosen automatically");
   SD::Branched_stripe_parameterizer bsp(mesh, SD::parameters::symmetry_order(n).sparse_linear_solver(solver));
+  bsp.set_lattice_branch_points(o.lattice); // before the field: one factorization
   bsp.set_field(CGAL::make_property_map(field), scale, o.convention);
   const std::vector<std::size_t> branch = bsp.branch_faces();
   std::cout << (n == 2 ? "line" : "cross") << " field " << o.field << ", " << scale << " stripes per unit length: "
@@ -573,6 +582,19 @@ int run_branched(const Options& o, const Mesh& mesh, const std::vector<Vector>& 
     }
   std::cout << "stripe singularities (" << singular << ", face:index" << (n == 4 ? ":family" : "")
             << "):" << listed.str() << (singular > 40 ? " ..." : "") << '\n';
+  if(o.lattice)
+  {
+    // the promise: every branch point at 0 modulo 2 pi, read back
+    for(std::size_t f : branch)
+    {
+      const auto c = bsp.branch_point_value(Mesh::Face_index(Mesh::size_type(f)));
+      for(int a = 0; a < bsp.number_of_families(); ++a)
+        if(std::abs(std::remainder(c[std::size_t(a)], 2. * CGAL_PI)) > 1e-8)
+          throw std::runtime_error("internal error: the branch point of face " + std::to_string(f) +
+                                   " is off the lattice (" + std::to_string(c[std::size_t(a)]) + ")");
+    }
+    std::cout << "branch points on the lattice: " << branch.size() << '\n';
+  }
 
   if(!o.output.empty())
   {

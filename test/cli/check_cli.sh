@@ -108,7 +108,8 @@ for args in "--field smoothest:3" "--field smoothest:" "--field smoothest:x" "--
             "--field smoothest:4 --singularity 100:1:2" "--singularity 100:1:1" "--singularity 100:1:-1" \
             "--singularity 100:1:x" "--field smoothest:4 --no-automatic --no-automatic" "--no-automatic" \
             "--field smoothest:2 --no-automatic --singularity 100:1" "--field smoothest:2 --singularity 100:2000000" \
-            "--isolines $O/i.txt" "--isolines $O/s.ply" "--isolines /nonexistent/i.obj" "--isolines"; do
+            "--isolines $O/i.txt" "--isolines $O/s.ply" "--isolines /nonexistent/i.obj" "--isolines" \
+            "--lattice-cones" "--field smoothest:4 --lattice-cones --lattice-cones" "--field smoothest:2 --lattice-cones=1"; do
   # shellcheck disable=SC2086
   refuse stripes "$B1K" $args --output "$O/s.ply"
 done
@@ -117,6 +118,7 @@ accept stripes "$B1K" --singularity 100:1 --singularity 400:-1 --isolines "$O/ve
 accept stripes "$B1K" --field smoothest:4 --singularity 100:1 --singularity 400:-1:1 --output "$O/cross.ply"
 accept stripes "$DATA/hemisphere.off" --field principal --no-automatic --output "$O/principal.ply"
 accept stripes "$DATA/torus.off" --field trivial4:10:1,500:-1 --output "$O/trivial.ply" --isolines "$O/trivial.obj"
+accept stripes "$B1K" --field smoothest:4 --lattice-cones --output "$O/cross_lattice.ply" --isolines "$O/cross_lattice.obj"
 
 }
 

@@ -201,7 +201,8 @@ public:
                                   std::to_string(m_n) + "): move the singularity first");
     // every system its own solver object (copies of Eigen's traits share one factorization)
     auto solver = std::make_unique<Solver>(m_idx, m_topology, cover, weights(cover), internal::new_solver_like(m_traits),
-                                           "twisted Laplacian of the stripes");
+                                           "twisted Laplacian of the stripes", spoke_weights(cover));
+    solver->set_lattice_branch_points(m_lattice);
     m_solver = std::move(solver);
     ++m_factorizations;
     m_convention = convention;
@@ -384,6 +385,49 @@ public:
     m_solved = true;
   }
   bool is_solved() const { return m_solved; }
+  /// Whether `solve()` puts every branch point on the lattice of the stripes: every stripe angle
+  /// 0 modulo 2 pi there, so that a line field's stripes run through its branch points and each
+  /// cone of a cross field is a crossing of the two families (the condition for their level-0
+  /// lines to form a quad mesh whose irregular vertices are the cones). The windings around pairs
+  /// of branch points are then chosen, optimally, among those that meet the parity conditions
+  /// this puts on them (`internal::Branched_one_form_solver`), and the edges of the branch faces
+  /// keep their weights (clamped at 0), so that a winding cannot be moved for free across a
+  /// branch face, which would fold the map around its cone. Off by default (the branch points at
+  /// 0 or pi, whichever costs less; the branch faces' weights dropped, as Knöppel et al.).
+  /// Switching it after `set_field()` factors the system again.
+  /// \throws Invalid_constraints from `solve()` when no windings meet the conditions (these are
+  ///         necessary for a quad mesh, not sufficient: the map may still fold)
+  /// \throws Linear_solver_failure if the new factorization fails; nothing changes then
+  void set_lattice_branch_points(bool on)
+  {
+    if(on == m_lattice)
+      return;
+    if(m_solver)
+    {
+      // the weights of the branch faces' edges change: a new factorization
+      const internal::Direction_field_cover cover = m_solver->cover();
+      m_lattice = on;
+      try
+      {
+        auto solver = std::make_unique<Solver>(m_idx, m_topology, cover, weights(cover),
+                                               internal::new_solver_like(m_traits), "twisted Laplacian of the stripes",
+                                               spoke_weights(cover));
+        solver->set_lattice_branch_points(on);
+        m_solver = std::move(solver);
+        update_omega();
+      }
+      catch(...)
+      {
+        m_lattice = !on;
+        throw;
+      }
+      ++m_factorizations;
+      m_relaxation.reset();
+    }
+    m_lattice = on;
+    m_solved = false;
+  }
+  bool lattice_branch_points() const { return m_lattice; }
   /// The sparse factorizations done so far: one per `set_field()`, one per relaxation of
   /// `place_automatic_singularities()`. Edits of the singularities and the frequency add none.
   std::size_t number_of_factorizations() const { return m_factorizations; }
@@ -553,9 +597,51 @@ private:
             ++regular;
             w[e] += 0.5 * m_cot[m_idx->index(g)];
           }
+          else if(m_lattice && !m_uniform)
+            w[e] += 0.5 * (std::max)(0., sub_triangle_cotangents(m_idx->index(face(g, m_tm)), g)[0]);
         }
       if(m_uniform)
         w[e] = double(regular) / double(faces);
+    }
+    return w;
+  }
+
+  // The cotangents in the triangle (source(h), target(h), o) of face f, o its centroid: at o, at
+  // source(h), at target(h).
+  std::array<double, 3> sub_triangle_cotangents(std::size_t f, halfedge_descriptor h) const
+  {
+    Eigen::Vector3d o = Eigen::Vector3d::Zero();
+    for(auto v : vertices_around_face(halfedge(m_idx->face(f), m_tm), m_tm))
+      o += internal::position(m_vpm, v) / 3.;
+    const Eigen::Vector3d a = internal::position(m_vpm, source(h, m_tm)), b = internal::position(m_vpm, target(h, m_tm));
+    auto cot = [](const Eigen::Vector3d& x, const Eigen::Vector3d& y) { return x.dot(y) / x.cross(y).norm(); };
+    return {cot(a - o, b - o), cot(b - a, o - a), cot(a - b, o - b)};
+  }
+
+  // With branch points on the lattice: the weights of the spokes from the corners of every branch
+  // face to its centroid o (the cotangent weights of the triangles (c_k, c_k+1, o): spoke k is
+  // opposite corner k+1 in one of them and corner k-1 in the other; at least 0), in the order of
+  // the corners (source(h), target(h), target(next(h)) for h = halfedge(f)); empty otherwise.
+  std::vector<std::array<double, 3>> spoke_weights(const internal::Direction_field_cover& cover) const
+  {
+    if(!m_lattice)
+      return {};
+    std::vector<std::array<double, 3>> w(m_idx->number_of_faces(), {0., 0., 0.});
+    for(std::size_t f = 0; f < w.size(); ++f)
+    {
+      if(cover.regular[f])
+        continue;
+      int k = 0;
+      for(auto h : halfedges_around_face(halfedge(m_idx->face(f), m_tm), m_tm))
+      {
+        // the triangle (c_k, c_k+1, o): its angle at c_k+1 is opposite spoke k, at c_k opposite spoke k+1
+        const std::array<double, 3> c = m_uniform ? std::array<double, 3>{1., 1., 1.} : sub_triangle_cotangents(f, h);
+        w[f][std::size_t(k)] += 0.5 * c[2];
+        w[f][std::size_t((k + 1) % 3)] += 0.5 * c[1];
+        ++k;
+      }
+      for(double& x : w[f])
+        x = (std::max)(0., x);
     }
     return w;
   }
@@ -595,6 +681,36 @@ private:
                            std::cos(sheet_angle(j, b) - frames.angle[m_idx->index(o)]));
       }
     }
+    if(!m_solver->has_spokes())
+      return;
+    // the spokes' targets: the field of the face's reference sheets at corner k integrated from
+    // the corner to the centroid o (on corner k, reference sheet a is sheet b of its vertex
+    // where the walk's transport M_k has its entry +-1)
+    std::vector<std::array<Value, 3>> target(m_idx->number_of_faces());
+    for(std::size_t f = 0; f < target.size(); ++f)
+    {
+      if(c.regular[f])
+        continue;
+      Eigen::Vector3d o = Eigen::Vector3d::Zero();
+      for(auto v : vertices_around_face(halfedge(m_idx->face(f), m_tm), m_tm))
+        o += internal::position(m_vpm, v) / 3.;
+      Eigen::Matrix2d M = Eigen::Matrix2d::Identity();
+      int k = 0;
+      for(auto h : halfedges_around_face(halfedge(m_idx->face(f), m_tm), m_tm))
+      {
+        const std::size_t v = m_idx->index(source(h, m_tm));
+        const Eigen::Vector3d x = internal::position(m_vpm, source(h, m_tm));
+        Value b = Value::Zero();
+        for(int a = 0; a < c.d; ++a)
+          for(int s2 = 0; s2 < c.d; ++s2)
+            if(M(a, s2) != 0.)
+              b[a] = nu * M(a, s2) * sheet_vector(v, s2).dot(o - x);
+        target[f][std::size_t(k)] = b;
+        M = M * m_solver->transition_along(m_idx->index(h));
+        ++k;
+      }
+    }
+    m_solver->set_spoke_targets(target);
   }
 
   // The walk around face f: beta[0..2] at its corners (unwrapped along its first two halfedges),
@@ -638,7 +754,7 @@ private:
   VertexPointMap m_vpm;
   SolverTraits m_traits;
   int m_n = 2;
-  bool m_uniform = false;
+  bool m_uniform = false, m_lattice = false;
   std::shared_ptr<const Indices> m_idx;
   std::shared_ptr<const internal::Topology> m_topology;
   internal::Discrete_connection m_connection;

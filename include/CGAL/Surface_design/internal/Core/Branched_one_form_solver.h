@@ -19,8 +19,10 @@
 
 #include <Eigen/Dense>
 
+#include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -64,6 +66,27 @@ namespace internal {
 /// integer step c minimizes 2 g^T c + c^T Q c; the corrected y is one more back-substitution with
 /// y* + 2 pi sum c_j eta_j. Directions whose harmonic part depends on the earlier ones (the global
 /// shift of alpha by pi makes one of them redundant on a twisted component) are left out.
+///
+/// **Branch points on the lattice** (`set_lattice_branch_points()`). Around a branch face f the
+/// walk of y returns as x -> M x + 2 pi t (M the product of the transitions, t the integer curl of
+/// y* + 2 pi sum c_j eta_j), so the branch point carries the fixed point p = 2 pi (I - M)^-1 t,
+/// and q = 2 (I - M)^-1 t = K t is an integer vector (K = the adjugate of I - M for a quarter
+/// turn, I for a half turn). p is 0 modulo 2 pi (a cone of a cross field on a lattice point, the
+/// condition for a quad mesh; a line field's branch point on a stripe) when q is even; the global
+/// shift of alpha by pi (1, 1), which keeps y, adds (1, 1) to every q of a component. The
+/// windings c are therefore chosen among those with K_f t_f = s (1, 1) (mod 2) at every branch
+/// face, s in {0, 1} per component: the coset offset + B z of a sublattice
+/// (`parity_coset()`), minimized over z exactly as before with the form B^T Q B; then alpha is
+/// shifted by pi where s = 1.
+///
+/// **Spokes.** Alone, these conditions are met for free by a jump of 2 pi across an edge of the
+/// branch face, where the map then folds around a branch point far from its corners' values. With
+/// spoke weights, the energy also holds the segments from the corners c_k of every branch face to
+/// its branch point o: sum_k w_k |(p - beta_k) - b_k|^2, with beta_k the corner values on the
+/// face's reference sheets (the walk), p - beta_k = (I - M)^-1 S_3 - S_k linear in y (S_k the walk
+/// of y to corner k), and targets b_k (`set_spoke_targets()`: the field integrated from c_k to o).
+/// This is the energy of the three triangles (c_k, c_k+1, o) on their spokes; W is then no longer
+/// diagonal: it couples the three edges of every branch face.
 template <class TriangleMesh, class SolverTraits>
 class Branched_one_form_solver
 {
@@ -81,9 +104,11 @@ public:
   };
 
   /// \param weight per edge, with the contributions of branch faces already removed
+  /// \param spoke_weight per face, empty or the weights of the three spokes from the corners of a
+  ///        branch face to its branch point (see the class documentation); 0 in regular faces
   Branched_one_form_solver(std::shared_ptr<const Indices> idx, std::shared_ptr<const Topology> topology,
                            const Direction_field_cover& cover, std::vector<double> weight, SolverTraits traits,
-                           const std::string& name)
+                           const std::string& name, const std::vector<std::array<double, 3>>& spoke_weight = {})
     : m_idx_ptr(std::move(idx)), m_topology_ptr(std::move(topology)), m_idx(*m_idx_ptr), m_topology(*m_topology_ptr), m_cover(cover), m_weight(std::move(weight)), m_system(std::move(traits), name)
   {
     const std::size_t ne = m_idx.number_of_edges();
@@ -95,6 +120,7 @@ public:
       m_ends[e] = m_idx.edge_vertices(e);
     }
     find_twisted_components();
+    collect_branch_faces(spoke_weight);
     build_forest();
     factor();
   }
@@ -110,6 +136,19 @@ public:
   /// transport is trivial): the optimality condition d_P^T W (y - omega) = 0 holds elsewhere.
   bool is_pinned(std::size_t v) const { return m_pinned[v]; }
 
+  /// The targets b_k of the spokes, per face (read in branch faces only), on the face's reference
+  /// sheets; 0 until set.
+  void set_spoke_targets(const std::vector<std::array<Value, 3>>& target)
+  {
+    for(Branch& b : m_branch)
+      b.target = target[b.face];
+  }
+  bool has_spokes() const { return m_spokes; }
+
+  /// Whether `solve()` puts every branch point at 0 modulo 2 pi (see the class documentation).
+  void set_lattice_branch_points(bool on) { m_lattice = on; }
+  bool lattice_branch_points() const { return m_lattice; }
+
   /// The minimizer for `omega` (per edge) and the integer indices `k` (per face, read in regular
   /// faces only; the faces' reference sheets as in the class documentation).
   /// \throws Invalid_constraints if, on an untwisted closed component, the indices of a sheet do
@@ -121,14 +160,18 @@ public:
     std::vector<Value> ystar = particular_solution(k);
     s.y = optimal_one_form(ystar, omega, &s.alpha);
     s.free_directions = m_free.size();
+    const bool lattice = m_lattice && !m_branch.empty();
+    if(lattice && m_free.empty())
+      shift_to_lattice(ystar, s.alpha); // nothing to choose
     if(!m_free.empty())
     {
       ensure_harmonic_basis();
       const std::size_t m = m_kept.size();
       Eigen::VectorXd g = Eigen::VectorXd::Zero(Eigen::Index(m));
+      const std::vector<Value> gradient = weighted_residual(s.y, &omega);
       for(std::size_t j = 0; j < m; ++j)
-        g[Eigen::Index(j)] = sparse_dot(m_eta[m_kept[j]], s.y, &omega);
-      const Eigen::VectorXi c = closest_integer_point(m_reduced, g);
+        g[Eigen::Index(j)] = sparse_dot(m_eta[m_kept[j]], gradient);
+      const Eigen::VectorXi c = lattice ? lattice_windings(g, ystar) : closest_integer_point(m_reduced, g);
       bool changed = false;
       for(std::size_t j = 0; j < m; ++j)
         if(c[Eigen::Index(j)] != 0)
@@ -160,6 +203,8 @@ public:
       }
       else if(changed)
         s.y = optimal_one_form(ystar, omega, &s.alpha);
+      if(lattice)
+        shift_to_lattice(ystar, s.alpha); // ystar holds the windings now
     }
     s.energy = energy(s.y, omega);
     return s;
@@ -170,6 +215,14 @@ public:
     double sum = 0.;
     for(std::size_t e = 0; e < y.size(); ++e)
       sum += m_weight[e] * (y[e] - omega[e]).head(m_cover.d).squaredNorm();
+    if(m_spokes)
+      for(const Branch& b : m_branch)
+        for(int k = 0; k < 3; ++k)
+        {
+          // the second values of a line field's spokes and targets are 0
+          const Value r = spoke(b, k, y) - b.target[std::size_t(k)];
+          sum += b.spoke_weight[std::size_t(k)] * r.squaredNorm();
+        }
     return sum;
   }
 
@@ -204,6 +257,181 @@ public:
   }
 
 private:
+  struct Branch;
+  // --- branch points on the lattice
+
+  // The branch faces, with K = 2 (I - M)^-1 (integer) of their monodromy M on the reference
+  // sheets, and their spokes: r_k = p - beta_k = sum_i R[k][i] y_(e_i) over the face's edges e_i.
+  void collect_branch_faces(const std::vector<std::array<double, 3>>& spoke_weight)
+  {
+    const int d = m_cover.d;
+    m_spokes = !spoke_weight.empty();
+    for(std::size_t f = 0; f < m_idx.number_of_faces(); ++f)
+    {
+      if(m_cover.regular[f])
+        continue;
+      Branch b;
+      // C_i: the coefficient of y_(e_i) in the walk (the peeling's), M_i the transport before it
+      std::array<Eigen::Matrix2d, 3> C;
+      Eigen::Matrix2d M = Eigen::Matrix2d::Identity();
+      int i = 0;
+      for(auto h : halfedges_around_face(halfedge(m_idx.face(f), m_idx.mesh()), m_idx.mesh()))
+      {
+        const std::size_t hi = m_idx.index(h), e = m_idx.edge_index(h);
+        b.edge[std::size_t(i)] = e;
+        C[std::size_t(i)] = m_idx.orientation_sign(h) > 0 ? M : Eigen::Matrix2d(-M * m_P[e].transpose());
+        M = M * transition_along(hi);
+        ++i;
+      }
+      Eigen::Matrix2d A = Eigen::Matrix2d::Identity() - M;
+      if(d == 1)
+        A(1, 1) = 1.; // the unused second value
+      const Eigen::Matrix2d Ainv = A.inverse();
+      const Eigen::Matrix2d K = 2. * Ainv;
+      b.face = f;
+      b.component = m_topology.components.face_component[f];
+      b.K.setZero();
+      for(int r = 0; r < d; ++r)
+        for(int c = 0; c < d; ++c)
+          b.K(r, c) = int(std::lround(K(r, c)));
+      for(std::size_t k = 0; k < 3; ++k)
+        for(std::size_t j = 0; j < 3; ++j)
+        {
+          b.R[k][j] = Ainv * C[j];
+          if(j < k)
+            b.R[k][j] -= C[j];
+          if(d == 1)
+            b.R[k][j].row(1).setZero(), b.R[k][j].col(1).setZero();
+        }
+      if(m_spokes)
+        b.spoke_weight = spoke_weight[f];
+      m_branch.push_back(b);
+    }
+  }
+
+  // r_k of branch b for the one-form y
+  Value spoke(const Branch& b, int k, const std::vector<Value>& y) const
+  {
+    Value r = Value::Zero();
+    for(std::size_t j = 0; j < 3; ++j)
+      r += b.R[std::size_t(k)][j] * y[b.edge[j]];
+    return r;
+  }
+
+  // W y - c, with c the linear term of the targets (W (y - omega) without spokes); y alone when
+  // omega is null (W y)
+  std::vector<Value> weighted_residual(const std::vector<Value>& y, const std::vector<Value>* omega) const
+  {
+    std::vector<Value> out(y.size());
+    for(std::size_t e = 0; e < y.size(); ++e)
+      out[e] = m_weight[e] * (omega ? Value(y[e] - (*omega)[e]) : y[e]);
+    if(m_spokes)
+      for(const Branch& b : m_branch)
+        for(int k = 0; k < 3; ++k)
+        {
+          Value r = spoke(b, k, y);
+          if(omega)
+            r -= b.target[std::size_t(k)];
+          r *= b.spoke_weight[std::size_t(k)];
+          for(std::size_t j = 0; j < 3; ++j)
+            out[b.edge[j]] += b.R[std::size_t(k)][j].transpose() * r;
+        }
+    return out;
+  }
+
+  // The integer curl t_f of a 2 pi-integer form at every branch face.
+  std::vector<Face_index> branch_curls(const std::vector<Value>& y) const
+  {
+    std::vector<Face_index> t(m_branch.size());
+    for(std::size_t b = 0; b < m_branch.size(); ++b)
+    {
+      const Value c = curl(y, m_branch[b].face) / two_pi;
+      t[b] = Face_index(int(std::lround(c[0])), int(std::lround(c[1])));
+    }
+    return t;
+  }
+
+  // q = K t modulo 2 (per sheet value) at branch b
+  Face_index branch_parity(std::size_t b, const Face_index& t) const
+  {
+    Face_index q = m_branch[b].K * t;
+    for(int a = 0; a < 2; ++a)
+      q[a] = ((q[a] % 2) + 2) % 2;
+    return q;
+  }
+
+  // The windings c (in the kept directions) minimizing 2 g^T c + c^T Q c among those that put
+  // every branch point at 0 or every branch point of a component at pi (1, 1) (the global shift
+  // of alpha then moves them all to 0).
+  Eigen::VectorXi lattice_windings(const Eigen::VectorXd& g, const std::vector<Value>& ystar)
+  {
+    const std::size_t m = m_kept.size(), d = std::size_t(m_cover.d);
+    std::vector<std::size_t> aux(m_topology.components.size(), npos);
+    std::size_t n_aux = 0;
+    for(const Branch& b : m_branch)
+      if(aux[b.component] == npos)
+        aux[b.component] = n_aux++;
+    const std::vector<Face_index> t0 = branch_curls(ystar);
+    std::vector<std::vector<std::uint8_t>> rows;
+    std::vector<std::uint8_t> rhs;
+    for(std::size_t b = 0; b < m_branch.size(); ++b)
+    {
+      const Face_index q0 = branch_parity(b, t0[b]);
+      for(std::size_t a = 0; a < d; ++a)
+      {
+        std::vector<std::uint8_t> row(m + n_aux, 0);
+        for(std::size_t j = 0; j < m; ++j)
+          row[j] = std::uint8_t(branch_parity(b, m_direction_curl[m_kept[j]][b])[Eigen::Index(a)]);
+        row[m + aux[m_branch[b].component]] = 1;
+        rows.push_back(std::move(row));
+        rhs.push_back(std::uint8_t(q0[Eigen::Index(a)]));
+      }
+    }
+    const Parity_coset coset = parity_coset(rows, rhs, m, n_aux);
+    if(!coset.feasible)
+      throw Invalid_constraints(
+        "the branch points of the field cannot all lie on the lattice of the stripes (every stripe angle 0 modulo "
+        "2 pi there): no choice of the windings meets the parity conditions of its " +
+        std::to_string(m_branch.size()) + " branch faces; move or add singularities");
+    if(!m_lattice_ready)
+    {
+      const Eigen::MatrixXd B = coset.basis.cast<double>();
+      m_lattice_basis = B;
+      m_lattice_reduced = reduce_integer_quadratic(B.transpose() * m_Q * B);
+      m_lattice_ready = true;
+    }
+    const Eigen::VectorXd c0 = coset.offset.cast<double>();
+    const Eigen::VectorXd g_lattice = m_lattice_basis.transpose() * (g + m_Q * c0);
+    const Eigen::VectorXi z = closest_integer_point(m_lattice_reduced, g_lattice);
+    return coset.offset + (m_lattice_basis * z.cast<double>()).array().round().cast<int>().matrix();
+  }
+
+  // After the windings: every branch point of a component is at 0, or all at pi (1, 1), shifted
+  // to 0 here (y is unchanged: (P_e - I) pi (1, 1) is a multiple of 2 pi). ystar with the
+  // windings (2 pi integers) gives t exactly.
+  void shift_to_lattice(const std::vector<Value>& ystar, std::vector<Value>& alpha) const
+  {
+    const std::vector<Face_index> t = branch_curls(ystar);
+    std::vector<int> shift(m_topology.components.size(), -1);
+    for(std::size_t b = 0; b < m_branch.size(); ++b)
+    {
+      const Face_index q = branch_parity(b, t[b]);
+      int& s = shift[m_branch[b].component];
+      const bool uniform = m_cover.d == 1 || q[0] == q[1];
+      if(s == -1 && uniform)
+        s = q[0];
+      if(!uniform || q[0] != s)
+        throw Invalid_constraints("the branch points of the field cannot all lie on the lattice of the stripes: the "
+                                  "windings found leave branch face " + std::to_string(m_branch[b].face) +
+                                  " off it; move or add singularities");
+    }
+    const double half = 0.5 * two_pi;
+    for(std::size_t v = 0; v < alpha.size(); ++v)
+      if(shift[m_topology.components.vertex_component[v]] == 1)
+        for(int a = 0; a < m_cover.d; ++a)
+          alpha[v][a] += half;
+  }
+
   // --- topology of the cover
 
   // A component is twisted when the transport of the sheets around some cycle is not the
@@ -426,6 +654,29 @@ private:
           add(j, i, b, a, -w * m_P[e](a, b));
         }
     }
+    // the spokes: r_k = sum_j R[k][j] (P_e alpha_second - alpha_first) = sum_v G_v alpha_v over the
+    // face's corners, and L += w_k G^T G
+    if(m_spokes)
+      for(const Branch& br : m_branch)
+        for(std::size_t k = 0; k < 3; ++k)
+        {
+          std::array<std::pair<std::size_t, Eigen::Matrix2d>, 6> G;
+          for(std::size_t j = 0; j < 3; ++j)
+          {
+            const std::size_t e = br.edge[j];
+            G[2 * j] = {m_ends[e].second, br.R[k][j] * m_P[e]};
+            G[2 * j + 1] = {m_ends[e].first, -br.R[k][j]};
+          }
+          const double w = br.spoke_weight[k];
+          for(const auto& [u, Gu] : G)
+            for(const auto& [v, Gv] : G)
+            {
+              const Eigen::Matrix2d block = w * Gu.transpose() * Gv;
+              for(int a = 0; a < d; ++a)
+                for(int b = 0; b < d; ++b)
+                  add(u, v, a, b, block(a, b));
+            }
+        }
     for(std::size_t v = 0; v < nv; ++v)
       if(m_pinned[v])
         for(int a = 0; a < d; ++a)
@@ -495,9 +746,10 @@ private:
   {
     const std::size_t d = std::size_t(m_cover.d), ne = ystar.size();
     Eigen::VectorXd b = Eigen::VectorXd::Zero(Eigen::Index(m_pinned.size() * d));
+    const std::vector<Value> residual = weighted_residual(ystar, omega);
     for(std::size_t e = 0; e < ne; ++e)
     {
-      const Value x = m_weight[e] * (omega ? Value((*omega)[e] - ystar[e]) : Value(-ystar[e]));
+      const Value x = -residual[e];
       const Value xj = m_P[e].transpose() * x;
       for(std::size_t a = 0; a < d; ++a)
       {
@@ -546,12 +798,12 @@ private:
     return y;
   }
 
-  // <eta, y - omega>_W (or <eta, y>_W without omega)
-  double sparse_dot(const Sparse_form& eta, const std::vector<Value>& y, const std::vector<Value>* omega) const
+  // <eta, x> for x = weighted_residual(...)
+  static double sparse_dot(const Sparse_form& eta, const std::vector<Value>& x)
   {
     double s = 0.;
     for(const auto& [e, v] : eta)
-      s += m_weight[e] * v.dot(omega ? Value(y[e] - (*omega)[e]) : y[e]);
+      s += v.dot(x[e]);
     return s;
   }
 
@@ -565,10 +817,12 @@ private:
     // Every direction and every response is independent of the others: concurrent tasks (TBB).
     const std::size_t m = m_free.size(), ne = m_idx.number_of_edges();
     std::vector<Sparse_form> eta(m);
+    std::vector<std::vector<Face_index>> curls(m);
     for_each_index(m, true, [&](std::size_t j) {
       std::vector<Value> y(ne, Value::Zero());
       y[m_free[j].edge][m_free[j].sheet] = two_pi;
       y = peel(std::move(y), nullptr);
+      curls[j] = branch_curls(y);
       for(std::size_t e = 0; e < ne; ++e)
         if(!y[e].isZero())
           eta[j].emplace_back(e, y[e]);
@@ -595,8 +849,9 @@ private:
         std::vector<Value> potential;
         const std::vector<Value> xi = one_form_of_potential(dense_form(eta[k], ne), potentials.col(Eigen::Index(c)),
                                                             keep_responses ? &potential : nullptr);
+        const std::vector<Value> w_xi = weighted_residual(xi, nullptr);
         for(std::size_t j = 0; j < m; ++j)
-          full(Eigen::Index(j), Eigen::Index(k)) = sparse_dot(eta[j], xi, nullptr);
+          full(Eigen::Index(j), Eigen::Index(k)) = sparse_dot(eta[j], w_xi);
         if(keep_responses)
         {
           response[k].y.resize(ne * d);
@@ -638,6 +893,7 @@ private:
     m_reduced = reduce_integer_quadratic(Q);
     m_Q = std::move(Q);
     m_eta = std::move(eta);
+    m_direction_curl = std::move(curls);
     m_response.clear();
     if(keep_responses)
       for(std::size_t j : kept)
@@ -689,6 +945,22 @@ private:
   std::vector<Response> m_response; // per kept direction, or empty
   Eigen::MatrixXd m_Q;
   Reduced_integer_quadratic m_reduced;
+  // branch points on the lattice
+  struct Branch
+  {
+    std::size_t face = 0, component = 0;
+    Eigen::Matrix2i K;
+    std::array<std::size_t, 3> edge{};
+    std::array<std::array<Eigen::Matrix2d, 3>, 3> R; // R[k][j]: the coefficient of y_(edge j) in spoke k
+    std::array<double, 3> spoke_weight{0., 0., 0.};
+    std::array<Value, 3> target{Value::Zero(), Value::Zero(), Value::Zero()};
+  };
+  bool m_spokes = false;
+  std::vector<Branch> m_branch;
+  std::vector<std::vector<Face_index>> m_direction_curl; // per free direction, at every branch face
+  bool m_lattice = false, m_lattice_ready = false;
+  Eigen::MatrixXd m_lattice_basis;
+  Reduced_integer_quadratic m_lattice_reduced;
 };
 
 } // namespace internal

@@ -120,9 +120,16 @@ public:
         used[segment] = true;
         line.faces.push_back(m_segments[segment].face);
         const std::size_t next = m_segments[segment].a == at ? m_segments[segment].b : m_segments[segment].a;
-        if(next == start)
+        if(next == start && adjacent[start].size() == 2)
         {
           line.closed = true;
+          break;
+        }
+        if(next == start)
+        {
+          // back at the point where it started, where other lines end too (a branch point on
+          // the lattice): an open line with both ends there, not a loop
+          line.points.push_back(m_points[next]);
           break;
         }
         line.points.push_back(m_points[next]);

@@ -1,7 +1,8 @@
 // Copyright (c) 2026 The CGAL Surface Design authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// A small integer quadratic minimizer: the loop windings of the periodic one-form solvers.
+// A small integer quadratic minimizer: the loop windings of the periodic one-form solvers, and
+// the integer points with prescribed parities (the windings that put the cones on the lattice).
 
 #ifndef CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_INTEGER_QUADRATIC_H
 #define CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_INTEGER_QUADRATIC_H
@@ -11,6 +12,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -267,6 +270,109 @@ inline Eigen::VectorXi closest_integer_point(const Reduced_integer_quadratic& re
     }
   }
   return back(best);
+}
+
+/// The integer points x in Z^n whose parities solve a linear system modulo 2 for some values of
+/// n_aux auxiliary binary unknowns s: A (x, s) = b (mod 2), each row of A holding n + n_aux
+/// entries 0 or 1. They are x = offset + basis z, z in Z^n: `offset` in {0, 1}^n, `basis` (n x n,
+/// integer) a basis of the lattice {x : A (x, s) = 0 (mod 2) for some s}, of index 2^(n - r) in
+/// Z^n where r is the dimension over GF(2) of the parities it allows. `feasible` is false when no
+/// x solves the system (then offset and basis are empty).
+struct Parity_coset
+{
+  bool feasible = false;
+  Eigen::VectorXi offset;
+  Eigen::MatrixXi basis;
+};
+
+inline Parity_coset parity_coset(std::vector<std::vector<std::uint8_t>> A, std::vector<std::uint8_t> b,
+                                 std::size_t n, std::size_t n_aux)
+{
+  const std::size_t cols = n + n_aux, rows = A.size();
+  // reduced row echelon form over GF(2), the auxiliary columns eliminated first
+  std::vector<std::size_t> order;
+  for(std::size_t j = n; j < cols; ++j)
+    order.push_back(j);
+  for(std::size_t j = 0; j < n; ++j)
+    order.push_back(j);
+  std::vector<std::pair<std::size_t, std::size_t>> pivots; // (column, row)
+  std::vector<bool> is_pivot(cols, false);
+  std::size_t rank = 0;
+  for(std::size_t col : order)
+  {
+    std::size_t r = rank;
+    while(r < rows && !A[r][col])
+      ++r;
+    if(r == rows)
+      continue;
+    std::swap(A[r], A[rank]);
+    std::swap(b[r], b[rank]);
+    for(std::size_t i = 0; i < rows; ++i)
+      if(i != rank && A[i][col])
+      {
+        for(std::size_t j = 0; j < cols; ++j)
+          A[i][j] ^= A[rank][j];
+        b[i] ^= b[rank];
+      }
+    pivots.emplace_back(col, rank);
+    is_pivot[col] = true;
+    ++rank;
+  }
+  Parity_coset result;
+  for(std::size_t i = rank; i < rows; ++i)
+    if(b[i])
+      return result; // 0 = 1
+  result.feasible = true;
+  // the particular solution with the free unknowns at 0, restricted to x
+  result.offset = Eigen::VectorXi::Zero(Eigen::Index(n));
+  for(const auto& [col, row] : pivots)
+    if(col < n)
+      result.offset[Eigen::Index(col)] = b[row];
+  // the null space (one vector per free column) restricted to x, then brought to reduced echelon
+  // form: the parities x may take are offset + its span
+  std::vector<std::vector<std::uint8_t>> span;
+  for(std::size_t free_col = 0; free_col < cols; ++free_col)
+  {
+    if(is_pivot[free_col])
+      continue;
+    std::vector<std::uint8_t> v(n, 0);
+    if(free_col < n)
+      v[free_col] = 1;
+    for(const auto& [col, row] : pivots)
+      if(col < n)
+        v[col] = A[row][free_col];
+    span.push_back(std::move(v));
+  }
+  std::vector<std::size_t> span_pivot;
+  std::size_t r = 0;
+  for(std::size_t col = 0; col < n && r < span.size(); ++col)
+  {
+    std::size_t i = r;
+    while(i < span.size() && !span[i][col])
+      ++i;
+    if(i == span.size())
+      continue;
+    std::swap(span[i], span[r]);
+    for(std::size_t k = 0; k < span.size(); ++k)
+      if(k != r && span[k][col])
+        for(std::size_t j = 0; j < n; ++j)
+          span[k][j] ^= span[r][j];
+    span_pivot.push_back(col);
+    ++r;
+  }
+  // basis: the r echelon vectors, and 2 e_j for every other column (determinant 2^(n - r))
+  result.basis = Eigen::MatrixXi::Zero(Eigen::Index(n), Eigen::Index(n));
+  std::vector<bool> covered(n, false);
+  for(std::size_t k = 0; k < r; ++k)
+  {
+    covered[span_pivot[k]] = true;
+    for(std::size_t j = 0; j < n; ++j)
+      result.basis(Eigen::Index(j), Eigen::Index(span_pivot[k])) = span[k][j];
+  }
+  for(std::size_t j = 0; j < n; ++j)
+    if(!covered[j])
+      result.basis(Eigen::Index(j), Eigen::Index(j)) = 2;
+  return result;
 }
 
 } // namespace internal
