@@ -390,8 +390,9 @@ public:
   /// cone of a cross field is a crossing of the two families (the condition for their level-0
   /// lines to form a quad mesh whose irregular vertices are the cones). The windings around pairs
   /// of branch points are then chosen, optimally, among those that meet the parity conditions
-  /// this puts on them (`internal::Branched_one_form_solver`), and the edges of the branch faces
-  /// keep their weights (clamped at 0), so that a winding cannot be moved for free across a
+  /// this puts on them (`internal::Branched_one_form_solver`), and the energy also holds each
+  /// branch face as the three triangles from its edges to its branch point (the spokes, with
+  /// their cotangent weights clamped at 0), so that a winding cannot be moved for free across a
   /// branch face, which would fold the map around its cone. Off by default (the branch points at
   /// 0 or pi, whichever costs less; the branch faces' weights dropped, as Knöppel et al.).
   /// Switching it after `set_field()` factors the system again.
