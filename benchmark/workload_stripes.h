@@ -247,7 +247,9 @@ template <class SolverTraits>
 std::size_t field_then_stripes(const Mesh& mesh, bool shared, std::vector<Kernel::Vector_3>& field,
                                std::optional<Parameterizer<SolverTraits>>& fap, Run* run)
 {
-  auto [field_traits, stripe_traits] = traits_pair<SolverTraits>(shared);
+  auto traits = traits_pair<SolverTraits>(shared); // not a structured binding: the lambdas capture them
+  auto& field_traits = traits.first;
+  auto& stripe_traits = traits.second;
   auto timed = [run](const char* name, auto&& f) {
     if(run)
       run->phase(name, f);
@@ -297,7 +299,9 @@ template <class SolverTraits>
 void run_branched_stripes(const Mesh& mesh, int n, Run& run)
 {
   using Branched = SD::Branched_stripe_parameterizer<Mesh, Vertex_point_map, SolverTraits>;
-  auto [field_traits, stripe_traits] = traits_pair<SolverTraits>(true);
+  auto traits = traits_pair<SolverTraits>(true); // not a structured binding: the lambdas capture them
+  auto& field_traits = traits.first;
+  auto& stripe_traits = traits.second;
   std::vector<Kernel::Vector_3> field(num_vertices(mesh));
   SD::Smoothest_direction_field_result info;
   run.phase("field", [&] {

@@ -320,11 +320,11 @@ TEST_CASE("Max of quadratics: L-BFGS finds the minimum on the ridge and at a cor
     Max_of_quadratics f;
     VectorXd start;
   };
-  std::vector<Case> cases;
-  cases.push_back({"ridge of 2 quadratics n = 2", ridge_problem(2), (VectorXd(2) << 2., 1.5).finished()});
-  cases.push_back({"ridge of 2 quadratics n = 6", ridge_problem(6), VectorXd::Constant(6, 1.)});
-  cases.push_back({"corner of 3 quadratics n = 2", corner_problem(), (VectorXd(2) << -1., 2.).finished()});
-  for(const Case& c : cases)
+  std::vector<Case> problems;
+  problems.push_back({"ridge of 2 quadratics n = 2", ridge_problem(2), (VectorXd(2) << 2., 1.5).finished()});
+  problems.push_back({"ridge of 2 quadratics n = 6", ridge_problem(6), VectorXd::Constant(6, 1.)});
+  problems.push_back({"corner of 3 quadratics n = 2", corner_problem(), (VectorXd(2) << -1., 2.).finished()});
+  for(const Case& c : problems)
   {
     // the construction: every piece active at x*, value E*
     for(std::size_t i = 0; i < c.f.q.size(); ++i)

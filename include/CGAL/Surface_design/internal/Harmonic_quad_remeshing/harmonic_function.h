@@ -101,7 +101,9 @@ inline std::vector<double> edge_distances(const Trace_mesh& m, const std::vector
 inline std::vector<std::pair<std::size_t, double>>
 default_constraints(const Trace_mesh& m, bool protrusions, double tip_radius_ratio = 0.25)
 {
-  const auto [comp, ncomp] = vertex_components(m);
+  const auto components = vertex_components(m);
+  const auto& comp = components.first; // a reference, not a structured binding: the lambdas capture it
+  const std::size_t ncomp = components.second;
   std::vector<std::pair<std::size_t, double>> out;
   std::vector<std::size_t> first(ncomp, npos);
   for(std::size_t v = 0; v < m.number_of_vertices(); ++v)
