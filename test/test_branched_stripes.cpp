@@ -15,10 +15,12 @@
 #include <CGAL/Surface_design/internal/Solvers/integer_quadratic.h>
 
 #include <CGAL/Bbox_3.h>
+#include <CGAL/Random.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <boost/property_map/function_property_map.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -295,7 +297,8 @@ void check_pattern(const Parameterizer& p)
       for(double t : {0.25, 0.6})
       {
         const double e = 1e-10; // the values move by about e times the corner values (tens of radians)
-        const std::array<double, 3> on{1. - t + t / 3., t / 3., t / 3.};
+        const auto o = p.branch_point(fd);
+        const std::array<double, 3> on{1. - t + t * o[0], t * o[1], t * o[2]};
         std::array<double, 2> x{0., 0.}, y{0., 0.};
         for(int a = 0; a < families; ++a)
         {
@@ -1154,7 +1157,7 @@ TEST_CASE("Integer points of given parities: the coset against brute force", "[b
   REQUIRE(infeasible_seen > 20);
 }
 
-// The isolines that end at the branch point of branch face f (its centroid), by level (0 or pi).
+// The isolines that end at the branch point of branch face f, by level (0 or pi).
 template <class Parameterizer>
 std::array<std::size_t, 2> ends_at_branch_point(const Parameterizer& p,
                                                 const std::vector<typename Parameterizer::Isoline>& lines,
@@ -1162,11 +1165,16 @@ std::array<std::size_t, 2> ends_at_branch_point(const Parameterizer& p,
 {
   const auto& idx = p.indices();
   const auto& tm = idx.mesh();
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  for(auto v : vertices_around_face(halfedge(idx.face(f), tm), tm))
+  const auto o = p.branch_point(idx.face(f));
+  // the corners in the order of corner_values(): source(h), target(h), target(next(h))
+  // (vertices_around_face() starts at target(h))
+  const auto h = halfedge(idx.face(f), tm);
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  std::size_t k = 0;
+  for(auto v : {source(h, tm), target(h, tm), target(next(h, tm), tm)})
   {
     const auto q = get(CGAL::vertex_point, tm, v);
-    centroid += Eigen::Vector3d(q.x(), q.y(), q.z()) / 3.;
+    point += o[k++] * Eigen::Vector3d(q.x(), q.y(), q.z());
   }
   std::array<std::size_t, 2> count{0, 0};
   for(const auto& line : lines)
@@ -1174,10 +1182,63 @@ std::array<std::size_t, 2> ends_at_branch_point(const Parameterizer& p,
     if(line.closed || line.points.empty())
       continue;
     for(const auto& q : {line.points.front(), line.points.back()})
-      if((Eigen::Vector3d(q.x(), q.y(), q.z()) - centroid).norm() < tolerance)
+      if((Eigen::Vector3d(q.x(), q.y(), q.z()) - point).norm() < tolerance)
         ++count[std::abs(line.level) < 1e-9 ? 0 : 1];
   }
   return count;
+}
+
+TEST_CASE("The branch point: the face's Fermat point, kept away from its edges", "[branched_stripes][lattice]")
+{
+  using V = Eigen::Vector3d;
+  auto point = [](const std::array<V, 3>& x, const std::array<double, 3>& b) { return V(b[0] * x[0] + b[1] * x[1] + b[2] * x[2]); };
+  auto angle = [](const V& p, const V& q) { return std::atan2(p.cross(q).norm(), p.dot(q)); };
+  // an equilateral triangle: its centroid
+  const std::array<V, 3> equilateral{V(0, 0, 0), V(1, 0, 0), V(0.5, std::sqrt(3.) / 2., 0)};
+  for(double b : SDI::branch_point_barycentric(equilateral))
+    REQUIRE(std::abs(b - 1. / 3.) < 1e-12);
+  // triangles with every angle below 120 degrees (in 3D): each edge seen under 120 degrees
+  CGAL::Random rng(7);
+  std::size_t acute = 0;
+  for(int trial = 0; trial < 300; ++trial)
+  {
+    std::array<V, 3> x;
+    for(V& p : x)
+      p = V(rng.get_double(-1, 1), rng.get_double(-1, 1), rng.get_double(-1, 1));
+    double largest = 0.;
+    for(int i = 0; i < 3; ++i)
+      largest = (std::max)(largest, angle(x[(i + 1) % 3] - x[i], x[(i + 2) % 3] - x[i]));
+    const auto b = SDI::branch_point_barycentric(x);
+    REQUIRE(std::abs(b[0] + b[1] + b[2] - 1.) < 1e-12);
+    for(double c : b)
+      REQUIRE(c >= 0.1 - 1e-12); // inside, away from the edges
+    const V o = point(x, b);
+    // an angle well below 120 degrees, and no coordinate at the floor: the Fermat point itself
+    if(largest < 2. * SDI::pi / 3. - 0.2 && *std::min_element(b.begin(), b.end()) > 0.1 + 1e-9)
+    {
+      ++acute;
+      for(int i = 0; i < 3; ++i)
+        REQUIRE(std::abs(angle(x[i] - o, x[(i + 1) % 3] - o) - 2. * SDI::pi / 3.) < 1e-9);
+    }
+    // the sub-triangle of any point: it is rebuilt from its coordinates there, all of them >= 0
+    for(int k = 0; k < 5; ++k)
+    {
+      std::array<double, 3> q{rng.get_double(), rng.get_double(), rng.get_double()};
+      const double sum = q[0] + q[1] + q[2];
+      for(double& c : q)
+        c /= sum;
+      const auto [opposite, l] = SDI::branch_sub_triangle(b, q);
+      const std::size_t i = std::size_t((opposite + 1) % 3), j = std::size_t((opposite + 2) % 3);
+      std::array<double, 3> rebuilt{l[2] * b[0], l[2] * b[1], l[2] * b[2]};
+      rebuilt[i] += l[0];
+      rebuilt[j] += l[1];
+      for(int c = 0; c < 3; ++c)
+        REQUIRE(std::abs(rebuilt[std::size_t(c)] - q[std::size_t(c)]) < 1e-12);
+      for(double c : l)
+        REQUIRE(c >= -1e-12);
+    }
+  }
+  REQUIRE(acute > 30);
 }
 
 TEMPLATE_TEST_CASE("Branch points on the lattice: the lines end at every cone, 4 - k of them where the map is injective",

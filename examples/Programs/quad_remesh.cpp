@@ -2,12 +2,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // quad_remesh: quad remeshing from the isolines and gradient lines of a harmonic
-// function (Dong, Kircher & Garland 2005; Nagano & Imai). Run without arguments for the usage.
+// function (Dong, Kircher & Garland 2005; Nagano & Imai), or from the lines of a cross field's
+// two stripe families (--method field). Run without arguments for the usage.
 
 #include "common/option_parser.h"
 #include "common/program_support.h"
 
 #include <CGAL/Surface_design/Harmonic_quad_remesher.h>
+#include <CGAL/Surface_design/Trivial_connection.h>
+#include <CGAL/Surface_design/direction_fields.h>
+#include <CGAL/Surface_design/field_aligned_quad_remeshing.h>
 #include <CGAL/Surface_design/quad_mesh_quality.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -16,7 +20,9 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace SD = CGAL::Surface_design;
@@ -28,19 +34,36 @@ namespace {
 
 const char* usage =
   "usage: quad_remesh INPUT --output OUT.off [options]\n"
-  "  Remeshes a manifold triangle mesh into a quad mesh: the net of the isolines and gradient\n"
-  "  lines of a harmonic function (Dong, Kircher & Garland 2005), its odd faces paired into quads.\n"
-  "  The result has the input's topology (Euler characteristic, boundary loops, components): when\n"
-  "  the net comes out otherwise, the program falls back (without spectacles, the intrinsic\n"
-  "  Delaunay Laplacian, h / 2 near the saddles, h / sqrt 2, h / 2) and, if none works, fails\n"
-  "  (exit 1, no file).\n"
-  "options:\n"
+  "  Remeshes a manifold triangle mesh into a quad mesh with the input's topology (Euler\n"
+  "  characteristic, boundary loops, components), or fails (exit 1, no file).\n"
+  "  --method harmonic (default): the net of the isolines and gradient lines of a harmonic function\n"
+  "  (Dong, Kircher & Garland 2005), its odd faces paired into quads; any manifold mesh. When the\n"
+  "  net comes out with another topology, the program falls back (without spectacles, the intrinsic\n"
+  "  Delaunay Laplacian, h / 2 near the saddles, h / sqrt 2, h / 2).\n"
+  "  --method field: the lines of the two stripe families of a cross field with its cones on the\n"
+  "  lattice: pure quads whose irregular vertices are exactly the field's cones (valence 3 at +1/4,\n"
+  "  5 at -1/4); closed meshes. Where the lines do not form such a mesh, h is tried 5% smaller and\n"
+  "  5% larger before the program fails.\n"
+  "options of both methods:\n"
+  "  --method harmonic|field\n"
+  "  --edge-length H       target edge length (default: sqrt(area / 3000), about 3000 faces)\n"
+  "  --target-faces N      about N faces: edge length sqrt(area / N) (not with --edge-length)\n"
+  "options of --method field:\n"
+  "  --field smoothest|principal  the cross field: the smoothest one (Knoeppel et al. 2013, default)\n"
+  "                        or the smoothest one aligned with the principal curvature directions\n"
+  "  --cone-distance D     automatic cones at least D h apart (default 1; 0 keeps the field's): closer\n"
+  "                        pairs of opposite index are removed, others moved apart, and the field is\n"
+  "                        the trivial connection with those cones (Crane et al. 2010)\n"
+  "  --singularity FACE:K/4  a cone of index K/4 (K = 1 or -1) in FACE (repeatable): the field is the\n"
+  "                        trivial connection with exactly these cones (they must sum to the Euler\n"
+  "                        characteristic)\n"
+  "  --stiffening-rounds R rounds of local stiffening where the map folds (default 10, R in [0, 64])\n"
+  "options of --method harmonic:\n"
   "  --min V               vertex V is a minimum of the function (value 0); repeatable\n"
   "  --max V               vertex V is a maximum (value 1); repeatable. Without --min/--max:\n"
   "                        a minimum and a maximum at the ends of a geodesic diameter of every\n"
   "                        component, and a maximum at every tip of the shape\n"
   "  --no-protrusions      default constraints without the maxima at the tips\n"
-  "  --edge-length H       target edge length (default: sqrt(area / 3000), about 3000 faces)\n"
   "  --curvature-adaptation A  spacing h / (1 + A h kappa), at least h / 4, kappa the curvature\n"
   "                        across the input's edges: finer where the surface bends (default 0: uniform;\n"
   "                        A in [0, 1000])\n"
@@ -55,6 +78,7 @@ const char* usage =
   "  --no-feature-snapping keep the net's positions (default: interior input vertices and points\n"
   "                        along its creases farther than h / 4 from the result, a pit, a spike or a\n"
   "                        crease narrower than h, pull the nearest vertex onto them)\n"
+  "common options:\n"
   "  --solver S            sparse solver: default (simplicial LDLT below 20k\n"
   "                        unknowns, supernodal Cholesky above), ldlt, supernodal, cholmod\n"
   "  --output OUT          the quad mesh (.off, .obj or .ply); required\n"
@@ -63,9 +87,11 @@ const char* usage =
 
 struct Options
 {
-  std::string input, output, picture, up = "+Y", solver = "default";
+  std::string input, output, picture, up = "+Y", solver = "default", method = "harmonic", field = "smoothest";
   std::vector<long> minima, maxima;
-  double edge_length = 0., curvature_adaptation = 0.;
+  std::map<long, int> cones; // --singularity FACE:K/4
+  double edge_length = 0., target_faces = 0., curvature_adaptation = 0., cone_distance = 1.;
+  int stiffening_rounds = 10;
   bool protrusions = true, intrinsic_delaunay = false, quad_poles = true, spectacles = true,
        all_quads = true, feature_snapping = true;
 };
@@ -78,6 +104,28 @@ Options parse(int argc, char** argv)
   };
   program::Option_parser p;
   p.input(o.input)
+    .value("--method", [&](const std::string& v) { o.method = program::parse_choice(v, "--method", {"harmonic", "field"}); })
+    .value("--target-faces",
+           [&](const std::string& v) { o.target_faces = double(program::parse_integer(v, "--target-faces", 1, 10000000)); })
+    .value("--field", [&](const std::string& v) { o.field = program::parse_choice(v, "--field", {"smoothest", "principal"}); })
+    .value("--cone-distance", [&](const std::string& v) { o.cone_distance = program::parse_double(v, "--cone-distance", 0., 100.); })
+    .repeated("--singularity",
+              [&](const std::string& v) {
+                const char* what = "--singularity FACE:K/4";
+                const auto slash = v.rfind("/4");
+                if(slash == std::string::npos || slash + 2 != v.size())
+                  throw program::Usage_error(std::string("expected ") + what + " (K = 1 or -1), got '" + v + "'");
+                const auto [f, k] = program::parse_pair(v.substr(0, slash), what);
+                if(f < 0)
+                  throw program::Usage_error("--singularity: face numbers start at 0, got " + std::to_string(f));
+                if(k != 1 && k != -1)
+                  throw program::Usage_error("--singularity: a cone of a quad mesh has index 1/4 or -1/4, got " +
+                                             std::to_string(k) + "/4");
+                if(!o.cones.emplace(f, int(k)).second)
+                  throw program::Usage_error("--singularity: face " + std::to_string(f) + " is given more than once");
+              })
+    .value("--stiffening-rounds",
+           [&](const std::string& v) { o.stiffening_rounds = int(program::parse_integer(v, "--stiffening-rounds", 0, 64)); })
     .repeated("--min", vertex(o.minima, "--min"))
     .repeated("--max", vertex(o.maxima, "--max"))
     .flag("--no-protrusions", [&] { o.protrusions = false; })
@@ -95,6 +143,17 @@ Options parse(int argc, char** argv)
     .parse(argc, argv);
   if(o.output.empty())
     throw program::Usage_error("--output OUT.off is required");
+  if(p.given("--edge-length") && p.given("--target-faces"))
+    throw program::Usage_error("give --edge-length or --target-faces, not both");
+  for(const char* option : {"--field", "--cone-distance", "--singularity", "--stiffening-rounds"})
+    if(p.given(option) && o.method != "field")
+      throw program::Usage_error(std::string(option) + " applies to --method field");
+  for(const char* option : {"--min", "--max", "--no-protrusions", "--curvature-adaptation", "--intrinsic-delaunay",
+                            "--triangle-poles", "--no-spectacles", "--quad-dominant", "--no-feature-snapping"})
+    if(p.given(option) && o.method != "harmonic")
+      throw program::Usage_error(std::string(option) + " applies to --method harmonic");
+  if(!o.cones.empty() && (p.given("--field") || p.given("--cone-distance")))
+    throw program::Usage_error("--singularity sets the cones of the field: not with --field or --cone-distance");
   if(o.minima.empty() != o.maxima.empty())
     throw program::Usage_error("give both --min and --max vertices (constraints on one value only leave the "
                                "function constant), or neither for the default constraints");
@@ -169,6 +228,140 @@ void write_picture(const Mesh& input, const Mesh& quads, const Options& o, progr
   program::render_png(vtk_path, outputs.stage(o.picture), "shade", 0., 3., o.up, colormap);
 }
 
+// The quality report of the result, then the files; fails if the result is not valid or has
+// another topology than the input.
+int report_and_write(const Mesh& input, const Mesh& quads, const Options& o, program::Stopwatch& clock)
+{
+  const SD::Quad_mesh_quality q = SD::quad_mesh_quality(quads, input);
+  std::printf("output: %zu vertices, %zu faces: %zu triangles, %zu quads, %zu pentagons, %zu hexagons, %zu larger; "
+              "%.1f%% quads (%.1f%% of the area)\n",
+              q.vertices, q.faces, q.faces_by_sides[0], q.faces_by_sides[1], q.faces_by_sides[2], q.faces_by_sides[3],
+              q.faces_by_sides[4], 100. * q.quad_fraction, 100. * q.quad_area_fraction);
+  std::printf("  %zu irregular vertices, %zu T-junctions; quad corners |angle - 90| mean %.1f rms %.1f max %.1f deg; "
+              "edge length %.4g (variation %.2f)\n",
+              q.irregular_vertices, q.t_junctions, q.angle_deviation_mean, q.angle_deviation_rms,
+              q.angle_deviation_max, q.edge_length_mean, q.edge_length_variation);
+  std::printf("  Hausdorff distance %.3g%% of the bounding-box diagonal; %s, Euler characteristic %ld, %zu boundary "
+              "loops, %zu components (%s the input's)\n",
+              100. * q.relative_hausdorff_distance, q.valid ? "valid" : "INVALID", q.euler_characteristic,
+              q.boundary_loops, q.connected_components, q.same_topology ? "as" : "NOT as");
+
+  if(!q.valid || !q.same_topology) // (the remesher checks this: a second look before writing)
+    throw std::runtime_error("the quad mesh is not a valid mesh with the input's topology (a bug: please report it "
+                             "with the input mesh); nothing written");
+  program::Output_files outputs;
+  if(!CGAL::IO::write_polygon_mesh(outputs.stage(o.output), quads, CGAL::parameters::stream_precision(17)))
+    throw std::runtime_error("cannot write " + o.output);
+  if(!o.picture.empty())
+    write_picture(input, quads, o, outputs);
+  outputs.commit();
+  std::printf("total %.3f s\n", clock.lap() / 1000.);
+  return 0;
+}
+
+// --edge-length, or sqrt(area / N) with --target-faces N; 0 without either (the default).
+double edge_length(const Mesh& input, const Options& o)
+{
+  if(o.edge_length > 0.)
+    return o.edge_length;
+  if(!(o.target_faces > 0.))
+    return 0.;
+  double area = 0.;
+  for(auto f : faces(input))
+  {
+    const auto h = halfedge(f, input);
+    const Eigen::Vector3d a = eigen(input.point(source(h, input))), b = eigen(input.point(target(h, input))),
+                          c = eigen(input.point(target(next(h, input), input)));
+    area += 0.5 * (b - a).cross(c - a).norm();
+  }
+  return std::sqrt(area / o.target_faces);
+}
+
+template <class Traits>
+int run_field(const Options& o, Traits traits)
+{
+  program::Stopwatch clock;
+  const Mesh input = program::read_mesh(o.input);
+  const long chi = long(num_vertices(input)) - long(num_edges(input)) + long(num_faces(input));
+  std::cout << "read " << o.input << ": " << num_vertices(input) << " vertices, " << num_faces(input)
+            << " faces, Euler characteristic " << chi << '\n';
+  if(!CGAL::is_closed(input))
+    throw std::runtime_error("--method field takes closed meshes (the lines do not follow a boundary yet): use "
+                             "--method harmonic for this one; nothing written");
+  double h = edge_length(input, o);
+  if(!(h > 0.))
+  {
+    Options with_default = o;
+    with_default.target_faces = 3000.;
+    h = edge_length(input, with_default);
+  }
+  for(const auto& [f, k] : o.cones)
+    if(std::size_t(f) >= num_faces(input))
+      throw program::Usage_error("--singularity " + std::to_string(f) + ":" + std::to_string(k) + "/4: the mesh has " +
+                                 std::to_string(num_faces(input)) + " faces");
+
+  // the cross field
+  Mesh mesh = input; // with the field as a property
+  auto field = mesh.add_property_map<Mesh::Vertex_index, program::Vector>("v:cross_field").first;
+  SD::Trivial_connection tc(mesh, P::symmetry_order(4, CGAL::parameters::sparse_linear_solver(traits)));
+  if(!o.cones.empty())
+  {
+    for(const auto& [f, k] : o.cones)
+      tc.set_index(std::size_t(f), k);
+    tc.solve();
+    tc.field(field);
+    std::printf("cross field: trivial connection with the %zu prescribed cones (largest adjustment %.3g rad)\n",
+                o.cones.size(), tc.largest_adjustment());
+  }
+  else
+  {
+    const double weight = o.field == "principal" ? 0.1 : 0.;
+    SD::smoothest_direction_field(
+      mesh, field, P::symmetry_order(4, P::curvature_alignment_weight(weight, CGAL::parameters::sparse_linear_solver(traits))));
+    auto index = mesh.add_property_map<Mesh::Face_index, int>("f:cone", 0).first;
+    const std::size_t cones = SD::direction_field_singularities(mesh, field, index, P::symmetry_order(4));
+    std::printf("cross field: %s, %zu cones\n", o.field == "principal" ? "smoothest aligned with the principal curvature directions" : "smoothest",
+                cones);
+    if(o.cone_distance > 0.)
+    {
+      tc.set_indices(index);
+      const SD::Singularity_separation s = tc.separate_singularities(o.cone_distance * h);
+      std::printf("cones at least %.3g apart (%.3g h): %zu pairs removed, %zu cones moved, %zu close pairs kept\n",
+                  o.cone_distance * h, o.cone_distance, s.removed_pairs, s.moved, s.kept_pairs);
+      if(s.removed_pairs + s.moved > 0)
+      {
+        tc.field(field);
+        std::printf("  the field is now the trivial connection with these %zu cones\n", cones - 2 * s.removed_pairs);
+      }
+    }
+  }
+
+  Mesh quads;
+  const double scales[] = {1., 0.95, 1.05};
+  for(std::size_t attempt = 0;; ++attempt)
+  {
+    const double spacing = scales[attempt] * h;
+    try
+    {
+      const SD::Field_aligned_quad_remeshing_result r = SD::field_aligned_quad_remeshing(
+        mesh, field, quads,
+        P::target_edge_length(spacing, P::stiffening_rounds(o.stiffening_rounds, CGAL::parameters::sparse_linear_solver(traits))));
+      std::printf("field-aligned quads (h = %.4g): %zu cones, %zu faces folded in the first map, %zu rounds of "
+                  "stiffening, %zu folded at the end\n",
+                  spacing, r.cones, r.initially_folded, r.stiffening_rounds, r.folded_faces);
+      std::printf("times: stripes %.3f s, extraction %.3f s\n", r.stripes_seconds, r.extraction_seconds);
+      break;
+    }
+    catch(const SD::Remeshing_failure& e)
+    {
+      if(attempt + 1 == std::size(scales))
+        throw;
+      std::printf("h = %.4g: %s\n  trying h = %.4g\n", spacing, e.what(), scales[attempt + 1] * h);
+    }
+  }
+  return report_and_write(input, quads, o, clock);
+}
+
 template <class Traits>
 int run(const Options& o, Traits traits)
 {
@@ -212,9 +405,9 @@ int run(const Options& o, Traits traits)
     P::spectacles(o.spectacles,
                   P::all_quads(o.all_quads, P::curvature_adaptation(o.curvature_adaptation,
                                                                     P::feature_snapping(o.feature_snapping)))));
-  const SD::Harmonic_quad_remeshing_result r = o.edge_length > 0.
-                                                 ? remesher.remesh(quads, P::target_edge_length(o.edge_length, options))
-                                                 : remesher.remesh(quads, options);
+  const double h = edge_length(input, o);
+  const SD::Harmonic_quad_remeshing_result r = h > 0. ? remesher.remesh(quads, P::target_edge_length(h, options))
+                                                      : remesher.remesh(quads, options);
   if(o.spectacles)
   {
     std::printf("spectacles: %zu of %zu saddles (%zu lines from bridges and junctions)\n", r.spectacles, r.saddles,
@@ -242,31 +435,7 @@ int run(const Options& o, Traits traits)
               r.harmonic_seconds, r.spectacles_seconds, r.curves_seconds, r.meshing_seconds, r.all_quads_seconds,
               r.snapping_seconds);
 
-  const SD::Quad_mesh_quality q = SD::quad_mesh_quality(quads, input);
-  std::printf("output: %zu vertices, %zu faces: %zu triangles, %zu quads, %zu pentagons, %zu hexagons, %zu larger; "
-              "%.1f%% quads (%.1f%% of the area)\n",
-              q.vertices, q.faces, q.faces_by_sides[0], q.faces_by_sides[1], q.faces_by_sides[2], q.faces_by_sides[3],
-              q.faces_by_sides[4], 100. * q.quad_fraction, 100. * q.quad_area_fraction);
-  std::printf("  %zu irregular vertices, %zu T-junctions; quad corners |angle - 90| mean %.1f rms %.1f max %.1f deg; "
-              "edge length %.4g (variation %.2f)\n",
-              q.irregular_vertices, q.t_junctions, q.angle_deviation_mean, q.angle_deviation_rms,
-              q.angle_deviation_max, q.edge_length_mean, q.edge_length_variation);
-  std::printf("  Hausdorff distance %.3g%% of the bounding-box diagonal; %s, Euler characteristic %ld, %zu boundary "
-              "loops, %zu components (%s the input's)\n",
-              100. * q.relative_hausdorff_distance, q.valid ? "valid" : "INVALID", q.euler_characteristic,
-              q.boundary_loops, q.connected_components, q.same_topology ? "as" : "NOT as");
-
-  if(!q.valid || !q.same_topology) // (the remesher checks this: a second look before writing)
-    throw std::runtime_error("the quad mesh is not a valid mesh with the input's topology (a bug: please report it "
-                             "with the input mesh); nothing written");
-  program::Output_files outputs;
-  if(!CGAL::IO::write_polygon_mesh(outputs.stage(o.output), quads, CGAL::parameters::stream_precision(17)))
-    throw std::runtime_error("cannot write " + o.output);
-  if(!o.picture.empty())
-    write_picture(input, quads, o, outputs);
-  outputs.commit();
-  std::printf("total %.3f s\n", clock.lap() / 1000.);
-  return 0;
+  return report_and_write(input, quads, o, clock);
 }
 
 } // namespace
@@ -275,6 +444,6 @@ int main(int argc, char** argv)
 {
   return program::run_main("quad_remesh", usage, argc, [&] {
     const Options o = parse(argc, argv);
-    return program::with_solver(o.solver, [&](auto traits) { return run(o, traits); });
+    return program::with_solver(o.solver, [&](auto traits) { return o.method == "field" ? run_field(o, traits) : run(o, traits); });
   });
 }

@@ -178,7 +178,7 @@ public:
   /// Sets the field from one vector per vertex, any of the n directions (projected to the vertex
   /// tangent planes; only directions matter), and factors the system. The stripe angle advances by
   /// 2 pi `stripes_per_unit_length` per unit length along the field. Prescribed stripe
-  /// singularities are kept.
+  /// singularities are kept; the stiffening of `stiffen()` is dropped.
   /// \throws Invalid_parameter if a vector is not finite or has no tangential component, or
   ///         `stripes_per_unit_length` is not positive and finite
   /// \throws Invalid_constraints if a prescribed singularity lies in a branch face of the new field,
@@ -199,9 +199,21 @@ public:
         throw Invalid_constraints("face " + std::to_string(f) + " holds a stripe singularity and is a branch face of "
                                   "the new field (index " + std::to_string(cover.index_numerator[f]) + "/" +
                                   std::to_string(m_n) + "): move the singularity first");
-    // every system its own solver object (copies of Eigen's traits share one factorization)
-    auto solver = std::make_unique<Solver>(m_idx, m_topology, cover, weights(cover), internal::new_solver_like(m_traits),
-                                           "twisted Laplacian of the stripes", spoke_weights(cover));
+    // a new field drops the stiffening of the old one's folds
+    std::vector<double> dropped;
+    std::swap(dropped, m_stiffness);
+    std::unique_ptr<Solver> solver;
+    try
+    {
+      // every system its own solver object (copies of Eigen's traits share one factorization)
+      solver = std::make_unique<Solver>(m_idx, m_topology, cover, weights(cover), internal::new_solver_like(m_traits),
+                                        "twisted Laplacian of the stripes", spoke_weights(cover));
+    }
+    catch(...)
+    {
+      std::swap(dropped, m_stiffness);
+      throw;
+    }
     solver->set_lattice_branch_points(m_lattice);
     m_solver = std::move(solver);
     ++m_factorizations;
@@ -406,29 +418,52 @@ public:
     if(m_solver)
     {
       // the weights of the branch faces' edges change: a new factorization
-      const internal::Direction_field_cover cover = m_solver->cover();
       m_lattice = on;
       try
       {
-        auto solver = std::make_unique<Solver>(m_idx, m_topology, cover, weights(cover),
-                                               internal::new_solver_like(m_traits), "twisted Laplacian of the stripes",
-                                               spoke_weights(cover));
-        solver->set_lattice_branch_points(on);
-        m_solver = std::move(solver);
-        update_omega();
+        refactor();
       }
       catch(...)
       {
         m_lattice = !on;
         throw;
       }
-      ++m_factorizations;
-      m_relaxation.reset();
     }
     m_lattice = on;
     m_solved = false;
   }
   bool lattice_branch_points() const { return m_lattice; }
+  /// Local stiffening (as in Bommes et al.'s mixed-integer quadrangulation): multiplies by
+  /// `factor` the energy's terms of the given faces (a regular face's share of its edges'
+  /// weights; with lattice branch points, a branch face's spokes and share of its edges) and
+  /// factors again. A fold of the map
+  /// (a regular face whose two stripe angles turn clockwise, a cone whose three triangles around
+  /// its branch point do not turn by 2 pi (1 - k / 4)) moves elsewhere: call `solve()` next.
+  /// \throws Invalid_parameter if `factor` is not finite and at least 1; Invalid_constraints
+  ///         before `set_field()` or if a face is not one of the mesh; Linear_solver_failure if the
+  ///         factorization fails (nothing changes when it throws)
+  template <class FaceRange>
+  void stiffen(const FaceRange& faces, double factor)
+  {
+    require_field();
+    if(!std::isfinite(factor) || !(factor >= 1.))
+      throw Invalid_parameter("factor", "must be finite and at least 1, got " + std::to_string(factor));
+    std::vector<double> scaled = m_stiffness;
+    if(scaled.empty())
+      scaled.assign(m_idx->number_of_faces(), 1.);
+    for(face_descriptor f : faces)
+      scaled[checked_face(f)] *= factor;
+    std::swap(scaled, m_stiffness);
+    try
+    {
+      refactor();
+    }
+    catch(...)
+    {
+      std::swap(scaled, m_stiffness);
+      throw;
+    }
+  }
   /// The sparse factorizations done so far: one per `set_field()`, one per relaxation of
   /// `place_automatic_singularities()`. Edits of the singularities and the frequency add none.
   std::size_t number_of_factorizations() const { return m_factorizations; }
@@ -470,8 +505,15 @@ public:
     const auto beta = walk(i);
     if(cover().regular[i])
       return internal::regular_face_value({beta[0][a], beta[1][a], beta[2][a]}, stripe_index(f, a), b);
-    return internal::branch_face_value({beta[0][a], beta[1][a], beta[2][a], beta[3][a]}, branch_value(i)[a], b);
+    return internal::branch_face_value({beta[0][a], beta[1][a], beta[2][a], beta[3][a]}, branch_value(i)[a],
+                                       branch_point_coordinates(i), b);
   }
+  /// The branch point of branch face f, the cone of the stripes there, in barycentric coordinates
+  /// (of the corners in the order of `corner_values()`): the point from which the face's edges
+  /// are seen under 120 degrees (its Fermat point, moved towards the centroid until every
+  /// coordinate is at least 0.1), so that the three triangles from the edges to it stay apart in
+  /// the parameter plane at a cone (150 degrees each at a -1/4 cone).
+  std::array<double, 3> branch_point(face_descriptor f) const { return branch_point_coordinates(checked_face(f)); }
   /// The stripe angles at the branch point of branch face f (on the face's reference direction).
   std::array<double, 2> branch_point_value(face_descriptor f) const
   {
@@ -480,6 +522,49 @@ public:
       throw Invalid_constraints("face " + std::to_string(i) + " is not a branch face");
     const Value c = branch_value(i);
     return {c[0], c[1]};
+  }
+
+  /// The faces where the map of the two stripe angles (u, v) of a cross field (n = 4) is not
+  /// locally injective (orientation-preserving): a regular face whose (u, v) triangle is not
+  /// counterclockwise, or that holds a stripe singularity; a branch face of index k / 4 whose
+  /// three triangles around the branch point (see `value()`) are not all counterclockwise or do
+  /// not turn by 2 pi (1 - k / 4) together. The isolines of a map without such faces and with
+  /// lattice branch points are a quad mesh (`field_aligned_quad_remeshing()`); `stiffen()` moves
+  /// folds away.
+  /// \throws Invalid_constraints before `solve()` or if n is not 4
+  std::vector<face_descriptor> folded_faces() const
+  {
+    solution();
+    if(number_of_families() != 2)
+      throw Invalid_constraints("folded_faces() reads the map of the two stripe families of a cross field (n = 4)");
+    auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); };
+    std::vector<face_descriptor> folded;
+    for(std::size_t f = 0; f < m_idx->number_of_faces(); ++f)
+    {
+      const auto beta = walk(f);
+      bool ok = true;
+      if(cover().regular[f])
+      {
+        const Eigen::Vector2d a = beta[1] - beta[0], b = beta[2] - beta[0];
+        ok = m_index[f].isZero() && cross(a, b) > 0.;
+      }
+      else
+      {
+        const Value c = branch_value(f);
+        double turn = 0.;
+        for(std::size_t k = 0; k < 3 && ok; ++k)
+        {
+          const Eigen::Vector2d a = beta[k] - c, b = beta[k + 1] - c;
+          ok = cross(a, b) > 0.;
+          turn += std::atan2(cross(a, b), a.dot(b));
+        }
+        const double expected = internal::two_pi * (1. - cover().index_numerator[f] / double(m_n));
+        ok = ok && std::abs(turn - expected) < internal::pi;
+      }
+      if(!ok)
+        folded.push_back(m_idx->face(f));
+    }
+    return folded;
   }
 
   /// One isoline: `points` (a polyline on the surface, the first point not repeated when
@@ -511,7 +596,7 @@ public:
       {
         if(!cover().regular[f])
           internal::add_branch_face_isolines(builder, face, a, {beta[0][a], beta[1][a], beta[2][a], beta[3][a]},
-                                             branch_value(f)[a]);
+                                             branch_value(f)[a], branch_point_coordinates(f));
         else
           internal::add_regular_face_isolines(builder, face, a, {beta[0][a], beta[1][a], beta[2][a]},
                                               int(std::lround(m_solver->curl(solution().y, f)[a] / internal::two_pi)),
@@ -580,6 +665,22 @@ private:
   }
   std::size_t reference_vertex(std::size_t f) const { return m_idx->source_index(halfedge(m_idx->face(f), m_tm)); }
 
+  double stiffness(std::size_t f) const { return m_stiffness.empty() ? 1. : m_stiffness[f]; }
+
+  // A new factorization of the same field's system, after a change of the weights.
+  void refactor()
+  {
+    const internal::Direction_field_cover cover = m_solver->cover();
+    auto solver = std::make_unique<Solver>(m_idx, m_topology, cover, weights(cover), internal::new_solver_like(m_traits),
+                                           "twisted Laplacian of the stripes", spoke_weights(cover));
+    solver->set_lattice_branch_points(m_lattice);
+    m_solver = std::move(solver);
+    update_omega();
+    ++m_factorizations;
+    m_relaxation.reset();
+    m_solved = false;
+  }
+
   // Edge weights with the contributions of branch faces dropped: the cotangent weight keeps the
   // halves of its regular faces, the uniform weight 1 the share of its faces that are regular.
   std::vector<double> weights(const internal::Direction_field_cover& cover) const
@@ -588,39 +689,58 @@ private:
     for(std::size_t e = 0; e < w.size(); ++e)
     {
       const auto h = m_idx->oriented_halfedge(e);
-      int faces = 0, regular = 0;
+      int faces = 0;
+      double regular = 0.; // the stiffness of the regular faces
       for(const auto g : {h, opposite(h, m_tm)})
         if(!m_idx->is_border(g))
         {
           ++faces;
-          if(cover.regular[m_idx->index(face(g, m_tm))])
+          const std::size_t f = m_idx->index(face(g, m_tm));
+          if(cover.regular[f])
           {
-            ++regular;
-            w[e] += 0.5 * m_cot[m_idx->index(g)];
+            regular += stiffness(f);
+            w[e] += 0.5 * stiffness(f) * m_cot[m_idx->index(g)];
           }
           else if(m_lattice && !m_uniform)
-            w[e] += 0.5 * (std::max)(0., sub_triangle_cotangents(m_idx->index(face(g, m_tm)), g)[0]);
+            w[e] += 0.5 * stiffness(f) * (std::max)(0., sub_triangle_cotangents(f, g)[0]);
         }
       if(m_uniform)
-        w[e] = double(regular) / double(faces);
+        w[e] = regular / double(faces);
     }
     return w;
   }
 
-  // The cotangents in the triangle (source(h), target(h), o) of face f, o its centroid: at o, at
-  // source(h), at target(h).
+  // The corners of face f, in the order source(h), target(h), target(next(h)) for h = halfedge(f).
+  std::array<Eigen::Vector3d, 3> corners(std::size_t f) const
+  {
+    // (vertices_around_face() starts at target(h): not this order)
+    const auto h = halfedge(m_idx->face(f), m_tm);
+    return {internal::position(m_vpm, source(h, m_tm)), internal::position(m_vpm, target(h, m_tm)),
+            internal::position(m_vpm, target(next(h, m_tm), m_tm))};
+  }
+  std::array<double, 3> branch_point_coordinates(std::size_t f) const
+  {
+    return internal::branch_point_barycentric(corners(f));
+  }
+  Eigen::Vector3d branch_point_position(std::size_t f) const
+  {
+    const auto x = corners(f);
+    const auto o = branch_point_coordinates(f);
+    return o[0] * x[0] + o[1] * x[1] + o[2] * x[2];
+  }
+
+  // The cotangents in the triangle (source(h), target(h), o) of face f, o its branch point: at o,
+  // at source(h), at target(h).
   std::array<double, 3> sub_triangle_cotangents(std::size_t f, halfedge_descriptor h) const
   {
-    Eigen::Vector3d o = Eigen::Vector3d::Zero();
-    for(auto v : vertices_around_face(halfedge(m_idx->face(f), m_tm), m_tm))
-      o += internal::position(m_vpm, v) / 3.;
+    const Eigen::Vector3d o = branch_point_position(f);
     const Eigen::Vector3d a = internal::position(m_vpm, source(h, m_tm)), b = internal::position(m_vpm, target(h, m_tm));
     auto cot = [](const Eigen::Vector3d& x, const Eigen::Vector3d& y) { return x.dot(y) / x.cross(y).norm(); };
     return {cot(a - o, b - o), cot(b - a, o - a), cot(a - b, o - b)};
   }
 
   // With branch points on the lattice: the weights of the spokes from the corners of every branch
-  // face to its centroid o (the cotangent weights of the triangles (c_k, c_k+1, o): spoke k is
+  // face to its branch point o (the cotangent weights of the triangles (c_k, c_k+1, o): spoke k is
   // opposite corner k+1 in one of them and corner k-1 in the other; at least 0), in the order of
   // the corners (source(h), target(h), target(next(h)) for h = halfedge(f)); empty otherwise.
   std::vector<std::array<double, 3>> spoke_weights(const internal::Direction_field_cover& cover) const
@@ -643,6 +763,8 @@ private:
       }
       for(double& x : w[f])
         x = (std::max)(0., x);
+      for(double& x : w[f])
+        x *= stiffness(f);
     }
     return w;
   }
@@ -685,16 +807,14 @@ private:
     if(!m_solver->has_spokes())
       return;
     // the spokes' targets: the field of the face's reference sheets at corner k integrated from
-    // the corner to the centroid o (on corner k, reference sheet a is sheet b of its vertex
+    // the corner to the branch point o (on corner k, reference sheet a is sheet b of its vertex
     // where the walk's transport M_k has its entry +-1)
     std::vector<std::array<Value, 3>> target(m_idx->number_of_faces());
     for(std::size_t f = 0; f < target.size(); ++f)
     {
       if(c.regular[f])
         continue;
-      Eigen::Vector3d o = Eigen::Vector3d::Zero();
-      for(auto v : vertices_around_face(halfedge(m_idx->face(f), m_tm), m_tm))
-        o += internal::position(m_vpm, v) / 3.;
+      const Eigen::Vector3d o = branch_point_position(f);
       Eigen::Matrix2d M = Eigen::Matrix2d::Identity();
       int k = 0;
       for(auto h : halfedges_around_face(halfedge(m_idx->face(f), m_tm), m_tm))
@@ -709,6 +829,15 @@ private:
         target[f][std::size_t(k)] = b;
         M = M * m_solver->transition_along(m_idx->index(h));
         ++k;
+      }
+      if(c.d == 2) // a cross field: the cone's exact map (see internal::conformal_cone_targets())
+      {
+        std::array<Eigen::Vector2d, 3> t;
+        for(std::size_t i = 0; i < 3; ++i)
+          t[i] = target[f][i].head<2>();
+        t = internal::conformal_cone_targets(corners(f), o, t, 1. - c.index_numerator[f] / double(m_n));
+        for(std::size_t i = 0; i < 3; ++i)
+          target[f][i].head<2>() = t[i];
       }
     }
     m_solver->set_spoke_targets(target);
@@ -756,6 +885,7 @@ private:
   SolverTraits m_traits;
   int m_n = 2;
   bool m_uniform = false, m_lattice = false;
+  std::vector<double> m_stiffness; // per face (stiffen()), empty: all 1
   std::shared_ptr<const Indices> m_idx;
   std::shared_ptr<const internal::Topology> m_topology;
   internal::Discrete_connection m_connection;

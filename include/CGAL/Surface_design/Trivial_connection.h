@@ -18,6 +18,7 @@
 #include <CGAL/Surface_design/internal/Core/validation.h>
 #include <CGAL/Surface_design/internal/Direction_fields/direction_field_operators.h>
 #include <CGAL/Surface_design/internal/Direction_fields/edge_rotation_bound.h>
+#include <CGAL/Surface_design/internal/Direction_fields/singularity_separation.h>
 #include <CGAL/Surface_design/parameters.h>
 #include <CGAL/Surface_design/solver_traits.h>
 
@@ -197,6 +198,14 @@ public:
       m_offset[f] = int(std::lround(curl / internal::two_pi));
     }
     m_index.assign(idx.number_of_faces(), 0);
+    const auto vpm = internal::class_vertex_point_map<VertexPointMap>(tm, np);
+    m_centre.resize(idx.number_of_faces());
+    for(std::size_t f = 0; f < m_centre.size(); ++f)
+    {
+      m_centre[f].setZero();
+      for(auto v : vertices_around_face(halfedge(idx.face(f), tm), tm))
+        m_centre[f] += internal::position(vpm, v) / 3.;
+    }
   }
 
   int symmetry_order() const { return m_n; }
@@ -233,6 +242,37 @@ public:
     m_index[b] += k;
   }
   /// @}
+
+  /// Makes the singularities at least `distance` apart (between the centroids of their faces),
+  /// as a quad mesh needs its cones (two cones of a quad mesh with edge length h are at least about
+  /// h apart): while two are closer, the closest pair is removed if its indices cancel, and
+  /// otherwise (or if no field exists without them) one of them moves to the face within 2 `distance` that is farthest from all other
+  /// singularities. A change after which no field exists (see `solve()`: a small region of large
+  /// curvature needs its singularity) is undone, and a pair that can neither go nor move is kept.
+  /// Then solves.
+  /// \throws Invalid_parameter if `distance` is not finite and positive; Invalid_constraints from
+  ///         `solve()` if the singularities before the separation admit no field
+  ///
+  /// Complexity: one `solve()` per change, plus O(singularities² + faces) per change.
+  Singularity_separation separate_singularities(double distance)
+  {
+    if(!std::isfinite(distance) || !(distance > 0.))
+      throw Invalid_parameter("distance", "must be finite and positive, got " + std::to_string(distance));
+    solve();
+    const Singularity_separation result = internal::separate_singularities(m_index, m_centre, distance, [&] {
+      try
+      {
+        solve();
+        return true;
+      }
+      catch(const Invalid_constraints&)
+      {
+        return false;
+      }
+    });
+    solve();
+    return result;
+  }
 
   /// Rotates the whole field by `angle` (radians, in the rescaled angles of the frames); the
   /// field is otherwise determined up to this rotation per connected component.
@@ -493,6 +533,7 @@ private:
   internal::Discrete_connection m_connection;
   std::vector<double> m_omega; // n rho wrapped into [-pi, pi)
   std::vector<int> m_offset, m_index;
+  std::vector<Eigen::Vector3d> m_centre; // of every face
   double m_rotation = 0.;
   bool m_solved = false;
   typename Solver::Solution m_solution;

@@ -25,7 +25,8 @@ enum class Mesh_defect
   not_triangle,           ///< a face is not a triangle
   non_manifold_vertex,    ///< the faces around a vertex form more than one fan
   degenerate_face,        ///< a face has (numerically) zero area
-  not_a_disk              ///< a connected component is not a topological disk (flattening needs one boundary loop and Euler characteristic 1)
+  not_a_disk,             ///< a connected component is not a topological disk (flattening needs one boundary loop and Euler characteristic 1)
+  not_closed              ///< the mesh has a boundary where the algorithm needs closed surfaces
 };
 
 /// \ingroup PkgSurfaceDesignRef
@@ -42,6 +43,7 @@ inline const char* to_string(Mesh_defect d)
     case Mesh_defect::non_manifold_vertex: return "non-manifold vertex";
     case Mesh_defect::degenerate_face: return "degenerate face";
     case Mesh_defect::not_a_disk: return "not a topological disk";
+    case Mesh_defect::not_closed: return "not a closed surface";
   }
   return "unknown defect";
 }

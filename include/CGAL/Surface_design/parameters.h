@@ -64,6 +64,7 @@ enum spectacles_t { spectacles };
 enum all_quads_t { all_quads };
 enum curvature_adaptation_t { curvature_adaptation };
 enum feature_snapping_t { feature_snapping };
+enum stiffening_rounds_t { stiffening_rounds };
 } // namespace internal_np
 
 /// \ingroup PkgSurfaceDesignRef
@@ -141,6 +142,7 @@ CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(spectacles)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(all_quads)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(curvature_adaptation)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(feature_snapping)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(stiffening_rounds)
 
 #undef CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER
 

@@ -10,8 +10,13 @@
 
 #include <CGAL/Surface_design/internal/Core/angles.h>
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <utility>
 
 namespace CGAL {
 namespace Surface_design {
@@ -49,19 +54,109 @@ inline double regular_face_value(const std::array<double, 3>& c, int k, const st
   return b[0] * c[0] + b[1] * (c[1] - step) + b[2] * (c[2] - 2. * step) + double(k) * barycentric_argument(b);
 }
 
-/// The stripe angle in a branch face split at its centroid into (0, 1, c), (1, 2, c), (2, 0', c):
-/// beta[0..2] the corner values along the walk, beta[3] the value at corner 0 reached after the
-/// walk (on another sheet), centre the value at the branch point.
-inline double branch_face_value(const std::array<double, 4>& beta, double centre, const std::array<double, 3>& b)
+/// The branch point of a branch face with corners x[0], x[1], x[2], in barycentric coordinates:
+/// the point from which the three edges are seen under 120 degrees (the Fermat point: barycentric
+/// coordinates |x_(i+1) - x_(i+2)| / sin(A_i + pi / 3) for the angles A_i at the corners), moved
+/// towards the centroid until every coordinate is at least 0.1 (a face with an angle of 120
+/// degrees or more has its Fermat point at that corner). The face is drawn as the three triangles
+/// from its edges to this point: at a cone of index k / 4 their angles there are scaled by
+/// 1 - k / 4 in the parameter plane, 150 degrees each at a -1/4 cone from 120 (at the centroid of
+/// a face with an angle of 100 degrees, one of them would be 2 x 100 = 200 > 180: a fold).
+inline std::array<double, 3> branch_point_barycentric(const std::array<Eigen::Vector3d, 3>& x)
+{
+  std::array<double, 3> w{};
+  double sum = 0.;
+  for(std::size_t i = 0; i < 3; ++i)
+  {
+    const Eigen::Vector3d p = x[(i + 1) % 3] - x[i], q = x[(i + 2) % 3] - x[i];
+    const double angle = std::atan2(p.cross(q).norm(), p.dot(q));
+    const double s = (std::max)(std::sin(angle + pi / 3.), 1e-3); // 120 degrees or more: at the corner
+    w[i] = (x[(i + 1) % 3] - x[(i + 2) % 3]).norm() / s;
+    sum += w[i];
+  }
+  if(!(sum > 0.) || !std::isfinite(sum))
+    return {1. / 3., 1. / 3., 1. / 3.};
+  double smallest = 1.;
+  for(double& c : w)
+  {
+    c /= sum;
+    smallest = (std::min)(smallest, c);
+  }
+  const double floor = 0.1;
+  if(smallest < floor)
+  {
+    const double t = (floor - smallest) / (1. / 3. - smallest); // (1 - t) smallest + t / 3 = floor
+    for(double& c : w)
+      c = (1. - t) * c + t / 3.;
+  }
+  return w;
+}
+
+/// The spokes' targets of a cone of a cross field, made exactly conformal: corner k of a branch
+/// face (x[k], branch point o) seen from o at distance r_k and polar angle phi_k (counterclockwise
+/// in the face) is sent to target_k = -nu r_k e^(i (s phi_k + psi)) (the target integrates from the
+/// corner to o), s = 1 - index the cone's angle scale, the rotation psi the one that fits the
+/// field's own targets `field_target` (nu the ratio of their lengths to the r_k) best. The field
+/// turns unevenly along a cone face's edges (all of its quarter turn along one edge, say), and
+/// three linear triangles that follow it fold; these turn by s times the angles at o, 150 degrees
+/// each at a -1/4 cone seen from the Fermat point: never a fold while every angle at o is below
+/// 180 / s degrees.
+inline std::array<Eigen::Vector2d, 3> conformal_cone_targets(const std::array<Eigen::Vector3d, 3>& x,
+                                                             const Eigen::Vector3d& o,
+                                                             const std::array<Eigen::Vector2d, 3>& field_target,
+                                                             double s)
+{
+  std::array<double, 3> r{}, phi{};
+  for(std::size_t k = 0; k < 3; ++k)
+    r[k] = (x[k] - o).norm();
+  for(std::size_t k = 0; k + 1 < 3; ++k)
+  {
+    const Eigen::Vector3d a = x[k] - o, b = x[k + 1] - o;
+    phi[k + 1] = phi[k] + std::atan2(a.cross(b).norm(), a.dot(b));
+  }
+  // the best rotation and the length scale: least squares over the corners
+  double re = 0., im = 0., length = 0., radius = 0.;
+  for(std::size_t k = 0; k < 3; ++k)
+  {
+    const Eigen::Vector2d w = -field_target[k]; // where the field puts the corner, seen from o
+    const double c = std::cos(s * phi[k]), sn = std::sin(s * phi[k]);
+    re += r[k] * (w.x() * c + w.y() * sn);
+    im += r[k] * (w.y() * c - w.x() * sn);
+    length += w.norm();
+    radius += r[k];
+  }
+  const double psi = std::atan2(im, re), nu = radius > 0. ? length / radius : 0.;
+  std::array<Eigen::Vector2d, 3> t;
+  for(std::size_t k = 0; k < 3; ++k)
+    t[k] = -nu * r[k] * Eigen::Vector2d(std::cos(s * phi[k] + psi), std::sin(s * phi[k] + psi));
+  return t;
+}
+
+/// The sub-triangle of a face split at the point o (barycentric coordinates, all positive) that
+/// holds the point of barycentric coordinates b: the one opposite corner k, k the index of the
+/// smallest b_k / o_k, with the coordinates (of corners k + 1 and k + 2, and of o) of b in it.
+inline std::pair<int, std::array<double, 3>> branch_sub_triangle(const std::array<double, 3>& o,
+                                                                   const std::array<double, 3>& b)
 {
   int k = 0;
   for(int i = 1; i < 3; ++i)
-    if(b[std::size_t(i)] < b[std::size_t(k)])
+    if(b[std::size_t(i)] * o[std::size_t(k)] < b[std::size_t(k)] * o[std::size_t(i)])
       k = i;
-  const int i = (k + 1) % 3; // the sub-triangle (i, i + 1, centre)
-  const double lc = 3. * b[std::size_t(k)];
-  const double li = b[std::size_t(i)] - b[std::size_t(k)], lj = b[std::size_t((i + 1) % 3)] - b[std::size_t(k)];
-  return li * beta[std::size_t(i)] + lj * beta[std::size_t(i + 1)] + lc * centre;
+  const double lc = b[std::size_t(k)] / o[std::size_t(k)];
+  const std::size_t i = std::size_t((k + 1) % 3), j = std::size_t((k + 2) % 3);
+  return {k, {b[i] - lc * o[i], b[j] - lc * o[j], lc}};
+}
+
+/// The stripe angle in a branch face split at its branch point o (barycentric coordinates, see
+/// `branch_point_barycentric()`) into (0, 1, o), (1, 2, o), (2, 0', o): beta[0..2] the corner
+/// values along the walk, beta[3] the value at corner 0 reached after the walk (on another sheet),
+/// centre the value at the branch point.
+inline double branch_face_value(const std::array<double, 4>& beta, double centre, const std::array<double, 3>& o,
+                                const std::array<double, 3>& b)
+{
+  const auto [k, l] = branch_sub_triangle(o, b);
+  const int i = (k + 1) % 3; // the sub-triangle (i, i + 1, o)
+  return l[0] * beta[std::size_t(i)] + l[1] * beta[std::size_t(i + 1)] + l[2] * centre;
 }
 
 } // namespace internal

@@ -390,13 +390,14 @@ inline void add_regular_face_isolines(Stripe_isoline_builder& builder, const Str
     }
 }
 
-/// A branch face: linear on (0, 1, c), (1, 2, c), (2, 0', c) as in `branch_face_value()`.
+/// A branch face: linear on (0, 1, o), (1, 2, o), (2, 0', o) as in `branch_face_value()`, o the
+/// branch point (barycentric coordinates).
 inline void add_branch_face_isolines(Stripe_isoline_builder& builder, const Stripe_isoline_builder::Face& face,
-                                     int family, const std::array<double, 4>& beta, double centre)
+                                     int family, const std::array<double, 4>& beta, double centre,
+                                     const std::array<double, 3>& o)
 {
   using Sample = Stripe_isoline_sample;
-  const double third = 1. / 3.;
-  const Sample middle{{third, third, third}, centre, 3};
+  const Sample middle{o, centre, 3};
   const std::array<Sample, 4> s{Sample{{1., 0., 0.}, beta[0], 0}, Sample{{0., 1., 0.}, beta[1], 1},
                                 Sample{{0., 0., 1.}, beta[2], 2}, Sample{{1., 0., 0.}, beta[3], 0}};
   for(int i = 0; i < 3; ++i)

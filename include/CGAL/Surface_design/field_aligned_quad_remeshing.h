@@ -1,0 +1,183 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Field-aligned quad remeshing: the level-0 lines of the two stripe families of a cross field,
+// with every cone on the lattice and no dislocation, are a quad mesh whose irregular vertices are
+// exactly the field's cones.
+
+#ifndef CGAL_SURFACE_DESIGN_FIELD_ALIGNED_QUAD_REMESHING_H
+#define CGAL_SURFACE_DESIGN_FIELD_ALIGNED_QUAD_REMESHING_H
+
+#include <CGAL/Surface_design/Branched_stripe_parameterizer.h>
+#include <CGAL/Surface_design/exceptions.h>
+#include <CGAL/Surface_design/internal/Core/geometry.h>
+#include <CGAL/Surface_design/internal/Core/named_parameters.h>
+#include <CGAL/Surface_design/internal/Field_aligned_parameterization/quad_extraction.h>
+#include <CGAL/Surface_design/parameters.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_design {
+
+/// \ingroup PkgFieldAlignedParameterizationRef
+/// What `field_aligned_quad_remeshing()` made and how.
+struct Field_aligned_quad_remeshing_result
+{
+  std::size_t vertices = 0, faces = 0; ///< of the quad mesh
+  std::size_t cones = 0;               ///< branch faces of the cross field: the irregular vertices
+  std::size_t irregular_vertices = 0;  ///< vertices of valence other than 4 (one per cone)
+  std::size_t stiffening_rounds = 0;   ///< rounds of `Branched_stripe_parameterizer::stiffen()`
+  std::size_t initially_folded = 0;    ///< faces where the first map folded
+  std::size_t folded_faces = 0;        ///< faces where the last map folds (its lines may still be a quad mesh)
+  long euler_characteristic = 0;       ///< V - E + F of the result: that of the input
+  double edge_length = 0.;             ///< the spacing h of the lines
+  double stripes_seconds = 0., extraction_seconds = 0.;
+};
+
+/// \ingroup PkgFieldAlignedParameterizationRef
+///
+/// Remeshes the closed triangle mesh `tm` into a pure quad mesh aligned with the cross field
+/// `field` (one vector per vertex, any of its four directions: `smoothest_direction_field()`
+/// with `symmetry_order(4)`, or `Trivial_connection` with cones where the user wants them) and
+/// adds it to `out`. Its irregular vertices are the field's cones, one to one: valence 3 at a
+/// cone of index +1/4, 5 at -1/4.
+///
+/// **How.** The two stripe families of `Branched_stripe_parameterizer` with n = 4, spacing h, no
+/// stripe singularity (no T-junction) and every branch point on the lattice
+/// (`set_lattice_branch_points()`) are the coordinates (u, v) of a seamless map whose integer
+/// lines meet at right angles and whose cones are lattice points. Where the map folds
+/// (`folded_faces()`), the energy is stiffened there (`stiffen()`, times 4) and solved again, up
+/// to `stiffening_rounds` times (Bommes et al. 2009). The level-0 lines are then the edges of the
+/// result, their crossings its vertices, the cones its irregular vertices; the faces are traced
+/// from the order of the lines around every vertex. The result is checked: only quads, every
+/// edge shared by two of them, the input's Euler characteristic, valence 4 - k at every cone of
+/// index k / 4 and 4 elsewhere.
+///
+/// \param tm a closed triangle mesh (model of `FaceListGraph`)
+/// \param field a readable vertex -> `Vector_3` map
+/// \param out a model of `MutableFaceGraph` receiving the quads
+/// \param np an optional sequence of named parameters among the ones listed below
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{target_edge_length}
+///     \cgalParamDescription{the spacing h of the lines: the quads' edge length}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{sqrt(area / 3000): about 3000 quads}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{stiffening_rounds}
+///     \cgalParamDescription{the most rounds of stiffening where the map folds}
+///     \cgalParamType{`int`, in [0, 64]}
+///     \cgalParamDefault{10}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a readable vertex -> `Point_3` map}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{sparse_linear_solver}
+///     \cgalParamDescription{the solver of the stripes' system, as `Branched_stripe_parameterizer`}
+///     \cgalParamType{a model of `SparseLinearAlgebraWithFactorTraits_d`}
+///     \cgalParamDefault{`Default_solver_traits`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \throws Invalid_mesh on bad input and for a mesh with a boundary (`Mesh_defect::not_closed`);
+///         Invalid_parameter (h not finite and positive, more than 10^7 quads, rounds out of
+///         range, a field vector not finite or normal to the surface); Invalid_constraints
+///         (cones that no quad mesh has: no windings put them all on the lattice);
+///         Remeshing_failure when the lines do not form such a quad mesh (the map still folds:
+///         another h often helps). `out` is not modified when it throws.
+///
+/// Complexity: one sparse factorization per round, the extraction O(lines crossing each face²).
+template <class TriangleMesh, class VertexVectorMap, class PolygonMesh,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Field_aligned_quad_remeshing_result field_aligned_quad_remeshing(const TriangleMesh& tm, const VertexVectorMap& field,
+                                                                 PolygonMesh& out,
+                                                                 const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using Clock = std::chrono::steady_clock;
+  auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  const auto start = Clock::now();
+
+  const int rounds = choose_parameter(get_parameter(np, internal_np::stiffening_rounds), 10);
+  if(rounds < 0 || rounds > 64)
+    throw Invalid_parameter("stiffening_rounds", "must lie in [0, 64], got " + std::to_string(rounds));
+  Branched_stripe_parameterizer bsp(tm, parameters::symmetry_order(4, np));
+  const auto& idx = bsp.indices();
+  const auto vpm = internal::const_vertex_point_map(tm, np);
+  for(const auto& c : bsp.topology().components.info)
+    if(c.boundary_loops != 0)
+      throw Invalid_mesh(Mesh_defect::not_closed, Invalid_mesh::no_element,
+                         "field_aligned_quad_remeshing() takes closed surfaces: the lines do not follow a boundary");
+  const internal::Quad_extraction_input surface = internal::quad_extraction_input(idx, vpm);
+  const double h = choose_parameter(get_parameter(np, internal_np::target_edge_length), std::sqrt(surface.area / 3000.));
+  if(!std::isfinite(h) || !(h > 0.) || surface.area / (h * h) > 1e7)
+    throw Invalid_parameter("target_edge_length", "must be finite and positive and give at most 10^7 quads, got " +
+                                                    std::to_string(h));
+  bsp.set_field(field, 1. / h);
+  bsp.set_lattice_branch_points(true);
+  bsp.solve();
+
+  Field_aligned_quad_remeshing_result result;
+  result.edge_length = h;
+  result.cones = bsp.branch_faces().size();
+  auto folded = bsp.folded_faces();
+  result.initially_folded = folded.size();
+  while(!folded.empty() && result.stiffening_rounds < std::size_t(rounds))
+  {
+    bsp.stiffen(folded, 4.);
+    bsp.solve();
+    folded = bsp.folded_faces();
+    ++result.stiffening_rounds;
+  }
+  result.folded_faces = folded.size();
+  result.stripes_seconds = seconds_since(start);
+
+  const auto extraction_start = Clock::now();
+  std::vector<internal::Quad_extraction_cone> cones;
+  std::vector<int> cone_index;
+  for(std::size_t f : bsp.branch_faces())
+  {
+    const auto fd = idx.face(f);
+    cones.push_back({f, internal::point_in_face(idx, vpm, f, bsp.branch_point(fd))});
+    cone_index.push_back(bsp.field_index_numerator(fd));
+  }
+  const internal::Quad_extraction q =
+    internal::extract_quads(internal::stripe_polylines(bsp.isolines(), idx), surface.normal, cones,
+                            1e-9 * std::sqrt(surface.area));
+  const std::string folds = result.folded_faces == 0 ? std::string("")
+                                                     : " (the map still folds in " + std::to_string(result.folded_faces) +
+                                                         " faces after " + std::to_string(rounds) +
+                                                         " rounds of stiffening: another edge length often helps)";
+  long chi = 0;
+  for(const auto& c : bsp.topology().components.info)
+    chi += c.euler_characteristic();
+  internal::check_quad_extraction(q, cone_index, chi, folds);
+  result.vertices = q.points.size();
+  result.faces = q.faces.size();
+  result.euler_characteristic = chi;
+  result.irregular_vertices = cones.size();
+  using Out_vpm = internal::Vertex_point_map_t<PolygonMesh, CGAL::parameters::Default_named_parameters>;
+  using Out_point = typename boost::property_traits<Out_vpm>::value_type;
+  std::vector<Out_point> points;
+  for(const auto& p : q.points)
+    points.emplace_back(p.x(), p.y(), p.z());
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, q.faces, out);
+  result.extraction_seconds = seconds_since(extraction_start);
+  return result;
+}
+
+} // namespace Surface_design
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_DESIGN_FIELD_ALIGNED_QUAD_REMESHING_H

@@ -1,0 +1,443 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Field-aligned quad remeshing: the result read independently (every face a quad, every edge
+// between two of them, the input's Euler characteristic, a vertex of valence 4 - k in every cone
+// face of index k / 4 and valence 4 everywhere else, on the input surface), prescribed and
+// automatic cones, the fold repair and the refusals; the separation of singularities; the
+// conformal cone targets; the extraction's checker on broken layouts.
+
+#include <test_support.h>
+
+#include <CGAL/Surface_design/Branched_stripe_parameterizer.h>
+#include <CGAL/Surface_design/direction_fields.h>
+#include <CGAL/Surface_design/field_aligned_quad_remeshing.h>
+#include <CGAL/Surface_design/mesh_generators.h>
+#include <CGAL/Surface_design/quad_mesh_quality.h>
+#include <CGAL/Surface_design/Trivial_connection.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace SD = CGAL::Surface_design;
+namespace SDI = CGAL::Surface_design::internal;
+
+namespace {
+
+using Quad_mesh = test::Surface_mesh;
+
+template <class Mesh>
+using Vector_of = typename CGAL::Kernel_traits<typename boost::property_traits<test::Vpm<Mesh>>::value_type>::Kernel::Vector_3;
+
+template <class Mesh>
+Mesh make_case(const std::string& name)
+{
+  Mesh mesh;
+  if(name == "torus")
+    SD::make_torus(mesh, 36, 12, 1., 0.35, true);
+  else
+    mesh = test::load_mesh<Mesh>(name);
+  return mesh;
+}
+
+template <class Mesh>
+double surface_area(const Mesh& mesh)
+{
+  return CGAL::Polygon_mesh_processing::area(mesh);
+}
+
+// The field as a vertex-indexed vector with a property map over it.
+template <class Mesh>
+struct Field
+{
+  const Mesh* mesh;
+  std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, Vector_of<Mesh>> values;
+  auto map() const { return boost::make_assoc_property_map(const_cast<Field*>(this)->values); }
+};
+
+template <class Mesh>
+Field<Mesh> smoothest_cross_field(const Mesh& mesh)
+{
+  Field<Mesh> f{&mesh, {}};
+  SD::smoothest_direction_field(mesh, f.map(), SD::parameters::symmetry_order(4));
+  return f;
+}
+
+// The cones of a field: face -> index numerator (read by direction_field_singularities()).
+template <class Mesh>
+std::map<typename boost::graph_traits<Mesh>::face_descriptor, int> cones_of(const Mesh& mesh, const Field<Mesh>& field)
+{
+  std::map<typename boost::graph_traits<Mesh>::face_descriptor, int> k;
+  SD::direction_field_singularities(mesh, field.map(), boost::make_assoc_property_map(k), SD::parameters::symmetry_order(4));
+  std::map<typename boost::graph_traits<Mesh>::face_descriptor, int> cones;
+  for(const auto& [f, i] : k)
+    if(i != 0)
+      cones.emplace(f, i);
+  return cones;
+}
+
+Eigen::Vector3d eigen(const test::Surface_mesh::Point& p) { return Eigen::Vector3d(p.x(), p.y(), p.z()); }
+template <class Point>
+Eigen::Vector3d eigen_of(const Point& p)
+{
+  return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+}
+
+// What the output is, read from the quad mesh alone and the input's cones: empty if it is the
+// quad mesh of the field, else what is wrong.
+template <class Mesh>
+std::string quad_mesh_problem(const Mesh& input, const std::map<typename boost::graph_traits<Mesh>::face_descriptor, int>& cones,
+                              const Quad_mesh& out)
+{
+  if(!CGAL::is_valid_polygon_mesh(out) || num_faces(out) == 0)
+    return "not a valid polygon mesh";
+  for(auto f : faces(out))
+    if(CGAL::halfedges_around_face(halfedge(f, out), out).size() != 4)
+      return "a face is not a quad";
+  for(auto h : halfedges(out))
+    if(is_border(h, out))
+      return "an edge has one quad only";
+  const long chi_out = long(num_vertices(out)) - long(num_edges(out)) + long(num_faces(out));
+  const long chi_in = long(num_vertices(input)) - long(num_edges(input)) + long(num_faces(input));
+  if(chi_out != chi_in)
+    return "Euler characteristic " + std::to_string(chi_out) + ", the input's " + std::to_string(chi_in);
+  // every cone: the output vertex nearest to its face's centroid, within the face's size, has
+  // valence 4 - k; every other vertex valence 4; sum of (4 - valence) = 4 chi
+  std::map<Quad_mesh::Vertex_index, int> due;
+  const auto vpm = get(CGAL::vertex_point, input);
+  for(const auto& [f, k] : cones)
+  {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    double size = 0.;
+    std::vector<Eigen::Vector3d> x;
+    for(auto v : vertices_around_face(halfedge(f, input), input))
+      x.push_back(eigen_of(get(vpm, v)));
+    for(const auto& p : x)
+      c += p / 3.;
+    for(const auto& p : x)
+      size = (std::max)(size, (p - c).norm());
+    Quad_mesh::Vertex_index nearest;
+    double best = 1e300;
+    for(auto v : vertices(out))
+      if((eigen(out.point(v)) - c).norm() < best)
+      {
+        best = (eigen(out.point(v)) - c).norm();
+        nearest = v;
+      }
+    if(best > size)
+      return "no vertex in a cone's face";
+    if(due.count(nearest))
+      return "two cones at one vertex";
+    due[nearest] = 4 - k;
+  }
+  long sum = 0;
+  for(auto v : vertices(out))
+  {
+    const int valence = int(degree(v, out));
+    const int expected = due.count(v) ? due[v] : 4;
+    if(valence != expected)
+      return "a vertex of valence " + std::to_string(valence) + " where " + std::to_string(expected) + " is due";
+    sum += 4 - valence;
+  }
+  if(sum != 4 * chi_in)
+    return "the valences sum to " + std::to_string(sum);
+  return "";
+}
+
+} // namespace
+
+TEMPLATE_TEST_CASE("Field-aligned quads: pure quads whose irregular vertices are the cones, one to one",
+                   "[field_aligned_quads]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  for(const auto& [name, quads] : {std::pair<std::string, double>{"torus", 700.}, {"eight.off", 900.}})
+  {
+    CAPTURE(name);
+    const Mesh mesh = make_case<Mesh>(name);
+    const auto field = smoothest_cross_field(mesh);
+    const auto cones = cones_of(mesh, field);
+    Quad_mesh out;
+    const double h = std::sqrt(surface_area(mesh) / quads);
+    const auto r = SD::field_aligned_quad_remeshing(mesh, field.map(), out, SD::parameters::target_edge_length(h));
+    CHECK(quad_mesh_problem(mesh, cones, out) == "");
+    CHECK(r.cones == cones.size());
+    CHECK(r.irregular_vertices == cones.size());
+    CHECK(r.faces == num_faces(out));
+    CHECK(r.folded_faces == 0);
+    // about the asked number of quads, every vertex on the input surface
+    CHECK(std::abs(double(r.faces) / quads - 1.) < 0.25);
+    const SD::Quad_mesh_quality q = SD::quad_mesh_quality(out, mesh);
+    CHECK(q.same_topology);
+    CHECK(q.relative_hausdorff_distance < 0.02);
+    CHECK(q.angle_deviation_mean < 15.);
+  }
+}
+
+TEMPLATE_TEST_CASE("Field-aligned quads with prescribed cones: valence 3 at +1/4, 5 at -1/4, where asked",
+                   "[field_aligned_quads]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  const Mesh mesh = make_case<Mesh>("torus");
+  // two +1/4 cones on the outside, two -1/4 on the inside of the torus (its curvature's signs)
+  SD::Trivial_connection<Mesh> tc(mesh, SD::parameters::symmetry_order(4));
+  const auto& idx = tc.indices();
+  std::map<typename boost::graph_traits<Mesh>::face_descriptor, int> cones;
+  // faces of the generator: (major i, minor j) -> 2 (12 i + j) (+1); minor 0 outside, 6 inside
+  for(const auto& [major, minor, k] : {std::array<int, 3>{0, 0, 1}, {18, 0, 1}, {9, 6, -1}, {27, 6, -1}})
+  {
+    const auto f = idx.face(std::size_t(2 * (12 * major + minor)));
+    tc.set_index(f, k);
+    cones[f] = k;
+  }
+  tc.solve();
+  Field<Mesh> field{&mesh, {}};
+  tc.field(field.map());
+  REQUIRE(cones_of(mesh, field) == cones);
+  Quad_mesh out;
+  const auto r = SD::field_aligned_quad_remeshing(mesh, field.map(), out,
+                                                  SD::parameters::target_edge_length(std::sqrt(surface_area(mesh) / 800.)));
+  CHECK(quad_mesh_problem(mesh, cones, out) == "");
+  CHECK(r.irregular_vertices == 4);
+}
+
+TEST_CASE("Field-aligned quads: both solvers give the same mesh", "[field_aligned_quads]")
+{
+  using Mesh = test::Surface_mesh;
+  const Mesh mesh = make_case<Mesh>("torus");
+  const auto field = smoothest_cross_field(mesh);
+  const double h = std::sqrt(surface_area(mesh) / 600.);
+  Quad_mesh reference;
+  const auto r0 = SD::field_aligned_quad_remeshing(mesh, field.map(), reference, SD::parameters::target_edge_length(h));
+#define SD_SAME_MESH(Traits, label)                                                                           \
+  {                                                                                                           \
+    Quad_mesh out;                                                                                            \
+    const auto r = SD::field_aligned_quad_remeshing(                                                          \
+      mesh, field.map(), out, SD::parameters::target_edge_length(h).sparse_linear_solver(Traits()));          \
+    CAPTURE(label);                                                                                           \
+    CHECK(r.faces == r0.faces);                                                                               \
+    CHECK(r.stiffening_rounds == r0.stiffening_rounds);                                                      \
+    double far = 0.;                                                                                          \
+    for(auto v : vertices(out))                                                                               \
+    {                                                                                                         \
+      double best = 1e300;                                                                                    \
+      for(auto w : vertices(reference))                                                                       \
+        best = (std::min)(best, (eigen(out.point(v)) - eigen(reference.point(w))).norm());                   \
+      far = (std::max)(far, best);                                                                            \
+    }                                                                                                         \
+    CHECK(far < 1e-6 * h);                                                                                    \
+  }
+  SD_FOR_EACH_SOLVER(SD_SAME_MESH)
+#undef SD_SAME_MESH
+}
+
+TEST_CASE("Field-aligned quads: a folded map is repaired by stiffening, or refused", "[field_aligned_quads]")
+{
+  using Mesh = test::Surface_mesh;
+  const Mesh mesh = make_case<Mesh>("torus");
+  const auto field = smoothest_cross_field(mesh);
+  const double h = std::sqrt(surface_area(mesh) / 700.);
+  // the first map folds at cones: without stiffening the lines are not a quad mesh, and nothing
+  // is written
+  SD::Branched_stripe_parameterizer<Mesh> bsp(mesh, SD::parameters::symmetry_order(4));
+  bsp.set_field(field.map(), 1. / h);
+  bsp.set_lattice_branch_points(true);
+  bsp.solve();
+  const auto folded = bsp.folded_faces();
+  REQUIRE(!folded.empty());
+  Quad_mesh out;
+  SD::make_torus(out, 3, 3, 1., 0.3, false); // something the failure must leave as it is
+  const std::size_t before = num_faces(out);
+  CHECK_THROWS_AS(SD::field_aligned_quad_remeshing(mesh, field.map(), out,
+                                                   SD::parameters::stiffening_rounds(0, SD::parameters::target_edge_length(h))),
+                  SD::Remeshing_failure);
+  CHECK(num_faces(out) == before);
+  // stiffening moves the folds away (and the energy grows: the map gives up some alignment)
+  const double energy = bsp.energy();
+  for(int round = 0; round < 10 && !bsp.folded_faces().empty(); ++round)
+  {
+    bsp.stiffen(bsp.folded_faces(), 4.);
+    bsp.solve();
+  }
+  CHECK(bsp.folded_faces().empty());
+  CHECK(bsp.energy() >= energy * (1. - 1e-9));
+  // the fold reading: a regular face whose (u, v) triangle turns clockwise is folded; reversing
+  // the second family makes every regular face folded
+  std::size_t regular = 0, clockwise = 0;
+  for(auto f : faces(mesh))
+  {
+    if(bsp.is_branch_face(f))
+      continue;
+    ++regular;
+    const auto u = bsp.corner_values(f, 0), v = bsp.corner_values(f, 1);
+    clockwise += (u[1] - u[0]) * (v[2] - v[0]) - (u[2] - u[0]) * (v[1] - v[0]) < 0. ? 1 : 0;
+  }
+  CHECK(clockwise == 0);
+  CHECK(regular + bsp.branch_faces().size() == num_faces(mesh));
+}
+
+TEST_CASE("The extraction's checker refuses what is not the quad mesh of the field", "[field_aligned_quads][oracle]")
+{
+  // a cube's six quads: valence 3 at its eight corners, the cones of index +1/4 (4 chi = 8)
+  SDI::Quad_extraction q;
+  for(int i = 0; i < 8; ++i)
+    q.points.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+  q.faces = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  q.cone_vertex = {0, 1, 2, 3, 4, 5, 6, 7};
+  const std::vector<int> plus(8, 1);
+  CHECK_NOTHROW(SDI::check_quad_extraction(q, plus, 2, ""));
+  CHECK_THROWS_AS(SDI::check_quad_extraction(q, plus, 0, ""), SD::Remeshing_failure); // another topology
+  std::vector<int> wrong = plus;
+  wrong[3] = -1; // valence 5 due at corner 3
+  CHECK_THROWS_AS(SDI::check_quad_extraction(q, wrong, 2, ""), SD::Remeshing_failure);
+  SDI::Quad_extraction open = q;
+  open.faces.pop_back(); // edges with one quad
+  CHECK_THROWS_AS(SDI::check_quad_extraction(open, plus, 1, ""), SD::Remeshing_failure);
+  SDI::Quad_extraction pentagon = q;
+  pentagon.non_quads = 1;
+  CHECK_THROWS_AS(SDI::check_quad_extraction(pentagon, plus, 2, ""), SD::Remeshing_failure);
+  SDI::Quad_extraction loose = q;
+  loose.open_ends = 2;
+  CHECK_THROWS_AS(SDI::check_quad_extraction(loose, plus, 2, ""), SD::Remeshing_failure);
+
+  // and the test's own reading, on a cube whose corners are the cones of a cube-shaped input
+  test::Surface_mesh cube;
+  SD::make_sphere(cube, 1); // 6 faces of 2 triangles... as a triangle mesh: 12 faces
+  test::Surface_mesh quads;
+  std::vector<test::Surface_mesh::Vertex_index> v;
+  for(int i = 0; i < 8; ++i)
+    v.push_back(quads.add_vertex(test::Surface_mesh::Point(i & 1, (i >> 1) & 1, (i >> 2) & 1)));
+  for(const auto& f : q.faces)
+    quads.add_face(v[f[0]], v[f[1]], v[f[2]], v[f[3]]);
+  std::map<test::Surface_mesh::Face_index, int> none;
+  CHECK(quad_mesh_problem(cube, none, quads) != ""); // eight valence-3 vertices where no cone is
+  quads.remove_face(*faces(quads).begin());
+  CHECK(quad_mesh_problem(cube, none, quads) != "");
+}
+
+TEMPLATE_TEST_CASE("Bad input to the field-aligned remesher is refused and changes nothing", "[field_aligned_quads]",
+                   SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  const Mesh torus = make_case<Mesh>("torus");
+  const auto field = smoothest_cross_field(torus);
+  Quad_mesh out;
+  const double h = std::sqrt(surface_area(torus) / 500.);
+  for(double bad : {0., -1., std::nan(""), std::numeric_limits<double>::infinity(), 1e-6})
+    CHECK_THROWS_AS(SD::field_aligned_quad_remeshing(torus, field.map(), out, SD::parameters::target_edge_length(bad)),
+                    SD::Invalid_parameter);
+  for(int bad : {-1, 65})
+    CHECK_THROWS_AS(SD::field_aligned_quad_remeshing(torus, field.map(), out,
+                                                     SD::parameters::stiffening_rounds(bad, SD::parameters::target_edge_length(h))),
+                    SD::Invalid_parameter);
+  // a field that is zero at a vertex has no direction there
+  Field<Mesh> zero = field;
+  zero.values.begin()->second = Vector_of<Mesh>(0., 0., 0.);
+  CHECK_THROWS_AS(SD::field_aligned_quad_remeshing(torus, zero.map(), out, SD::parameters::target_edge_length(h)),
+                  SD::Invalid_parameter);
+  // a mesh with a boundary: not yet (the lines would have to follow it)
+  const Mesh hemisphere = test::load_mesh<Mesh>("hemisphere.off");
+  const auto field2 = smoothest_cross_field(hemisphere);
+  try
+  {
+    SD::field_aligned_quad_remeshing(hemisphere, field2.map(), out);
+    FAIL("a mesh with a boundary was taken");
+  }
+  catch(const SD::Invalid_mesh& e)
+  {
+    CHECK(e.defect() == SD::Mesh_defect::not_closed);
+  }
+  CHECK(num_faces(out) == 0);
+}
+
+TEMPLATE_TEST_CASE("Separated singularities: no two closer than asked, unless no field exists otherwise",
+                   "[field_aligned_quads]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  const Mesh mesh = test::load_mesh<Mesh>("bunny_1k.off");
+  const auto field = smoothest_cross_field(mesh);
+  const auto cones = cones_of(mesh, field);
+  SD::Trivial_connection<Mesh> tc(mesh, SD::parameters::symmetry_order(4));
+  for(const auto& [f, k] : cones)
+    tc.set_index(f, k);
+  const double d = 0.1 * std::sqrt(surface_area(mesh));
+  const SD::Singularity_separation s = tc.separate_singularities(d);
+  CHECK(s.removed_pairs + s.moved > 0); // the smoothest field has close cones on this coarse bunny
+  std::vector<std::pair<Eigen::Vector3d, int>> after;
+  long sum = 0;
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  for(auto f : faces(mesh))
+    if(tc.index(f) != 0)
+    {
+      Eigen::Vector3d c = Eigen::Vector3d::Zero();
+      for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+        c += eigen_of(get(vpm, v)) / 3.;
+      after.emplace_back(c, tc.index(f));
+      sum += tc.index(f);
+    }
+  CHECK(sum == 8); // 4 chi: the indices still sum to the Euler characteristic
+  CHECK(after.size() == cones.size() - 2 * s.removed_pairs);
+  std::size_t close = 0;
+  for(std::size_t i = 0; i < after.size(); ++i)
+    for(std::size_t j = i + 1; j < after.size(); ++j)
+      close += (after[i].first - after[j].first).norm() < d ? 1 : 0;
+  CHECK(close <= s.kept_pairs);
+  // the field written is the trivial connection's: exactly these singularities
+  Field<Mesh> separated{&mesh, {}};
+  tc.field(separated.map());
+  const auto read = cones_of(mesh, separated);
+  CHECK(read.size() == after.size());
+  for(const auto& [f, k] : read)
+    CHECK(tc.index(f) == k);
+  CHECK_THROWS_AS(tc.separate_singularities(0.), SD::Invalid_parameter);
+  CHECK_THROWS_AS(tc.separate_singularities(std::nan("")), SD::Invalid_parameter);
+}
+
+TEST_CASE("A pair of opposite cones closer than the distance is removed", "[field_aligned_quads]")
+{
+  using Mesh = test::Surface_mesh;
+  const Mesh mesh = make_case<Mesh>("torus");
+  SD::Trivial_connection<Mesh> tc(mesh, SD::parameters::symmetry_order(4));
+  const auto& idx = tc.indices();
+  tc.set_index(idx.face(0), 1);
+  tc.set_index(idx.face(2), -1); // the next face around the tube
+  const auto s = tc.separate_singularities(0.5);
+  CHECK(s.removed_pairs == 1);
+  for(auto f : faces(mesh))
+    CHECK(tc.index(f) == 0);
+}
+
+TEST_CASE("The conformal cone targets turn by (1 - k/4) times the angles at the branch point",
+          "[field_aligned_quads]")
+{
+  const std::array<Eigen::Vector3d, 3> x{Eigen::Vector3d(0., 0., 0.), Eigen::Vector3d(2., 0., 0.),
+                                         Eigen::Vector3d(0.4, 1.5, 0.)};
+  const auto o3 = SDI::branch_point_barycentric(x);
+  const Eigen::Vector3d o = o3[0] * x[0] + o3[1] * x[1] + o3[2] * x[2];
+  // field targets of an arbitrary rotation and scale 3 (the conformal ones rotated by 0.7)
+  for(double s : {1.25, 0.75})
+  {
+    std::array<Eigen::Vector2d, 3> field;
+    for(std::size_t k = 0; k < 3; ++k)
+      field[k] = Eigen::Vector2d(std::cos(0.7 + 0.3 * double(k)), std::sin(0.7 + 0.3 * double(k))) * -3. * (x[k] - o).norm();
+    const auto t = SDI::conformal_cone_targets(x, o, field, s);
+    for(std::size_t k = 0; k < 2; ++k) // (from corner 2 to corner 0 the walk's transition turns too)
+    {
+      const std::size_t l = k + 1;
+      const Eigen::Vector3d a = x[k] - o, b = x[l] - o;
+      const double angle3d = std::atan2(a.cross(b).norm(), a.dot(b));
+      const Eigen::Vector2d p = -t[k], q = -t[l];
+      double angle2d = std::atan2(p.x() * q.y() - p.y() * q.x(), p.dot(q));
+      if(angle2d < 0.)
+        angle2d += SDI::two_pi;
+      CHECK(angle2d == Approx(s * angle3d).epsilon(1e-9));
+      CHECK(t[k].norm() == Approx(3. * a.norm()).epsilon(1e-9));
+      CHECK(t[l].norm() == Approx(3. * b.norm()).epsilon(1e-9));
+    }
+  }
+}
