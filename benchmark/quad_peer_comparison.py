@@ -3,8 +3,12 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Side by side: quad_remesh (ours), gmsh's quad recombination and QuadriFlow on the same meshes.
 
-usage: quad_peer_comparison.py BUILD_DIR [--mesh FILE.off]... [--runs R] [--json OUT.json]
-                               [--peers gmsh,quadriflow]
+usage: quad_peer_comparison.py BUILD_DIR [--mesh FILE.off[:FACES]]... [--runs R] [--json OUT.json]
+                               [--peers gmsh,quadriflow] [--methods harmonic,field]
+
+Every mesh is remeshed at one target, FACES faces (default 3000), by all: ours with
+`quad_remesh --method M --target-faces FACES` for each method M, QuadriFlow with target_faces =
+FACES, gmsh with the size h = sqrt(area / FACES).
 
 Every peer runs when it is installed, else the script says so and goes on without it: gmsh
 (Debian package `gmsh`) and QuadriFlow (Huang et al. 2018) inside Blender (Debian package
@@ -13,10 +17,10 @@ outputs are measured by BUILD_DIR/benchmark/quad_mesh_report (the library's quad
 the same code for all).
 - gmsh: STL input, ClassifySurfaces (the angle tried at 40, 20, 30, 50, 60, 70, 80 degrees until a
   mesh comes out), CreateGeometry, Frontal-Delaunay (Mesh.Algorithm 6) and Blossom recombination,
-  uniform size h = the size ours aims at, sqrt(area / 3000), with the size-from-points and
-  extend-from-boundary options off.
-- QuadriFlow: OBJ input, `bpy.ops.object.quadriflow_remesh` with target_faces = the number of
-  faces ours made (the same target), the boundary kept, no symmetry, seed 0.
+  uniform size h = sqrt(area / FACES), with the size-from-points and extend-from-boundary options
+  off.
+- QuadriFlow: OBJ input, `bpy.ops.object.quadriflow_remesh` with target_faces = FACES, the
+  boundary kept, no symmetry, seed 0.
 Times are medians of R runs (default 3) of the whole program, reading and writing included
 ("program s"; ours also certifies its Hausdorff distance there; Blender's start-up is in it),
 and the remeshing alone ("remeshing s": ours from its own report, QuadriFlow the operator's time
@@ -180,6 +184,7 @@ def main(argv):
     build = argv[1]
     meshes, runs, out_json = [], 3, "quad_peer_comparison.json"
     peers = ["gmsh", "quadriflow"]
+    methods = ["harmonic", "field"]
     k = 2
     while k < len(argv):
         if argv[k] == "--mesh" and k + 1 < len(argv):
@@ -188,6 +193,11 @@ def main(argv):
             peers = [p for p in argv[k + 1].split(",") if p]
             if any(p not in ("gmsh", "quadriflow") for p in peers):
                 print("quad_peer_comparison.py: --peers takes gmsh and/or quadriflow")
+                return 1
+        elif argv[k] == "--methods" and k + 1 < len(argv):
+            methods = [m for m in argv[k + 1].split(",") if m]
+            if not methods or any(m not in ("harmonic", "field") for m in methods):
+                print("quad_peer_comparison.py: --methods takes harmonic and/or field")
                 return 1
         elif argv[k] == "--runs" and k + 1 < len(argv):
             runs = int(argv[k + 1])
@@ -208,27 +218,34 @@ def main(argv):
     quad_remesh = os.path.join(build, "examples", "quad_remesh")
     rows = []
     with tempfile.TemporaryDirectory() as work:
-        for mesh in meshes:
+        for spec in meshes:
+            mesh, _, wanted = spec.partition(":")
+            target = int(wanted) if wanted else 3000
             name = os.path.splitext(os.path.basename(mesh))[0]
             points, faces = read_off(mesh)
-            h = math.sqrt(area(points, faces) / 3000.)
-            print("== %s (%d faces), h = %.4g" % (name, len(faces), h), flush=True)
-            ours_off = os.path.join(work, name + "_ours.off")
-            seconds, result = timed([quad_remesh, mesh, "--output", ours_off], runs)
-            ours = report(build, mesh, ours_off) if result.returncode == 0 else {"error": result.stderr.strip()}
-            ours["seconds"] = seconds
-            # the remeshing alone (the program also certifies its Hausdorff distance): its own times
-            for line in result.stdout.splitlines():
-                # the four phases (quads only and snapping, in brackets, are part of meshing)
-                phases = re.match(r"times: harmonic ([\d.]+) s, spectacles \(re-solve\) ([\d.]+) s, "
-                                  r"curves ([\d.]+) s, meshing ([\d.]+) s", line)
-                if phases:
-                    ours["remesh_seconds"] = sum(float(x) for x in phases.groups())
-            row = {"mesh": name, "input_faces": len(faces), "h": h, "ours": ours}
+            h = math.sqrt(area(points, faces) / target)
+            print("== %s (%d faces), %d faces wanted, h = %.4g" % (name, len(faces), target, h), flush=True)
+            row = {"mesh": name, "input_faces": len(faces), "target_faces": target, "h": h}
+            for method in methods:
+                ours_off = os.path.join(work, name + "_" + method + ".off")
+                seconds, result = timed([quad_remesh, mesh, "--method", method, "--target-faces", str(target),
+                                         "--output", ours_off], runs)
+                ours = report(build, mesh, ours_off) if result.returncode == 0 else {
+                    "error": (result.stderr.strip().splitlines() or ["failed"])[-1]}
+                ours["seconds"] = seconds
+                # the remeshing alone (the program also certifies its Hausdorff distance): its own times
+                for line in result.stdout.splitlines():
+                    # the four phases (quads only and snapping, in brackets, are part of meshing)
+                    phases = re.match(r"times: harmonic ([\d.]+) s, spectacles \(re-solve\) ([\d.]+) s, "
+                                      r"curves ([\d.]+) s, meshing ([\d.]+) s", line)
+                    if not phases:
+                        phases = re.match(r"times: field ([\d.]+) s, stripes ([\d.]+) s, extraction ([\d.]+) s", line)
+                    if phases:
+                        ours["remesh_seconds"] = sum(float(x) for x in phases.groups())
+                row["ours " + method] = ours
             if "quadriflow" in peers:
                 obj = os.path.join(work, name + ".obj")
                 write_obj(points, faces, obj)
-                target = ours.get("faces") or int(round(area(points, faces) / (h * h)))
                 out_obj = os.path.join(work, name + "_quadriflow.obj")
                 ok, seconds, operator, log = run_quadriflow(obj, out_obj, target, runs)
                 if ok:
@@ -236,11 +253,12 @@ def main(argv):
                     row["quadriflow"].update({"seconds": seconds, "remesh_seconds": operator, "target_faces": target})
                 else:
                     row["quadriflow"] = {"error": "refused or failed: " + log}
+            whos = ["ours " + m for m in methods] + ["gmsh", "quadriflow"]
             if "gmsh" not in peers:
                 rows.append(row)
-                for who in ("ours", "quadriflow"):
+                for who in whos:
                     if who in row:
-                        print("  %-10s %s" % (who, json.dumps(row[who])), flush=True)
+                        print("  %-13s %s" % (who, json.dumps(row[who])), flush=True)
                 continue
             stl = os.path.join(work, name + ".stl")
             write_stl(points, faces, stl)
@@ -260,9 +278,9 @@ def main(argv):
                     ", ".join(map(str, ANGLES)), errors[-1].strip() if errors else "failed")}
             row["gmsh"] = gmsh
             rows.append(row)
-            for who in ("ours", "gmsh", "quadriflow"):
+            for who in whos:
                 if who in row:
-                    print("  %-10s %s" % (who, json.dumps(row[who])), flush=True)
+                    print("  %-13s %s" % (who, json.dumps(row[who])), flush=True)
     with open(out_json, "w") as f:
         json.dump(rows, f, indent=1)
     keys = [("faces", "faces", "%d"), ("quads %", "quad_fraction", "%.1f"), ("irregular / face", None, "%.3f"),
@@ -272,7 +290,7 @@ def main(argv):
     print("\n| mesh | who | " + " | ".join(k[0] for k in keys) + " |")
     print("|---|---|" + "---:|" * len(keys))
     for row in rows:
-        for who in ("ours", "gmsh", "quadriflow"):
+        for who in ["ours " + m for m in methods] + ["gmsh", "quadriflow"]:
             if who not in row:
                 continue
             r = row[who]

@@ -19,6 +19,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -27,6 +28,10 @@
 
 namespace SD = CGAL::Surface_design;
 namespace SDI = CGAL::Surface_design::internal;
+
+// CGAL's two halfedge data structures (the third of SD_MESH_TYPES, Polyhedron_3 with ids, only
+// changes the index maps, which the other tests cover; this program is long to compile)
+#define SD_FIELD_QUAD_MESH_TYPES test::Surface_mesh, test::Polyhedron
 
 namespace {
 
@@ -153,7 +158,7 @@ std::string quad_mesh_problem(const Mesh& input, const std::map<typename boost::
 } // namespace
 
 TEMPLATE_TEST_CASE("Field-aligned quads: pure quads whose irregular vertices are the cones, one to one",
-                   "[field_aligned_quads]", SD_MESH_TYPES)
+                   "[field_aligned_quads]", SD_FIELD_QUAD_MESH_TYPES)
 {
   using Mesh = TestType;
   for(const auto& [name, quads] : {std::pair<std::string, double>{"torus", 700.}, {"eight.off", 900.}})
@@ -180,7 +185,7 @@ TEMPLATE_TEST_CASE("Field-aligned quads: pure quads whose irregular vertices are
 }
 
 TEMPLATE_TEST_CASE("Field-aligned quads with prescribed cones: valence 3 at +1/4, 5 at -1/4, where asked",
-                   "[field_aligned_quads]", SD_MESH_TYPES)
+                   "[field_aligned_quads]", SD_FIELD_QUAD_MESH_TYPES)
 {
   using Mesh = TestType;
   const Mesh mesh = make_case<Mesh>("torus");
@@ -289,21 +294,33 @@ TEST_CASE("The extraction's checker refuses what is not the quad mesh of the fie
     q.points.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
   q.faces = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   q.cone_vertex = {0, 1, 2, 3, 4, 5, 6, 7};
+  // each corner on an input "face" whose normal points out of the cube
+  std::vector<Eigen::Vector3d> normal;
+  for(int i = 0; i < 8; ++i)
+  {
+    q.point_face.push_back(std::size_t(i));
+    normal.push_back((q.points[std::size_t(i)] - Eigen::Vector3d(0.5, 0.5, 0.5)).normalized());
+  }
   const std::vector<int> plus(8, 1);
-  CHECK_NOTHROW(SDI::check_quad_extraction(q, plus, 2, ""));
-  CHECK_THROWS_AS(SDI::check_quad_extraction(q, plus, 0, ""), SD::Remeshing_failure); // another topology
+  CHECK_NOTHROW(SDI::check_quad_extraction(q, plus, 2, normal, ""));
+  CHECK_THROWS_AS(SDI::check_quad_extraction(q, plus, 0, normal, ""), SD::Remeshing_failure); // another topology
   std::vector<int> wrong = plus;
   wrong[3] = -1; // valence 5 due at corner 3
-  CHECK_THROWS_AS(SDI::check_quad_extraction(q, wrong, 2, ""), SD::Remeshing_failure);
+  CHECK_THROWS_AS(SDI::check_quad_extraction(q, wrong, 2, normal, ""), SD::Remeshing_failure);
   SDI::Quad_extraction open = q;
   open.faces.pop_back(); // edges with one quad
-  CHECK_THROWS_AS(SDI::check_quad_extraction(open, plus, 1, ""), SD::Remeshing_failure);
+  CHECK_THROWS_AS(SDI::check_quad_extraction(open, plus, 1, normal, ""), SD::Remeshing_failure);
   SDI::Quad_extraction pentagon = q;
   pentagon.non_quads = 1;
-  CHECK_THROWS_AS(SDI::check_quad_extraction(pentagon, plus, 2, ""), SD::Remeshing_failure);
+  CHECK_THROWS_AS(SDI::check_quad_extraction(pentagon, plus, 2, normal, ""), SD::Remeshing_failure);
   SDI::Quad_extraction loose = q;
   loose.open_ends = 2;
-  CHECK_THROWS_AS(SDI::check_quad_extraction(loose, plus, 2, ""), SD::Remeshing_failure);
+  CHECK_THROWS_AS(SDI::check_quad_extraction(loose, plus, 2, normal, ""), SD::Remeshing_failure);
+  // the same quads facing into the cube: a consistent mesh, but against the surface
+  SDI::Quad_extraction inside = q;
+  for(auto& face : inside.faces)
+    std::reverse(face.begin(), face.end());
+  CHECK_THROWS_AS(SDI::check_quad_extraction(inside, plus, 2, normal, ""), SD::Remeshing_failure);
 
   // and the test's own reading, on a cube whose corners are the cones of a cube-shaped input
   test::Surface_mesh cube;
@@ -321,7 +338,7 @@ TEST_CASE("The extraction's checker refuses what is not the quad mesh of the fie
 }
 
 TEMPLATE_TEST_CASE("Bad input to the field-aligned remesher is refused and changes nothing", "[field_aligned_quads]",
-                   SD_MESH_TYPES)
+                   SD_FIELD_QUAD_MESH_TYPES)
 {
   using Mesh = TestType;
   const Mesh torus = make_case<Mesh>("torus");
@@ -356,7 +373,7 @@ TEMPLATE_TEST_CASE("Bad input to the field-aligned remesher is refused and chang
 }
 
 TEMPLATE_TEST_CASE("Separated singularities: no two closer than asked, unless no field exists otherwise",
-                   "[field_aligned_quads]", SD_MESH_TYPES)
+                   "[field_aligned_quads]", SD_FIELD_QUAD_MESH_TYPES)
 {
   using Mesh = TestType;
   const Mesh mesh = test::load_mesh<Mesh>("bunny_1k.off");

@@ -301,6 +301,7 @@ int run_field(const Options& o, Traits traits)
                                  std::to_string(num_faces(input)) + " faces");
 
   // the cross field
+  program::Stopwatch field_clock;
   Mesh mesh = input; // with the field as a property
   auto field = mesh.add_property_map<Mesh::Vertex_index, program::Vector>("v:cross_field").first;
   SD::Trivial_connection tc(mesh, P::symmetry_order(4, CGAL::parameters::sparse_linear_solver(traits)));
@@ -317,25 +318,35 @@ int run_field(const Options& o, Traits traits)
   {
     const double weight = o.field == "principal" ? 0.1 : 0.;
     SD::smoothest_direction_field(
-      mesh, field, P::symmetry_order(4, P::curvature_alignment_weight(weight, CGAL::parameters::sparse_linear_solver(traits))));
+      mesh, field,
+      P::symmetry_order(4, P::curvature_alignment_weight(weight, CGAL::parameters::sparse_linear_solver(traits))));
     auto index = mesh.add_property_map<Mesh::Face_index, int>("f:cone", 0).first;
     const std::size_t cones = SD::direction_field_singularities(mesh, field, index, P::symmetry_order(4));
-    std::printf("cross field: %s, %zu cones\n", o.field == "principal" ? "smoothest aligned with the principal curvature directions" : "smoothest",
-                cones);
+    std::printf("cross field: %s, %zu cones\n",
+                o.field == "principal" ? "smoothest aligned with the principal curvature directions" : "smoothest", cones);
     if(o.cone_distance > 0.)
     {
       tc.set_indices(index);
-      const SD::Singularity_separation s = tc.separate_singularities(o.cone_distance * h);
-      std::printf("cones at least %.3g apart (%.3g h): %zu pairs removed, %zu cones moved, %zu close pairs kept\n",
-                  o.cone_distance * h, o.cone_distance, s.removed_pairs, s.moved, s.kept_pairs);
-      if(s.removed_pairs + s.moved > 0)
+      try
       {
-        tc.field(field);
-        std::printf("  the field is now the trivial connection with these %zu cones\n", cones - 2 * s.removed_pairs);
+        const SD::Singularity_separation s = tc.separate_singularities(o.cone_distance * h);
+        std::printf("cones at least %.3g apart (%.3g h): %zu pairs removed, %zu cones moved, %zu close pairs kept\n",
+                    o.cone_distance * h, o.cone_distance, s.removed_pairs, s.moved, s.kept_pairs);
+        if(s.removed_pairs + s.moved > 0)
+        {
+          tc.field(field);
+          std::printf("  the field is now the trivial connection with these %zu cones\n", cones - 2 * s.removed_pairs);
+        }
+      }
+      catch(const SD::Invalid_constraints& e)
+      {
+        std::printf("cones kept where the smoothest field has them: no vertex-based trivial connection has them (%s)\n",
+                    e.what());
       }
     }
   }
 
+  const double field_seconds = field_clock.lap() / 1000.;
   Mesh quads;
   const double scales[] = {1., 0.95, 1.05};
   for(std::size_t attempt = 0;; ++attempt)
@@ -345,11 +356,13 @@ int run_field(const Options& o, Traits traits)
     {
       const SD::Field_aligned_quad_remeshing_result r = SD::field_aligned_quad_remeshing(
         mesh, field, quads,
-        P::target_edge_length(spacing, P::stiffening_rounds(o.stiffening_rounds, CGAL::parameters::sparse_linear_solver(traits))));
+        P::target_edge_length(spacing,
+                              P::stiffening_rounds(o.stiffening_rounds, CGAL::parameters::sparse_linear_solver(traits))));
       std::printf("field-aligned quads (h = %.4g): %zu cones, %zu faces folded in the first map, %zu rounds of "
                   "stiffening, %zu folded at the end\n",
                   spacing, r.cones, r.initially_folded, r.stiffening_rounds, r.folded_faces);
-      std::printf("times: stripes %.3f s, extraction %.3f s\n", r.stripes_seconds, r.extraction_seconds);
+      std::printf("times: field %.3f s, stripes %.3f s, extraction %.3f s\n", field_seconds, r.stripes_seconds,
+                  r.extraction_seconds);
       break;
     }
     catch(const SD::Remeshing_failure& e)
@@ -444,6 +457,7 @@ int main(int argc, char** argv)
 {
   return program::run_main("quad_remesh", usage, argc, [&] {
     const Options o = parse(argc, argv);
-    return program::with_solver(o.solver, [&](auto traits) { return o.method == "field" ? run_field(o, traits) : run(o, traits); });
+    return program::with_solver(o.solver,
+                                [&](auto traits) { return o.method == "field" ? run_field(o, traits) : run(o, traits); });
   });
 }

@@ -303,9 +303,9 @@ std::vector<Vector> make_field(const Mesh& mesh, const std::string& spec, const 
 
 // The picture: every face split into sub-triangles whose points carry `scalar(face, b)` (b the
 // barycentric coordinates of the corners source(h), target(h), target(next(h)), h = halfedge(f)).
-// A face for which `split(f)` holds (a branch face) is drawn as the three triangles around its
-// centroid, each sampled from its own inside, so that the pattern is evaluated on the sheet of
-// that triangle at the corners too.
+// A face for which `split(f)` gives a point (a branch face: its branch point, in barycentric
+// coordinates) is drawn as the three triangles around that point, each sampled from its own
+// inside, so that the pattern is evaluated on the sheet of that triangle at the corners too.
 template <class Scalar, class Split>
 void write_picture(const Mesh& mesh, std::size_t n, const Scalar& scalar, const Split& split,
                    program::Output_files& outputs, const Options& o)
@@ -324,8 +324,9 @@ void write_picture(const Mesh& mesh, std::size_t n, const Scalar& scalar, const 
       p[i] = eigen(mesh.point(corner[i]));
       nn[i] = normal[std::size_t(corner[i])];
     }
-    const Bary c0{1., 0., 0.}, c1{0., 1., 0.}, c2{0., 0., 1.}, centre{1. / 3., 1. / 3., 1. / 3.};
-    const bool three = split(f);
+    const std::optional<Bary> branch_point = split(f);
+    const Bary c0{1., 0., 0.}, c1{0., 1., 0.}, c2{0., 0., 1.}, centre = branch_point ? *branch_point : Bary{};
+    const bool three = branch_point.has_value();
     const std::array<std::array<Bary, 3>, 3> pieces{
       {{c0, c1, three ? centre : c2}, {c1, c2, centre}, {c2, c0, centre}}};
     for(std::size_t k_piece = 0; k_piece < (three ? 3u : 1u); ++k_piece)
@@ -480,7 +481,7 @@ int run_vector_field(const Options& o, Mesh& mesh, const std::vector<Vector>& fi
         const auto h0 = halfedge(f, mesh); // corners at source(h0), target(h0), target(next(h0))
         return std::cos(b[0] * corner[prev(h0, mesh)] + b[1] * corner[h0] + b[2] * corner[next(h0, mesh)]);
       },
-      [](Mesh::Face_index) { return false; }, outputs, o);
+      [](Mesh::Face_index) { return std::optional<std::array<double, 3>>(); }, outputs, o);
   }
   return 0;
 }
@@ -645,7 +646,10 @@ int run_branched(const Options& o, const Mesh& mesh, const std::vector<Vector>& 
         const double u = std::cos(bsp.value(f, b, 0));
         return n == 4 ? (std::max)(u, std::cos(bsp.value(f, b, 1))) : u;
       },
-      [&](Mesh::Face_index f) { return bsp.is_branch_face(f); }, outputs, o);
+      [&](Mesh::Face_index f) {
+        return bsp.is_branch_face(f) ? std::optional<std::array<double, 3>>(bsp.branch_point(f)) : std::nullopt;
+      },
+      outputs, o);
   }
   return 0;
 }

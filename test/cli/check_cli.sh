@@ -285,6 +285,27 @@ for args in "--min 0" "--max 5" "--min 0 --max 0" "--min -1 --max 5" "--min 0 --
   # shellcheck disable=SC2086
   refuse quad_remesh "$E" $args --output "$O/q.off"
 done
+# --method field and the options of either method
+for args in "--method" "--method magic" "--target-faces 0" "--target-faces -5" "--target-faces x" \
+            "--target-faces 100 --edge-length 0.1" "--field smoothest" "--cone-distance 1" "--singularity 3:1/4" \
+            "--stiffening-rounds 3" "--method field --field magic" "--method field --cone-distance -1" \
+            "--method field --cone-distance nan" "--method field --singularity 3:1" "--method field --singularity 3:2/4" \
+            "--method field --singularity -1:1/4" "--method field --singularity 3:1/4 --singularity 3:-1/4" \
+            "--method field --singularity 3:1/4 --field smoothest" "--method field --stiffening-rounds 65" \
+            "--method field --min 0 --max 5" "--method field --no-spectacles" "--method field --singularity 999999:1/4" \
+            "--method field --singularity 0:1/4"; do
+  # shellcheck disable=SC2086
+  refuse quad_remesh "$E" $args --output "$O/q.off"
+done
+refuse quad_remesh "$DATA/hemisphere.off" --method field --output "$O/q.off"
+# pure quads whose irregular vertices are the field's cones (the program checks it too)
+accept quad_remesh "$E" --method field --target-faces 800 --output "$O/field.off"
+cones=$(sed -n 's/^field-aligned quads (h = [^)]*): \([0-9]*\) cones.*/\1/p' "$WORK/stdout")
+if ! grep -q "100.0% quads" "$WORK/stdout" || [ -z "$cones" ] ||
+   ! grep -q "^  $cones irregular vertices" "$WORK/stdout"; then
+  echo "FAILED: quad_remesh eight.off --method field: $(grep -E "cones|quads|irregular" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
 refuse quad_remesh "$E"
 refuse quad_remesh "$WORK/quad.off" --output "$O/q.off"
 refuse quad_remesh "$WORK/nan.off" --output "$O/q.off"

@@ -894,15 +894,16 @@ private:
       const std::array<Eigen::Vector3d, 3> p{program::eigen(mesh.point(source(h, mesh))),
                                              program::eigen(mesh.point(target(h, mesh))),
                                              program::eigen(mesh.point(target(next(h, mesh), mesh)))};
-      const Eigen::Vector3d centre = (p[0] + p[1] + p[2]) / 3.;
+      const std::array<double, 3> o = m_bsp->branch_point(descriptor(f)); // barycentric, as p
+      const Eigen::Vector3d centre = o[0] * p[0] + o[1] * p[1] + o[2] * p[2];
       for(int i = 0; i < 3; ++i)
       {
         const int j = (i + 1) % 3;
-        std::array<double, 3> middle{1. / 9., 1. / 9., 1. / 9.}; // the small triangle's centroid
+        std::array<double, 3> middle{o[0] / 3., o[1] / 3., o[2] / 3.}; // the small triangle's centroid
         middle[std::size_t(i)] += 1. / 3., middle[std::size_t(j)] += 1. / 3.;
         for(int corner = 0; corner < 3; ++corner)
         {
-          std::array<double, 3> b{1. / 3., 1. / 3., 1. / 3.};
+          std::array<double, 3> b = o;
           Eigen::Vector3d x = centre;
           if(corner < 2)
           {

@@ -199,7 +199,13 @@ public:
         throw Invalid_constraints("face " + std::to_string(f) + " holds a stripe singularity and is a branch face of "
                                   "the new field (index " + std::to_string(cover.index_numerator[f]) + "/" +
                                   std::to_string(m_n) + "): move the singularity first");
-    // a new field drops the stiffening of the old one's folds
+    // a new field drops the stiffening of the old one's folds, and the analyses made for them
+    if constexpr(internal::Has_solver_settings<SolverTraits>::value)
+      if(m_own_analysis_cache)
+      {
+        m_traits.solver().set_analysis_cache(nullptr);
+        m_own_analysis_cache = false;
+      }
     std::vector<double> dropped;
     std::swap(dropped, m_stiffness);
     std::unique_ptr<Solver> solver;
@@ -448,6 +454,14 @@ public:
     require_field();
     if(!std::isfinite(factor) || !(factor >= 1.))
       throw Invalid_parameter("factor", "must be finite and at least 1, got " + std::to_string(factor));
+    // the stiffened systems have one pattern: order and analyse it once (a cache of this object's
+    // own, dropped with the next field, unless the traits have one)
+    if constexpr(internal::Has_solver_settings<SolverTraits>::value)
+      if(!m_traits.solver().analysis_cache())
+      {
+        m_traits.solver().set_analysis_cache(std::make_shared<Symbolic_analysis_cache>());
+        m_own_analysis_cache = true;
+      }
     std::vector<double> scaled = m_stiffness;
     if(scaled.empty())
       scaled.assign(m_idx->number_of_faces(), 1.);
@@ -886,6 +900,7 @@ private:
   int m_n = 2;
   bool m_uniform = false, m_lattice = false;
   std::vector<double> m_stiffness; // per face (stiffen()), empty: all 1
+  bool m_own_analysis_cache = false;
   std::shared_ptr<const Indices> m_idx;
   std::shared_ptr<const internal::Topology> m_topology;
   internal::Discrete_connection m_connection;

@@ -54,13 +54,13 @@ struct Field_aligned_quad_remeshing_result
 /// **How.** The two stripe families of `Branched_stripe_parameterizer` with n = 4, spacing h, no
 /// stripe singularity (no T-junction) and every branch point on the lattice
 /// (`set_lattice_branch_points()`) are the coordinates (u, v) of a seamless map whose integer
-/// lines meet at right angles and whose cones are lattice points. Where the map folds
-/// (`folded_faces()`), the energy is stiffened there (`stiffen()`, times 4) and solved again, up
-/// to `stiffening_rounds` times (Bommes et al. 2009). The level-0 lines are then the edges of the
-/// result, their crossings its vertices, the cones its irregular vertices; the faces are traced
-/// from the order of the lines around every vertex. The result is checked: only quads, every
-/// edge shared by two of them, the input's Euler characteristic, valence 4 - k at every cone of
-/// index k / 4 and 4 elsewhere.
+/// lines meet at right angles and whose cones are lattice points. The level-0 lines are the
+/// edges of the result, their crossings its vertices, the cones its irregular vertices; the faces
+/// are traced from the order of the lines around every vertex. The result is checked: only quads,
+/// every edge shared by two of them, the input's Euler characteristic, valence 4 - k at every cone
+/// of index k / 4 and 4 elsewhere, every quad facing the way of the surface. Where it is not so,
+/// the faces where the map folds (`folded_faces()`) are stiffened (`stiffen()`, times 4) and the
+/// map solved and extracted again, up to `stiffening_rounds` times (Bommes et al. 2009).
 ///
 /// \param tm a closed triangle mesh (model of `FaceListGraph`)
 /// \param field a readable vertex -> `Vector_3` map
@@ -131,19 +131,6 @@ Field_aligned_quad_remeshing_result field_aligned_quad_remeshing(const TriangleM
   Field_aligned_quad_remeshing_result result;
   result.edge_length = h;
   result.cones = bsp.branch_faces().size();
-  auto folded = bsp.folded_faces();
-  result.initially_folded = folded.size();
-  while(!folded.empty() && result.stiffening_rounds < std::size_t(rounds))
-  {
-    bsp.stiffen(folded, 4.);
-    bsp.solve();
-    folded = bsp.folded_faces();
-    ++result.stiffening_rounds;
-  }
-  result.folded_faces = folded.size();
-  result.stripes_seconds = seconds_since(start);
-
-  const auto extraction_start = Clock::now();
   std::vector<internal::Quad_extraction_cone> cones;
   std::vector<int> cone_index;
   for(std::size_t f : bsp.branch_faces())
@@ -152,17 +139,44 @@ Field_aligned_quad_remeshing_result field_aligned_quad_remeshing(const TriangleM
     cones.push_back({f, internal::point_in_face(idx, vpm, f, bsp.branch_point(fd))});
     cone_index.push_back(bsp.field_index_numerator(fd));
   }
-  const internal::Quad_extraction q =
-    internal::extract_quads(internal::stripe_polylines(bsp.isolines(), idx), surface.normal, cones,
-                            1e-9 * std::sqrt(surface.area));
-  const std::string folds = result.folded_faces == 0 ? std::string("")
-                                                     : " (the map still folds in " + std::to_string(result.folded_faces) +
-                                                         " faces after " + std::to_string(rounds) +
-                                                         " rounds of stiffening: another edge length often helps)";
   long chi = 0;
   for(const auto& c : bsp.topology().components.info)
     chi += c.euler_characteristic();
-  internal::check_quad_extraction(q, cone_index, chi, folds);
+  // after every solve: the lines' quad mesh, checked; where it is not the field's, stiffen the
+  // folded faces and solve again (a fold does not always break the quad mesh: the check decides)
+  internal::Quad_extraction q;
+  double extraction_seconds = 0.;
+  for(;;)
+  {
+    const auto folded = bsp.folded_faces();
+    if(result.stiffening_rounds == 0)
+      result.initially_folded = folded.size();
+    result.folded_faces = folded.size();
+    const auto extraction_start = Clock::now();
+    try
+    {
+      q = internal::extract_quads(internal::stripe_polylines(bsp.isolines(), idx), surface.normal, cones,
+                                  1e-9 * std::sqrt(surface.area));
+      internal::check_quad_extraction(q, cone_index, chi, surface.normal, "");
+      extraction_seconds += seconds_since(extraction_start);
+      break;
+    }
+    catch(const Remeshing_failure& e)
+    {
+      extraction_seconds += seconds_since(extraction_start);
+      if(folded.empty() || result.stiffening_rounds >= std::size_t(rounds))
+        throw Remeshing_failure(std::string(e.what()) +
+                                (folded.empty() ? std::string(" (the map does not fold") :
+                                                  " (the map folds in " + std::to_string(folded.size()) + " faces after " +
+                                                    std::to_string(result.stiffening_rounds) + " rounds of stiffening") +
+                                ": another edge length often helps)");
+    }
+    bsp.stiffen(folded, 4.);
+    bsp.solve();
+    ++result.stiffening_rounds;
+  }
+  result.extraction_seconds = extraction_seconds;
+  result.stripes_seconds = seconds_since(start) - extraction_seconds;
   result.vertices = q.points.size();
   result.faces = q.faces.size();
   result.euler_characteristic = chi;
@@ -173,7 +187,6 @@ Field_aligned_quad_remeshing_result field_aligned_quad_remeshing(const TriangleM
   for(const auto& p : q.points)
     points.emplace_back(p.x(), p.y(), p.z());
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, q.faces, out);
-  result.extraction_seconds = seconds_since(extraction_start);
   return result;
 }
 

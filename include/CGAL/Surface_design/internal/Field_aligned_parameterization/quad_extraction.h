@@ -309,11 +309,13 @@ std::vector<Stripe_isoline_polyline> stripe_polylines(const std::vector<Isoline>
 }
 
 /// Checks that the extraction is a closed pure quad mesh with Euler characteristic `chi` whose
-/// vertex at cone i has valence 4 - cone_index[i] and every other vertex valence 4; throws
+/// vertex at cone i has valence 4 - cone_index[i] and every other vertex valence 4, and whose
+/// quads face the way of the input (the normal of a quad, the cross product of its diagonals,
+/// against the unit normals `normal` of the input faces its corners lie in); throws
 /// Remeshing_failure saying what is wrong otherwise (`why` appended: what the caller knows of
 /// the cause).
 inline void check_quad_extraction(const Quad_extraction& q, const std::vector<int>& cone_index, long chi,
-                                  const std::string& why)
+                                  const std::vector<Eigen::Vector3d>& normal, const std::string& why)
 {
   auto fail = [&](const std::string& what) {
     throw Remeshing_failure("the level-0 lines of the stripes do not form the quad mesh of the field: " + what + why);
@@ -349,6 +351,17 @@ inline void check_quad_extraction(const Quad_extraction& q, const std::vector<in
     if(valence[v] != expected[v])
       fail("vertex " + std::to_string(v) + " has valence " + std::to_string(valence[v]) + " where " +
            std::to_string(expected[v]) + " is due");
+  std::size_t flipped = 0;
+  for(const auto& face : q.faces)
+  {
+    const Eigen::Vector3d n = (q.points[face[2]] - q.points[face[0]]).cross(q.points[face[3]] - q.points[face[1]]);
+    double agreement = 0.;
+    for(std::size_t v : face)
+      agreement += n.dot(normal[q.point_face[v]]);
+    flipped += agreement < 0. ? 1 : 0;
+  }
+  if(flipped != 0)
+    fail(std::to_string(flipped) + " quads face against the surface");
 }
 
 } // namespace internal
