@@ -259,6 +259,16 @@ int report_and_write(const Mesh& input, const Mesh& quads, const Options& o, pro
   return 0;
 }
 
+// The input mesh, with its counts printed.
+Mesh read_input(const Options& o)
+{
+  Mesh input = program::read_mesh(o.input);
+  const long chi = long(num_vertices(input)) - long(num_edges(input)) + long(num_faces(input));
+  std::cout << "read " << o.input << ": " << num_vertices(input) << " vertices, " << num_faces(input)
+            << " faces, Euler characteristic " << chi << '\n';
+  return input;
+}
+
 // --edge-length, or sqrt(area / N) with --target-faces N; 0 without either (the default).
 double edge_length(const Mesh& input, const Options& o)
 {
@@ -281,10 +291,7 @@ template <class Traits>
 int run_field(const Options& o, Traits traits)
 {
   program::Stopwatch clock;
-  const Mesh input = program::read_mesh(o.input);
-  const long chi = long(num_vertices(input)) - long(num_edges(input)) + long(num_faces(input));
-  std::cout << "read " << o.input << ": " << num_vertices(input) << " vertices, " << num_faces(input)
-            << " faces, Euler characteristic " << chi << '\n';
+  const Mesh input = read_input(o);
   if(!CGAL::is_closed(input))
     throw std::runtime_error("--method field takes closed meshes (the lines do not follow a boundary yet): use "
                              "--method harmonic for this one; nothing written");
@@ -379,10 +386,7 @@ template <class Traits>
 int run(const Options& o, Traits traits)
 {
   program::Stopwatch clock;
-  const Mesh input = program::read_mesh(o.input);
-  const long chi = long(num_vertices(input)) - long(num_edges(input)) + long(num_faces(input));
-  std::cout << "read " << o.input << ": " << num_vertices(input) << " vertices, " << num_faces(input)
-            << " faces, Euler characteristic " << chi << '\n';
+  const Mesh input = read_input(o);
   const SD::Harmonic_weights weights =
     o.intrinsic_delaunay ? SD::Harmonic_weights::intrinsic_delaunay : SD::Harmonic_weights::cotangent;
   SD::Harmonic_quad_remesher<Mesh, Mesh::Property_map<Mesh::Vertex_index, Point>, Traits> remesher(
