@@ -153,24 +153,18 @@ Field_aligned_quad_remeshing_result field_aligned_quad_remeshing(const TriangleM
       result.initially_folded = folded.size();
     result.folded_faces = folded.size();
     const auto extraction_start = Clock::now();
-    try
-    {
-      q = internal::extract_quads(internal::stripe_polylines(bsp.isolines(), idx), surface.normal, cones,
-                                  1e-9 * std::sqrt(surface.area));
-      internal::check_quad_extraction(q, cone_index, chi, surface.normal, "");
-      extraction_seconds += seconds_since(extraction_start);
+    q = internal::extract_quads(internal::stripe_polylines(bsp.isolines(), idx), surface.normal, cones,
+                                1e-9 * std::sqrt(surface.area));
+    const std::string problem = internal::quad_extraction_problem(q, cone_index, chi, surface.normal);
+    extraction_seconds += seconds_since(extraction_start);
+    if(problem.empty())
       break;
-    }
-    catch(const Remeshing_failure& e)
-    {
-      extraction_seconds += seconds_since(extraction_start);
-      if(folded.empty() || result.stiffening_rounds >= std::size_t(rounds))
-        throw Remeshing_failure(std::string(e.what()) +
-                                (folded.empty() ? std::string(" (the map does not fold") :
-                                                  " (the map folds in " + std::to_string(folded.size()) + " faces after " +
-                                                    std::to_string(result.stiffening_rounds) + " rounds of stiffening") +
-                                ": another edge length often helps)");
-    }
+    if(folded.empty() || result.stiffening_rounds >= std::size_t(rounds))
+      throw Remeshing_failure("the level-0 lines of the stripes do not form the quad mesh of the field: " + problem +
+                              (folded.empty() ? std::string(" (the map does not fold") :
+                                                " (the map folds in " + std::to_string(folded.size()) + " faces after " +
+                                                  std::to_string(result.stiffening_rounds) + " rounds of stiffening") +
+                              ": another edge length often helps)");
     bsp.stiffen(folded, 4.);
     bsp.solve();
     ++result.stiffening_rounds;

@@ -8,7 +8,6 @@
 #ifndef CGAL_SURFACE_DESIGN_INTERNAL_FIELD_ALIGNED_PARAMETERIZATION_QUAD_EXTRACTION_H
 #define CGAL_SURFACE_DESIGN_INTERNAL_FIELD_ALIGNED_PARAMETERIZATION_QUAD_EXTRACTION_H
 
-#include <CGAL/Surface_design/exceptions.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>
 #include <CGAL/Surface_design/internal/Field_aligned_parameterization/stripe_isolines.h>
 
@@ -311,21 +310,17 @@ std::vector<Stripe_isoline_polyline> stripe_polylines(const std::vector<Isoline>
 /// Checks that the extraction is a closed pure quad mesh with Euler characteristic `chi` whose
 /// vertex at cone i has valence 4 - cone_index[i] and every other vertex valence 4, and whose
 /// quads face the way of the input (the normal of a quad, the cross product of its diagonals,
-/// against the unit normals `normal` of the input faces its corners lie in); throws
-/// Remeshing_failure saying what is wrong otherwise (`why` appended: what the caller knows of
-/// the cause).
-inline void check_quad_extraction(const Quad_extraction& q, const std::vector<int>& cone_index, long chi,
-                                  const std::vector<Eigen::Vector3d>& normal, const std::string& why)
+/// against the unit normals `normal` of the input faces its corners lie in). Returns what is wrong,
+/// or an empty string.
+inline std::string quad_extraction_problem(const Quad_extraction& q, const std::vector<int>& cone_index, long chi,
+                                           const std::vector<Eigen::Vector3d>& normal)
 {
-  auto fail = [&](const std::string& what) {
-    throw Remeshing_failure("the level-0 lines of the stripes do not form the quad mesh of the field: " + what + why);
-  };
   if(q.open_ends != 0)
-    fail(std::to_string(q.open_ends) + " line ends are not at a cone");
+    return std::to_string(q.open_ends) + " line ends are not at a cone";
   if(q.closed_lines_without_crossing != 0)
-    fail(std::to_string(q.closed_lines_without_crossing) + " closed lines cross no other line");
+    return std::to_string(q.closed_lines_without_crossing) + " closed lines cross no other line";
   if(q.non_quads != 0)
-    fail(std::to_string(q.non_quads) + " of " + std::to_string(q.faces.size()) + " faces are not quads");
+    return std::to_string(q.non_quads) + " of " + std::to_string(q.faces.size()) + " faces are not quads";
   std::map<std::pair<std::size_t, std::size_t>, int> edge_faces;
   std::vector<int> valence(q.points.size(), 0);
   for(const auto& face : q.faces)
@@ -337,20 +332,20 @@ inline void check_quad_extraction(const Quad_extraction& q, const std::vector<in
     }
   for(const auto& [edge, count] : edge_faces)
     if(count != 2)
-      fail("the edge between vertices " + std::to_string(edge.first) + " and " + std::to_string(edge.second) +
-           " has " + std::to_string(count) + " quads");
+      return "the edge between vertices " + std::to_string(edge.first) + " and " + std::to_string(edge.second) +
+             " has " + std::to_string(count) + " quads";
   if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(q.faces))
-    fail("the quads do not form a manifold, consistently oriented mesh");
+    return "the quads do not form a manifold, consistently oriented mesh";
   const long euler = long(q.points.size()) - long(edge_faces.size()) + long(q.faces.size());
   if(euler != chi)
-    fail("Euler characteristic " + std::to_string(euler) + ", the input's " + std::to_string(chi));
+    return "Euler characteristic " + std::to_string(euler) + ", the input's " + std::to_string(chi);
   std::vector<int> expected(q.points.size(), 4);
   for(std::size_t i = 0; i < cone_index.size(); ++i)
     expected[q.cone_vertex[i]] = 4 - cone_index[i];
   for(std::size_t v = 0; v < q.points.size(); ++v)
     if(valence[v] != expected[v])
-      fail("vertex " + std::to_string(v) + " has valence " + std::to_string(valence[v]) + " where " +
-           std::to_string(expected[v]) + " is due");
+      return "vertex " + std::to_string(v) + " has valence " + std::to_string(valence[v]) + " where " +
+             std::to_string(expected[v]) + " is due";
   std::size_t flipped = 0;
   for(const auto& face : q.faces)
   {
@@ -361,7 +356,8 @@ inline void check_quad_extraction(const Quad_extraction& q, const std::vector<in
     flipped += agreement < 0. ? 1 : 0;
   }
   if(flipped != 0)
-    fail(std::to_string(flipped) + " quads face against the surface");
+    return std::to_string(flipped) + " quads face against the surface";
+  return "";
 }
 
 } // namespace internal
