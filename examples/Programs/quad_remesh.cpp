@@ -359,6 +359,8 @@ int run_field(const Options& o, Traits traits)
   for(std::size_t attempt = 0;; ++attempt)
   {
     const double spacing = scales[attempt] * h;
+    std::printf("remeshing at h = %.4g (stripes, stiffening where the map folds, extraction)...\n", spacing);
+    std::fflush(stdout); // progress: the stiffening rounds can take seconds
     try
     {
       const SD::Field_aligned_quad_remeshing_result r = SD::field_aligned_quad_remeshing(
@@ -376,7 +378,7 @@ int run_field(const Options& o, Traits traits)
     {
       if(attempt + 1 == std::size(scales))
         throw;
-      std::printf("h = %.4g: %s\n  trying h = %.4g\n", spacing, e.what(), scales[attempt + 1] * h);
+      std::printf("  failed: %s\n", e.what());
     }
   }
   return report_and_write(input, quads, o, clock);
