@@ -211,6 +211,93 @@ TEMPLATE_TEST_CASE("Field-aligned quads with prescribed cones: valence 3 at +1/4
   CHECK(r.irregular_vertices == 4);
 }
 
+TEMPLATE_TEST_CASE("Field-aligned quads from a kept parameterizer: the remesher's mesh, then the quads of a moved "
+                   "cone; what is not a cross field's lattice map is refused", "[field_aligned_quads]",
+                   SD_FIELD_QUAD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
+  const Mesh mesh = make_case<Mesh>("torus");
+  const double h = std::sqrt(surface_area(mesh) / 800.);
+  SD::Trivial_connection<Mesh> tc(mesh, SD::parameters::symmetry_order(4));
+  const auto& idx = tc.indices();
+  // faces (major i, minor j) -> 2 (12 i + j): two +1/4 outside, two -1/4 inside
+  auto torus_face = [&](int major, int minor) { return idx.face(std::size_t(2 * (12 * major + minor))); };
+  std::map<face_descriptor, int> cones{
+    {torus_face(0, 0), 1}, {torus_face(18, 0), 1}, {torus_face(9, 6), -1}, {torus_face(27, 6), -1}};
+  for(const auto& [f, k] : cones)
+    tc.set_index(f, k);
+  tc.solve();
+  Field<Mesh> field{&mesh, {}};
+  tc.field(field.map());
+  Quad_mesh reference;
+  const auto r0 = SD::field_aligned_quad_remeshing(mesh, field.map(), reference, SD::parameters::target_edge_length(h));
+
+  SD::Branched_stripe_parameterizer bsp(mesh, SD::parameters::symmetry_order(4));
+  bsp.set_field(field.map(), 1. / h);
+  bsp.set_lattice_branch_points(true);
+  Quad_mesh out;
+  const auto r = SD::extract_field_aligned_quads(bsp, out); // solves first
+  CHECK(quad_mesh_problem(mesh, cones, out) == "");
+  CHECK(r.faces == r0.faces);
+  CHECK(r.stiffening_rounds == r0.stiffening_rounds);
+  CHECK(std::abs(r.edge_length - h) < 1e-12 * h);
+
+  // an edit: one +1/4 cone moves a quarter of the way around the torus; the same parameterizer
+  // gives the quads of the new field, the cone's valence-3 vertex where it now is
+  tc.set_index(torus_face(0, 0), 0);
+  tc.set_index(torus_face(9, 0), 1);
+  tc.solve();
+  tc.field(field.map());
+  cones.erase(torus_face(0, 0));
+  cones[torus_face(9, 0)] = 1;
+  bsp.set_field(field.map(), 1. / h);
+  Quad_mesh moved;
+  const auto r1 = SD::extract_field_aligned_quads(bsp, moved);
+  CHECK(quad_mesh_problem(mesh, cones, moved) == "");
+  CHECK(r1.irregular_vertices == 4);
+
+  // refused, with nothing written: a stripe singularity (a T-junction), branch points off the
+  // lattice, a line field's stripes, rounds out of range
+  const std::size_t before = num_faces(moved);
+  const auto regular = torus_face(20, 3), other = torus_face(30, 9);
+  bsp.set_index(regular, 1);
+  bsp.set_index(other, -1);
+  CHECK_THROWS_AS(SD::extract_field_aligned_quads(bsp, moved), SD::Invalid_constraints);
+  bsp.clear_indices();
+  CHECK_THROWS_AS(SD::extract_field_aligned_quads(bsp, moved, SD::parameters::stiffening_rounds(65)),
+                  SD::Invalid_parameter);
+  bsp.set_lattice_branch_points(false);
+  CHECK_THROWS_AS(SD::extract_field_aligned_quads(bsp, moved), SD::Invalid_constraints);
+  SD::Branched_stripe_parameterizer lines(mesh, SD::parameters::symmetry_order(2));
+  CHECK_THROWS_AS(SD::extract_field_aligned_quads(lines, moved), SD::Invalid_constraints);
+  CHECK(num_faces(moved) == before);
+}
+
+TEST_CASE("Field-aligned quads on a torus without cones: a regular grid", "[field_aligned_quads]")
+{
+  using Mesh = test::Surface_mesh;
+  const Mesh mesh = make_case<Mesh>("torus");
+  SD::Trivial_connection<Mesh> tc(mesh, SD::parameters::symmetry_order(4));
+  tc.solve();
+  Field<Mesh> field{&mesh, {}};
+  tc.field(field.map());
+  REQUIRE(cones_of(mesh, field).empty());
+  SD::Branched_stripe_parameterizer bsp(mesh, SD::parameters::symmetry_order(4));
+  bsp.set_field(field.map(), std::sqrt(600. / surface_area(mesh)));
+  bsp.set_lattice_branch_points(true);
+  bsp.solve();
+  // every line is a loop: without cones the lattice's offset is free, and it is not the 0 of the
+  // vertex where the angles are pinned (both families' lines would cross there, at a mesh vertex)
+  for(const auto& line : bsp.isolines())
+    CHECK(line.closed);
+  Quad_mesh out;
+  const auto r = SD::extract_field_aligned_quads(bsp, out);
+  CHECK(quad_mesh_problem(mesh, {}, out) == "");
+  CHECK(r.irregular_vertices == 0);
+  CHECK(std::abs(double(r.faces) / 600. - 1.) < 0.25);
+}
+
 TEST_CASE("Field-aligned quads: both solvers give the same mesh", "[field_aligned_quads]")
 {
   using Mesh = test::Surface_mesh;

@@ -472,6 +472,172 @@ def run(server, data, nv, nf):
     status, state, _ = server.edit({"op": "field", "kind": "trivial"})
     check("trivial connection on the torus: no singularity needed", status == 200 and state["field_singularities"] == [], state)
 
+    quad_preview(server)
+
+
+def read_quad_off(text):
+    """(points, faces) of an OFF file."""
+    items = [line for line in text.splitlines() if line.strip() and not line.startswith("#")]
+    assert items[0].strip() == "OFF"
+    nv, nf = (int(x) for x in items[1].split()[:2])
+    points = [tuple(float(x) for x in line.split()) for line in items[2:2 + nv]]
+    faces = [tuple(int(x) for x in line.split()[1:]) for line in items[2 + nv:2 + nv + nf]]
+    return points, faces
+
+
+def quad_mesh_reading(points, faces):
+    """An independent reading of a closed quad mesh: (only quads, every edge in two faces once each
+    way, Euler characteristic, valence per vertex)."""
+    directed = {}
+    for face in faces:
+        for i in range(len(face)):
+            key = (face[i], face[(i + 1) % len(face)])
+            directed[key] = directed.get(key, 0) + 1
+    quads = all(len(face) == 4 for face in faces)
+    two_sided = all(n == 1 and directed.get((b, a)) == 1 for (a, b), n in directed.items())
+    edges = len(directed) // 2
+    valence = [0] * len(points)
+    for a, b in directed:
+        valence[a] += 1
+    return quads, two_sided, len(points) - edges + len(faces), valence
+
+
+def quad_vertices_on_the_lattice(server, points, step=5):
+    """For every `step`-th quad vertex: max(|u|, |v|) mod 2 pi there, read from the state's corner
+    data (linear in the regular input face the vertex projects into; vertices in or next to branch
+    faces, where no such face holds them, are left out). Sorted."""
+    mesh = server.json("api/mesh")
+    P, T, nf = mesh["positions"], mesh["triangles"], mesh["faces"]
+    state, data = server.state()
+    u, v = data[:3 * nf], data[3 * nf:6 * nf]
+    branch = {f for f, _ in state["branch_faces"]}
+
+    def sub(a, b):
+        return [a[i] - b[i] for i in range(3)]
+
+    def dot(a, b):
+        return sum(a[i] * b[i] for i in range(3))
+
+    V = [P[3 * i:3 * i + 3] for i in range(len(P) // 3)]
+    F = [T[3 * f:3 * f + 3] for f in range(nf)]
+    centre = [[sum(V[k][i] for k in F[f]) / 3 for i in range(3)] for f in range(nf)]
+    off = []
+    for p in points[::step]:
+        for f in sorted(range(nf), key=lambda f: dot(sub(centre[f], p), sub(centre[f], p)))[:12]:
+            if f in branch:
+                continue
+            a, b, c = (V[k] for k in F[f])
+            e0, e1, e2 = sub(b, a), sub(c, a), sub(p, a)
+            d00, d01, d11, d20, d21 = dot(e0, e0), dot(e0, e1), dot(e1, e1), dot(e2, e0), dot(e2, e1)
+            den = d00 * d11 - d01 * d01
+            y, z = (d11 * d20 - d01 * d21) / den, (d00 * d21 - d01 * d20) / den
+            x = 1 - y - z
+            if min(x, y, z) > -1e-6:
+                uu = x * u[3 * f] + y * u[3 * f + 1] + z * u[3 * f + 2]
+                vv = x * v[3 * f] + y * v[3 * f + 1] + z * v[3 * f + 2]
+                off.append(max(abs(wrap(uu)), abs(wrap(vv))))
+                break
+    return sorted(off)
+
+
+def quad_preview(server):
+    """The cross field's quad preview: the quads of the two families' lines after every edit, their
+    irregular vertices the cones (read from the exported OFF alone), updated when a cone moves,
+    exported as OFF and OBJ; refusals leave the state as it was."""
+    # the torus (Euler characteristic 0): a cross field without cones gives a regular grid
+    status, state, data = server.edit({"op": "field", "kind": "trivial", "order": 4})
+    check("quads: a cross field on the torus", status == 200 and state["order"] == 4 and state["quads"] == {"on": False},
+          state)
+    status, _, body = server.request("GET", "api/export_quads.off")
+    check("quads: no export while the preview is off", status == 409 and b"off" in body, (status, body[:200]))
+    status, state, data = server.edit({"op": "frequency", "stripes": 8})
+    status, state, data = server.edit({"op": "quads", "on": True})
+    nf = state["faces"] if status == 200 else 0
+    check("quads: the torus's preview is a quad mesh without irregular vertex",
+          status == 200 and state["quads"]["on"] and state["quads"]["valid"] and
+          state["quads"]["irregular_vertices"] == 0 and state["quads"]["faces"] > 20, state)
+    check("quads: the state's data ends with the quad edges",
+          status == 200 and len(data) == 3 * nf * 2 + 15 * state["overlay"] + 6 * state["quad_edges"] and
+          state["quad_edges"] == 2 * state["quads"]["faces"], state if status != 200 else len(data))
+    status, _, body = server.request("GET", "api/export_quads.off")
+    check("quads: exported as OFF", status == 200, (status, body[:200]))
+    if status == 200:
+        points, faces = read_quad_off(body.decode())
+        quads, two_sided, chi, valence = quad_mesh_reading(points, faces)
+        check("quads: the torus's OFF: quads, closed, Euler characteristic 0, valence 4 everywhere",
+              quads and two_sided and chi == 0 and set(valence) == {4} and len(faces) == state["quads"]["faces"],
+              (quads, two_sided, chi, set(valence)))
+    status, _, body = server.request("GET", "api/export_quads.obj")
+    text = body.decode() if status == 200 else ""
+    check("quads: exported as OBJ, the same mesh",
+          status == 200 and sum(line.startswith("f ") for line in text.splitlines()) == state["quads"]["faces"] and
+          all(len(line.split()) == 5 for line in text.splitlines() if line.startswith("f ")), (status, text[:200]))
+
+    # refused, the state as it was: rounds out of range, "on" not a boolean, a stripe singularity
+    # (a T-junction) while the preview is on
+    expect_refused(server, {"op": "quads", "on": True, "rounds": 65}, ["rounds", "range"], "quads: 65 rounds")
+    expect_refused(server, {"op": "quads", "on": 1}, ["true or false"], "quads: \"on\" = 1")
+    expect_refused(server, {"op": "add_pair", "plus": 0, "minus": nf // 2}, ["T-junction"],
+                   "quads: a stripe singularity pair while the preview is on")
+
+    # the 8k bunny (genus 0): the trivial cross field's 8 cones of +1/4 are the 8 vertices of valence 3
+    status, state, _ = server.edit({"op": "load", "name": "bunny_8k.off"})
+    status, state, _ = server.edit({"op": "field", "kind": "trivial", "order": 4})
+    check("quads: off after loading a mesh, 8 cones on the bunny",
+          status == 200 and state["quads"] == {"on": False} and len(state["field_singularities"]) == 8, state)
+    status, state, _ = server.edit({"op": "frequency", "stripes": 12})
+    status, state, data = server.edit({"op": "quads", "on": True})
+    check("quads: the bunny's preview", status == 200 and state["quads"]["valid"], state)
+
+    def read_exported(label, cones):
+        status, _, body = server.request("GET", "api/export_quads.off")
+        if status != 200:
+            check(label, False, (status, body[:300]))
+            return
+        points, faces = read_quad_off(body.decode())
+        quads, two_sided, chi, valence = quad_mesh_reading(points, faces)
+        irregular = sorted(v for v in valence if v != 4)
+        check(label, quads and two_sided and chi == 2 and irregular == [3] * cones,
+              (quads, two_sided, chi, irregular))
+
+    if status == 200 and state["quads"]["valid"]:
+        read_exported("quads: the bunny's OFF: quads, closed, Euler characteristic 2, valence 3 at 8 vertices "
+                      "(the cones), 4 elsewhere", 8)
+        # a cone dragged to a neighbouring face: the preview follows
+        mesh = server.json("api/mesh")
+        T = mesh["triangles"]
+        cone = state["field_singularities"][0][0]
+        taken = {f for f, _ in state["field_singularities"]}
+        neighbour = next(f for f in range(mesh["faces"]) if f not in taken and f != cone and
+                         len(set(T[3 * f:3 * f + 3]) & set(T[3 * cone:3 * cone + 3])) == 2)
+        status, state, _ = server.edit({"op": "move_field_singularity", "from": cone, "to": neighbour})
+        check("quads: a cone moved, the preview updated with it", status == 200 and state["quads"]["on"] and
+              neighbour in {f for f, _ in state["field_singularities"]} and "quads_ms" in state["timing"], state)
+        if status == 200 and state["quads"]["valid"]:
+            read_exported("quads: after the move, still 8 vertices of valence 3", 8)
+            # the exported vertices are where both stripe angles of the same solve are 0 mod 2 pi
+            status, _, body = server.request("GET", "api/export_quads.off")
+            points, _ = read_quad_off(body.decode())
+            off = quad_vertices_on_the_lattice(server, points)
+            check("quads: the vertices lie where u = v = 0 mod 2 pi (90% within 1e-4 rad)",
+                  len(off) > len(points) // 10 and off[int(0.9 * len(off))] < 1e-4,
+                  (len(off), off[len(off) // 2] if off else None, off[int(0.9 * len(off))] if off else None))
+        elif status == 200:
+            check("quads: a failed preview says why", "quad mesh" in state["quads"]["problem"], state["quads"])
+    # the trivial connection with the smoothest cross field's cones, moved h apart (as quad_remesh)
+    expect_refused(server, {"op": "field", "kind": "trivial", "order": 4, "cones": "random"}, ["spread", "smoothest"],
+                   "a trivial field's cones neither spread nor smoothest")
+    status, state, _ = server.edit({"op": "field", "kind": "trivial", "order": 4, "cones": "smoothest"})
+    check("quads: the smoothest field's cones, summing to 4 chi = 8 quarters, the preview still on",
+          status == 200 and state["field"].get("cones") == "smoothest" and
+          sum(k for _, k in state["field_singularities"]) == 8 and state["quads"]["on"] and
+          sorted(state["field_singularities"]) == sorted(state["branch_faces"]), state)
+    status, state, data = server.edit({"op": "quads", "on": False})
+    check("quads: off again, no edges", status == 200 and state["quads"] == {"on": False} and state["quad_edges"] == 0,
+          state)
+    status, state, _ = server.edit({"op": "field", "kind": "smoothest", "order": 2})
+    expect_refused(server, {"op": "quads", "on": True}, ["cross field"], "quads on a line field")
+
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -8,7 +8,9 @@
 // prescribed singularities, and the per-corner stripe angles of the last solve. Every edit is a
 // JSON request; it either succeeds and re-solves (one back-substitution for the singularities and
 // the frequency, plus the field's own solve, and for line and cross fields a factorization, when
-// the field changes), or throws Request_error and leaves the state as it was. The server
+// the field changes), or throws Request_error and leaves the state as it was. For a cross field,
+// the quad preview ("quads" on) puts the cones on the lattice and extracts, after every solve, the
+// quad mesh of the two families' level-0 lines (extract_field_aligned_quads()). The server
 // (surface_design_editor.cpp), the benchmark (benchmark/workload_editor.cpp) and the fuzzer
 // (test/fuzz/fuzz_editor_edit.cpp) drive this class.
 
@@ -22,6 +24,7 @@
 #include <CGAL/Surface_design/direction_fields.h>
 #include <CGAL/Surface_design/exceptions.h>
 #include <CGAL/Surface_design/Field_aligned_parameterizer.h>
+#include <CGAL/Surface_design/field_aligned_quad_remeshing.h>
 #include <CGAL/Surface_design/Trivial_connection.h>
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -280,9 +283,12 @@ public:
       add_field_pair(face_arg(request, "plus"), face_arg(request, "minus"));
     else if(op == "annihilate_field")
       annihilate_field(face_arg(request, "a"), face_arg(request, "b"));
+    else if(op == "quads")
+      set_quads(request);
     else
       throw Request_error("unknown op '" + op + "' (add, add_pair, move, annihilate, remove, clear, automatic, "
-                          "frequency, field, move_field_singularity, add_field_pair, annihilate_field, load, state)");
+                          "frequency, field, move_field_singularity, add_field_pair, annihilate_field, quads, load, "
+                          "state)");
     ++m_version;
     return state(received);
   }
@@ -292,13 +298,15 @@ public:
   /// every face (cos u is the stripe pattern; u / 2 pi counts stripes), for a cross field the
   /// second family's angle v the same way, and for line and cross fields the three triangles
   /// around the branch point of every branch face ("overlay" of them in the JSON), 15 floats per
-  /// triangle: x y z u v at each of its corners (the page draws these instead of the face).
+  /// triangle: x y z u v at each of its corners (the page draws these instead of the face), and
+  /// with the quad preview on the quad mesh's edges ("quad_edges" of them), 6 floats per edge:
+  /// x y z at its two ends.
   std::string state(Clock::time_point received = Clock::now()) const
   {
     const auto start = Clock::now();
-    std::string data((m_u.size() + m_v.size() + m_overlay.size()) * sizeof(float), '\0');
+    std::string data((m_u.size() + m_v.size() + m_overlay.size() + m_quad_edges.size()) * sizeof(float), '\0');
     float* out = reinterpret_cast<float*>(data.data());
-    for(const std::vector<float>* part : {&m_u, &m_v, &m_overlay})
+    for(const std::vector<float>* part : {&m_u, &m_v, &m_overlay, &m_quad_edges})
       out = std::copy(part->begin(), part->end(), out);
     Json singular = Json::array(), field_singular = Json::array(), branch = Json::array();
     for(auto f : faces(*m_mesh))
@@ -324,6 +332,8 @@ public:
                      {"field_singularities", field_singular},
                      {"branch_faces", branch},
                      {"overlay", m_overlay.size() / 15},
+                     {"quads", m_quad_info},
+                     {"quad_edges", m_quad_edges.size() / 6},
                      {"stripes", m_stripes},
                      {"max_stripes", max_stripes()},
                      {"energy", m_order == 1 ? m_fap->energy() : m_bsp->energy()},
@@ -384,6 +394,35 @@ public:
     std::error_code ec;
     std::filesystem::remove(file, ec);
     return content.str();
+  }
+
+  /// The quad preview's mesh as an OFF or OBJ file (`format` "off" or "obj"); Request_error when
+  /// the preview is off or its last extraction failed.
+  std::string export_quads(const std::string& format) const
+  {
+    if(format != "off" && format != "obj")
+      throw Request_error("quads export: the format is \"off\" or \"obj\", not '" + format + "'");
+    if(!m_quads)
+      throw Request_error("quads export: the quad preview is off (a cross field, then {\"op\": \"quads\", \"on\": true})");
+    if(num_faces(m_quad_mesh) == 0)
+      throw Request_error("quads export: the lines of the last solve are not a quad mesh: " +
+                          m_quad_info.value("problem", std::string("no quads")));
+    std::ostringstream out;
+    out.precision(17);
+    if(format == "off")
+      out << "OFF\n" << num_vertices(m_quad_mesh) << ' ' << num_faces(m_quad_mesh) << " 0\n";
+    else
+      out << "# field-aligned quads of " << m_name << " (CGAL Surface Design editor)\n";
+    for(auto v : vertices(m_quad_mesh))
+      out << (format == "obj" ? "v " : "") << m_quad_mesh.point(v) << '\n';
+    for(auto f : faces(m_quad_mesh))
+    {
+      out << (format == "obj" ? "f" : "4");
+      for(auto v : vertices_around_face(halfedge(f, m_quad_mesh), m_quad_mesh))
+        out << ' ' << (format == "obj" ? std::size_t(v) + 1 : std::size_t(v));
+      out << '\n';
+    }
+    return out.str();
   }
 
 private:
@@ -590,26 +629,7 @@ private:
       spec["axis"] = {x, y, z};
     }
     else if(kind == "smoothest" || kind == "principal")
-    {
-      const int key = kind == "principal" ? 0 : order; // the cache: 0 holds the principal field
-      auto it = m_fields.find(key);
-      if(it == m_fields.end())
-      {
-        std::vector<Vector> computed(num_vertices(*m_mesh));
-        wrap_library([&] {
-          if(kind == "principal")
-            SD::smoothest_direction_field(*m_mesh, CGAL::make_property_map(computed),
-                                          SD::parameters::symmetry_order(
-                                            2, SD::parameters::curvature_alignment_weight(
-                                                 0.1, SD::parameters::sparse_linear_solver(m_field_solver))));
-          else
-            SD::smoothest_direction_field(*m_mesh, CGAL::make_property_map(computed),
-                                          SD::parameters::symmetry_order(order).sparse_linear_solver(m_field_solver));
-        }, kind + " field");
-        it = m_fields.emplace(key, std::move(computed)).first;
-      }
-      field = it->second;
-    }
+      field = smoothest_field(kind, order);
     else if(kind == "heat")
     {
       const std::size_t v = std::size_t(integer_arg(request, "vertex", 0, long(num_vertices(*m_mesh)) - 1));
@@ -625,13 +645,40 @@ private:
     }
     else // trivial
     {
+      // its singularities: spread by farthest-point sampling (default), or the smoothest field's
+      // (for a cross field moved at least the quads' size h apart, as quad_remesh does)
+      const std::string cones = request.contains("cones") ? text_arg(request, "cones") : "spread";
+      if(cones != "spread" && cones != "smoothest")
+        throw Request_error("\"cones\" = '" + cones + "': choose \"spread\" or \"smoothest\"");
       connection = std::make_unique<Connection>(
         *m_mesh, SD::parameters::symmetry_order(order).sparse_linear_solver(m_field_solver));
-      field_singularities = default_field_singularities(order);
+      if(cones == "spread")
+        field_singularities = default_field_singularities(order);
+      else
+      {
+        const std::vector<Vector> smoothest = smoothest_field("smoothest", order);
+        std::vector<int> index(num_faces(*m_mesh), 0);
+        wrap_library([&] {
+          SD::direction_field_singularities(*m_mesh, CGAL::make_property_map(smoothest), CGAL::make_property_map(index),
+                                            SD::parameters::symmetry_order(order));
+        }, "the smoothest field's singularities");
+        for(std::size_t f = 0; f < index.size(); ++f)
+          if(index[f] != 0)
+            field_singularities[f] = index[f];
+        spec["cones"] = cones;
+      }
       for(const auto& [f, k] : field_singularities)
         connection->set_index(f, k);
       field.resize(num_vertices(*m_mesh));
       wrap_library([&] {
+        if(cones == "smoothest" && order == 4)
+        {
+          connection->separate_singularities(m_diagonal / m_stripes);
+          field_singularities.clear();
+          for(auto f : faces(*m_mesh))
+            if(const int k = connection->index(f); k != 0)
+              field_singularities[std::size_t(f)] = k;
+        }
         connection->solve();
         connection->field(CGAL::make_property_map(field));
       }, "trivial connection");
@@ -694,6 +741,8 @@ private:
       m_field = std::move(field);
       m_order = 1;
       m_bsp.reset();
+      m_quads = false;
+      clear_quads();
       solve();
     }
     else
@@ -712,9 +761,114 @@ private:
       m_bsp = std::move(bsp);
       m_field = std::move(field);
       m_order = order;
+      m_quads = false;
+      clear_quads();
       solve();
     }
     m_timing["factor_and_solve_ms"] = ms_since(start);
+  }
+
+  // The quad preview on or off ({"on": bool, "rounds": stiffening rounds in [0, 64], default 4}):
+  // a cross field's branch points on the lattice, and after every solve the quads of its lines.
+  void set_quads(const Json& request)
+  {
+    const Json& on_arg = member(request, "on");
+    if(!on_arg.is_boolean())
+      throw Request_error("quads: \"on\" must be true or false");
+    const bool on = on_arg.get<bool>();
+    const int rounds = request.contains("rounds") ? int(integer_arg(request, "rounds", 0, 64)) : m_quad_rounds;
+    if(on && m_order != 4)
+      throw Request_error("quads: the quad preview needs a cross field (order 4: \"cross field: trivial\" places "
+                          "the cones, \"cross field: smoothest\" chooses them)");
+    if(on && m_closed_euler.size() != m_components)
+      throw Request_error("quads: " + m_name + " has a boundary, and the field-aligned quads take closed surfaces only");
+    if(on && !stripe_indices().empty())
+      throw Request_error("quads: remove the stripe singularities first (a dislocation is a T-junction, not a quad)");
+    const bool was = m_quads;
+    const int was_rounds = m_quad_rounds;
+    // the stripes' system without the stiffening of earlier extractions, its branch points on
+    // the lattice or not
+    auto apply = [this](bool quads, int r) {
+      m_quads = quads;
+      m_quad_rounds = r;
+      clear_quads();
+      if(m_order != 4)
+        return;
+      m_bsp->set_field(CGAL::make_property_map(m_field), m_stripes / m_diagonal);
+      m_bsp->set_lattice_branch_points(quads);
+      solve();
+    };
+    try
+    {
+      apply(on, rounds);
+    }
+    catch(const std::invalid_argument& e)
+    {
+      apply(was, was_rounds);
+      throw Request_error(std::string("quads: ") + e.what());
+    }
+  }
+
+  void clear_quads()
+  {
+    m_quad_edges.clear();
+    m_quad_mesh.clear();
+    m_quad_info = Json{{"on", m_quads}};
+  }
+
+  // The quads of the cross field's lines (after a solve; stiffened and solved again where the map
+  // folds): their edges for the page, the mesh for the export, or what is wrong with them.
+  void extract_quads()
+  {
+    const auto start = Clock::now();
+    clear_quads();
+    try
+    {
+      const auto r = SD::extract_field_aligned_quads(*m_bsp, m_quad_mesh, SD::parameters::stiffening_rounds(m_quad_rounds));
+      m_quad_info = Json{{"on", true},
+                         {"valid", true},
+                         {"faces", r.faces},
+                         {"vertices", r.vertices},
+                         {"irregular_vertices", r.irregular_vertices},
+                         {"cones", r.cones},
+                         {"edge_length", r.edge_length},
+                         {"stiffening_rounds", r.stiffening_rounds},
+                         {"rounds", m_quad_rounds}};
+      for(auto e : edges(m_quad_mesh))
+        for(auto v : {source(halfedge(e, m_quad_mesh), m_quad_mesh), target(halfedge(e, m_quad_mesh), m_quad_mesh)})
+          for(int i = 0; i < 3; ++i)
+            m_quad_edges.push_back(float(m_quad_mesh.point(v)[i]));
+    }
+    catch(const SD::Remeshing_failure& e)
+    {
+      m_quad_mesh.clear();
+      m_quad_info = Json{{"on", true}, {"valid", false}, {"problem", e.what()}, {"rounds", m_quad_rounds}};
+    }
+    m_timing["quads_ms"] = ms_since(start);
+  }
+
+  // the smoothest field of `order` (kind "smoothest"), or the principal curvature line field
+  // (kind "principal"), computed once per mesh
+  const std::vector<Vector>& smoothest_field(const std::string& kind, int order)
+  {
+    const int key = kind == "principal" ? 0 : order; // the cache: 0 holds the principal field
+    auto it = m_fields.find(key);
+    if(it == m_fields.end())
+    {
+      std::vector<Vector> computed(num_vertices(*m_mesh));
+      wrap_library([&] {
+        if(kind == "principal")
+          SD::smoothest_direction_field(*m_mesh, CGAL::make_property_map(computed),
+                                        SD::parameters::symmetry_order(
+                                          2, SD::parameters::curvature_alignment_weight(
+                                               0.1, SD::parameters::sparse_linear_solver(m_field_solver))));
+        else
+          SD::smoothest_direction_field(*m_mesh, CGAL::make_property_map(computed),
+                                        SD::parameters::symmetry_order(order).sparse_linear_solver(m_field_solver));
+      }, kind + " field");
+      it = m_fields.emplace(key, std::move(computed)).first;
+    }
+    return it->second;
   }
 
   // the field singularity edits below need a trivial connection
@@ -877,6 +1031,8 @@ private:
       return;
     }
     m_bsp->solve();
+    if(m_quads)
+      extract_quads(); // may stiffen and solve again: the corner values are read after it
     if(families() == 2)
       m_v.resize(3 * nf);
     for(auto f : faces(mesh))
@@ -1001,6 +1157,11 @@ private:
   std::vector<float> m_u, m_v, m_overlay;      // the state's float data (see state())
   std::unique_ptr<Connection> m_connection;
   std::map<std::size_t, int> m_field_singularities;
+  bool m_quads = false;                   // the quad preview (a cross field only)
+  int m_quad_rounds = 4;                  // its stiffening rounds at most (a preview: fewer than quad_remesh)
+  Mesh m_quad_mesh;                       // its last quads (empty: off, or not a quad mesh)
+  std::vector<float> m_quad_edges;        // their edges for the state (see state())
+  Json m_quad_info = Json{{"on", false}}; // what they are, or what is wrong
   Json m_timing = Json::object();
   long m_version = 0;
 };

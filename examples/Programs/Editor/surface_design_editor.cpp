@@ -290,6 +290,20 @@ int main(int argc, char** argv)
       res.set_header("Content-Disposition", "attachment; filename=\"stripes.ply\"");
       res.set_content(session->export_ply(), "application/octet-stream");
     });
+    for(const std::string format : {"off", "obj"})
+      server.Get("/api/export_quads." + format, [&, format](const httplib::Request&, httplib::Response& res) {
+        std::lock_guard<std::mutex> lock(mutex);
+        try
+        {
+          const std::string content = session->export_quads(format);
+          res.set_header("Content-Disposition", "attachment; filename=\"quads." + format + "\"");
+          res.set_content(content, "application/octet-stream");
+        }
+        catch(const editor::Request_error& e)
+        {
+          json_error(res, 409, e.what());
+        }
+      });
     server.Post("/api/frame", [&](const httplib::Request& req, httplib::Response& res) {
       if(o.frames.empty())
         return json_error(res, 404, "frames are accepted only when the server runs with --save-frames DIR");

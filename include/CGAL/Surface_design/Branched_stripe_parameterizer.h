@@ -167,6 +167,8 @@ public:
   }
 
   const TriangleMesh& mesh() const { return m_tm; }
+  /// The vertex positions it reads.
+  const VertexPointMap& vertex_point_map() const { return m_vpm; }
   /// n: 1, 2 or 4.
   int symmetry_order() const { return m_n; }
   /// The number of stripe families: 2 for a cross field, 1 otherwise.

@@ -45,6 +45,136 @@ struct Field_aligned_quad_remeshing_result
 
 /// \ingroup PkgFieldAlignedParameterizationRef
 ///
+/// The quad mesh of the level-0 lines of `bsp`'s two stripe families, added to `out`: the step
+/// of `field_aligned_quad_remeshing()` after the stripes are set up, for a caller that keeps the
+/// parameterizer and edits its field or spacing (the editor's live quad preview). `bsp` must be
+/// a cross field's (`symmetry_order(4)`) on a closed mesh, with its field set
+/// (`set_field(field, 1 / h)`: h is the spacing of the lines), lattice branch points
+/// (`set_lattice_branch_points(true)`) and no stripe singularity (a dislocation is a
+/// T-junction); it is solved first if it is not.
+///
+/// The lines' crossings are the vertices, the cones the irregular vertices, the faces are traced
+/// from the order of the lines around every vertex, and the result is checked: only quads, every
+/// edge shared by two of them, a manifold mesh, the input's Euler characteristic, valence 4 - k
+/// at every cone of index k / 4 and 4 elsewhere, every quad facing the way of the surface. Where
+/// it is not so, the faces where the map folds (`folded_faces()`) are stiffened (`stiffen()`,
+/// times 4) and `bsp` solved and extracted again, up to `stiffening_rounds` times (Bommes et al.
+/// 2009). The stiffening stays in `bsp` until its next `set_field()`.
+///
+/// \param bsp the stripes of a cross field, as above (stiffened and solved again where it folds)
+/// \param out a model of `MutableFaceGraph` receiving the quads
+/// \param np an optional sequence of named parameters among the ones listed below
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{stiffening_rounds}
+///     \cgalParamDescription{the most rounds of stiffening where the map folds}
+///     \cgalParamType{`int`, in [0, 64]}
+///     \cgalParamDefault{10}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \throws Invalid_parameter (rounds out of range, more than 10^7 quads); Invalid_constraints
+///         (not a cross field's stripes, no field, branch points off the lattice, a stripe
+///         singularity, or cones that no windings put on the lattice); Invalid_mesh for a mesh
+///         with a boundary (`Mesh_defect::not_closed`); Remeshing_failure when the lines do not
+///         form the field's quad mesh after the last round. `out` is not modified when it throws.
+template <class TriangleMesh, class VertexPointMap, class SolverTraits, class PolygonMesh,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Field_aligned_quad_remeshing_result
+extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPointMap, SolverTraits>& bsp,
+                            PolygonMesh& out, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using Clock = std::chrono::steady_clock;
+  auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  const auto start = Clock::now();
+
+  const int rounds = choose_parameter(get_parameter(np, internal_np::stiffening_rounds), 10);
+  if(rounds < 0 || rounds > 64)
+    throw Invalid_parameter("stiffening_rounds", "must lie in [0, 64], got " + std::to_string(rounds));
+  if(bsp.symmetry_order() != 4)
+    throw Invalid_constraints("extract_field_aligned_quads() needs the stripes of a cross field (symmetry order 4), got "
+                              "order " + std::to_string(bsp.symmetry_order()));
+  if(!bsp.has_field())
+    throw Invalid_constraints("extract_field_aligned_quads(): no field (call set_field() first)");
+  if(!bsp.lattice_branch_points())
+    throw Invalid_constraints("extract_field_aligned_quads(): the branch points are not on the lattice (call "
+                              "set_lattice_branch_points(true)): the cones would not be vertices of the quads");
+  for(const auto& c : bsp.topology().components.info)
+    if(c.boundary_loops != 0)
+      throw Invalid_mesh(Mesh_defect::not_closed, Invalid_mesh::no_element,
+                         "field-aligned quads need a closed surface: the lines do not follow a boundary");
+  const auto& idx = bsp.indices();
+  for(auto f : faces(bsp.mesh()))
+    for(int family = 0; family < 2; ++family)
+      if(bsp.index(f, family) != 0)
+        throw Invalid_constraints("face " + std::to_string(idx.index(f)) +
+                                  " holds a stripe singularity: a dislocation is a T-junction, not a quad mesh");
+  const internal::Quad_extraction_input surface = internal::quad_extraction_input(idx, bsp.vertex_point_map());
+  const double h = 1. / bsp.frequency();
+  if(surface.area / (h * h) > 1e7)
+    throw Invalid_parameter("target_edge_length", "must give at most 10^7 quads, got " + std::to_string(h));
+  if(!bsp.is_solved())
+    bsp.solve();
+
+  Field_aligned_quad_remeshing_result result;
+  result.edge_length = h;
+  result.cones = bsp.branch_faces().size();
+  std::vector<internal::Quad_extraction_cone> cones;
+  std::vector<int> cone_index;
+  for(std::size_t f : bsp.branch_faces())
+  {
+    const auto fd = idx.face(f);
+    cones.push_back({f, internal::point_in_face(idx, bsp.vertex_point_map(), f, bsp.branch_point(fd))});
+    cone_index.push_back(bsp.field_index_numerator(fd));
+  }
+  long chi = 0;
+  for(const auto& c : bsp.topology().components.info)
+    chi += c.euler_characteristic();
+  // after every solve: the lines' quad mesh, checked; where it is not the field's, stiffen the
+  // folded faces and solve again (a fold does not always break the quad mesh: the check decides)
+  internal::Quad_extraction q;
+  double extraction_seconds = 0.;
+  for(;;)
+  {
+    const auto folded = bsp.folded_faces();
+    if(result.stiffening_rounds == 0)
+      result.initially_folded = folded.size();
+    result.folded_faces = folded.size();
+    const auto extraction_start = Clock::now();
+    q = internal::extract_quads(internal::stripe_polylines(bsp.isolines(), idx), surface.normal, cones,
+                                1e-9 * std::sqrt(surface.area));
+    const std::string problem = internal::quad_extraction_problem(q, cone_index, chi, surface.normal);
+    extraction_seconds += seconds_since(extraction_start);
+    if(problem.empty())
+      break;
+    if(folded.empty() || result.stiffening_rounds >= std::size_t(rounds))
+      throw Remeshing_failure("the level-0 lines of the stripes do not form the quad mesh of the field: " + problem +
+                              (folded.empty() ? std::string(" (the map does not fold") :
+                                                " (the map folds in " + std::to_string(folded.size()) + " faces after " +
+                                                  std::to_string(result.stiffening_rounds) + " rounds of stiffening") +
+                              ": another edge length often helps)");
+    bsp.stiffen(folded, 4.);
+    bsp.solve();
+    ++result.stiffening_rounds;
+  }
+  result.extraction_seconds = extraction_seconds;
+  result.stripes_seconds = seconds_since(start) - extraction_seconds;
+  result.vertices = q.points.size();
+  result.faces = q.faces.size();
+  result.euler_characteristic = chi;
+  result.irregular_vertices = cones.size();
+  using Out_vpm = internal::Vertex_point_map_t<PolygonMesh, CGAL::parameters::Default_named_parameters>;
+  using Out_point = typename boost::property_traits<Out_vpm>::value_type;
+  std::vector<Out_point> points;
+  for(const auto& p : q.points)
+    points.emplace_back(p.x(), p.y(), p.z());
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, q.faces, out);
+  return result;
+}
+
+/// \ingroup PkgFieldAlignedParameterizationRef
+///
 /// Remeshes the closed triangle mesh `tm` into a pure quad mesh aligned with the cross field
 /// `field` (one vector per vertex, any of its four directions: `smoothest_direction_field()`
 /// with `symmetry_order(4)`, or `Trivial_connection` with cones where the user wants them) and
@@ -54,13 +184,8 @@ struct Field_aligned_quad_remeshing_result
 /// **How.** The two stripe families of `Branched_stripe_parameterizer` with n = 4, spacing h, no
 /// stripe singularity (no T-junction) and every branch point on the lattice
 /// (`set_lattice_branch_points()`) are the coordinates (u, v) of a seamless map whose integer
-/// lines meet at right angles and whose cones are lattice points. The level-0 lines are the
-/// edges of the result, their crossings its vertices, the cones its irregular vertices; the faces
-/// are traced from the order of the lines around every vertex. The result is checked: only quads,
-/// every edge shared by two of them, the input's Euler characteristic, valence 4 - k at every cone
-/// of index k / 4 and 4 elsewhere, every quad facing the way of the surface. Where it is not so,
-/// the faces where the map folds (`folded_faces()`) are stiffened (`stiffen()`, times 4) and the
-/// map solved and extracted again, up to `stiffening_rounds` times (Bommes et al. 2009).
+/// lines meet at right angles and whose cones are lattice points. Its level-0 lines are the
+/// quad mesh of `extract_field_aligned_quads()`, checked, and stiffened where the map folds.
 ///
 /// \param tm a closed triangle mesh (model of `FaceListGraph`)
 /// \param field a readable vertex -> `Vector_3` map
@@ -106,81 +231,27 @@ Field_aligned_quad_remeshing_result field_aligned_quad_remeshing(const TriangleM
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   using Clock = std::chrono::steady_clock;
-  auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   const auto start = Clock::now();
-
   const int rounds = choose_parameter(get_parameter(np, internal_np::stiffening_rounds), 10);
   if(rounds < 0 || rounds > 64)
     throw Invalid_parameter("stiffening_rounds", "must lie in [0, 64], got " + std::to_string(rounds));
   Branched_stripe_parameterizer bsp(tm, parameters::symmetry_order(4, np));
-  const auto& idx = bsp.indices();
-  const auto vpm = internal::const_vertex_point_map(tm, np);
   for(const auto& c : bsp.topology().components.info)
     if(c.boundary_loops != 0)
       throw Invalid_mesh(Mesh_defect::not_closed, Invalid_mesh::no_element,
                          "field_aligned_quad_remeshing() takes closed surfaces: the lines do not follow a boundary");
-  const internal::Quad_extraction_input surface = internal::quad_extraction_input(idx, vpm);
-  const double h = choose_parameter(get_parameter(np, internal_np::target_edge_length), std::sqrt(surface.area / 3000.));
-  if(!std::isfinite(h) || !(h > 0.) || surface.area / (h * h) > 1e7)
+  const double area = internal::quad_extraction_input(bsp.indices(), bsp.vertex_point_map()).area;
+  const double h = choose_parameter(get_parameter(np, internal_np::target_edge_length), std::sqrt(area / 3000.));
+  if(!std::isfinite(h) || !(h > 0.) || area / (h * h) > 1e7)
     throw Invalid_parameter("target_edge_length", "must be finite and positive and give at most 10^7 quads, got " +
                                                     std::to_string(h));
   bsp.set_field(field, 1. / h);
   bsp.set_lattice_branch_points(true);
   bsp.solve();
-
-  Field_aligned_quad_remeshing_result result;
-  result.edge_length = h;
-  result.cones = bsp.branch_faces().size();
-  std::vector<internal::Quad_extraction_cone> cones;
-  std::vector<int> cone_index;
-  for(std::size_t f : bsp.branch_faces())
-  {
-    const auto fd = idx.face(f);
-    cones.push_back({f, internal::point_in_face(idx, vpm, f, bsp.branch_point(fd))});
-    cone_index.push_back(bsp.field_index_numerator(fd));
-  }
-  long chi = 0;
-  for(const auto& c : bsp.topology().components.info)
-    chi += c.euler_characteristic();
-  // after every solve: the lines' quad mesh, checked; where it is not the field's, stiffen the
-  // folded faces and solve again (a fold does not always break the quad mesh: the check decides)
-  internal::Quad_extraction q;
-  double extraction_seconds = 0.;
-  for(;;)
-  {
-    const auto folded = bsp.folded_faces();
-    if(result.stiffening_rounds == 0)
-      result.initially_folded = folded.size();
-    result.folded_faces = folded.size();
-    const auto extraction_start = Clock::now();
-    q = internal::extract_quads(internal::stripe_polylines(bsp.isolines(), idx), surface.normal, cones,
-                                1e-9 * std::sqrt(surface.area));
-    const std::string problem = internal::quad_extraction_problem(q, cone_index, chi, surface.normal);
-    extraction_seconds += seconds_since(extraction_start);
-    if(problem.empty())
-      break;
-    if(folded.empty() || result.stiffening_rounds >= std::size_t(rounds))
-      throw Remeshing_failure("the level-0 lines of the stripes do not form the quad mesh of the field: " + problem +
-                              (folded.empty() ? std::string(" (the map does not fold") :
-                                                " (the map folds in " + std::to_string(folded.size()) + " faces after " +
-                                                  std::to_string(result.stiffening_rounds) + " rounds of stiffening") +
-                              ": another edge length often helps)");
-    bsp.stiffen(folded, 4.);
-    bsp.solve();
-    ++result.stiffening_rounds;
-  }
-  result.extraction_seconds = extraction_seconds;
-  result.stripes_seconds = seconds_since(start) - extraction_seconds;
-  result.vertices = q.points.size();
-  result.faces = q.faces.size();
-  result.euler_characteristic = chi;
-  result.irregular_vertices = cones.size();
-  using Out_vpm = internal::Vertex_point_map_t<PolygonMesh, CGAL::parameters::Default_named_parameters>;
-  using Out_point = typename boost::property_traits<Out_vpm>::value_type;
-  std::vector<Out_point> points;
-  for(const auto& p : q.points)
-    points.emplace_back(p.x(), p.y(), p.z());
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, q.faces, out);
+  Field_aligned_quad_remeshing_result result =
+    extract_field_aligned_quads(bsp, out, parameters::stiffening_rounds(rounds));
+  // the set-up's time too
+  result.stripes_seconds = std::chrono::duration<double>(Clock::now() - start).count() - result.extraction_seconds;
   return result;
 }
 

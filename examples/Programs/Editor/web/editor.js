@@ -5,7 +5,8 @@
 // per-corner coordinate u that the server sends (cos u, so stripes stay crisp at any frequency;
 // on a cross field the brighter of cos u and cos v, a grid), draws every branch face of a line or
 // cross field as the three triangles around its branch point that the server sends, and turns
-// clicks and drags into edits (POST /api/edit). With ?selftest=1 it runs the browser
+// clicks and drags into edits (POST /api/edit). On a cross field, the quad preview draws the edges
+// of the quad mesh of its lines that the server extracts after every edit. With ?selftest=1 it runs the browser
 // test's script: real pointer events on the canvas, checks, frames sent to the server.
 'use strict';
 
@@ -41,7 +42,8 @@ const ui = {
   error: document.getElementById('error'), hint: document.getElementById('hint'),
   singularities: document.getElementById('singularities'), latency: document.getElementById('latency'),
   selftest: document.getElementById('selftest'), family: document.getElementById('family-choice'),
-  automatic: document.getElementById('automatic')
+  automatic: document.getElementById('automatic'), quads: document.getElementById('quads'),
+  quadStatus: document.getElementById('quad-status'), exportQuads: document.getElementById('export-quads')
 };
 // the stripe family that clicks add to (a cross field's first or second family)
 function family() {
@@ -91,9 +93,14 @@ void main() {
 const material = new THREE.ShaderMaterial({ vertexShader, fragmentShader, side: THREE.DoubleSide,
   uniforms: { families: { value: 1 } } });
 material.extensions.derivatives = true;
+// the surface a little behind its depth, so that the quad preview's lines on it stay visible
+material.polygonOffset = true;
+material.polygonOffsetFactor = 1;
+material.polygonOffsetUnits = 1;
 
 let model = null;   // { mesh json, object, geometry, centroids, faceNormals }
 let overlay = null; // the branch faces' triangles of the last state (a THREE.Mesh)
+let quadLines = null; // the quad preview's edges of the last state (a THREE.LineSegments)
 let state = null;   // the last state from the server
 let dirty = false;
 const markers = new THREE.Group();
@@ -193,13 +200,34 @@ function buildOverlay(data) {
   scene.add(overlay);
 }
 
+// The quad preview's edges are straight chords between points on the surface: drawn a little
+// nearer the camera (a depth bias of about a hundredth of the mesh's size at the default view),
+// so that the curved surface does not hide them, while the far side still does.
+const quadLineMaterial = new THREE.ShaderMaterial({
+  vertexShader: `void main() {
+  gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
+  gl_Position.z -= 2e-5 * gl_Position.w;
+}`,
+  fragmentShader: 'void main() { gl_FragColor = vec4(0.72, 0.11, 0.11, 1.0); }'
+});
+// The quad preview's edges: 6 floats each, x y z at its two ends; drawn over the surface.
+function buildQuadLines(data) {
+  if (quadLines) { scene.remove(quadLines); quadLines.geometry.dispose(); quadLines = null; }
+  if (!data.length) return;
+  const geometry = new THREE.BufferGeometry();
+  geometry.setAttribute('position', new THREE.BufferAttribute(new Float32Array(data), 3));
+  quadLines = new THREE.LineSegments(geometry, quadLineMaterial);
+  scene.add(quadLines);
+}
+
 function applyState(buffer) {
   const view = new DataView(buffer);
   const length = view.getUint32(0, true);
   const json = JSON.parse(new TextDecoder().decode(new Uint8Array(buffer, 4, length)));
   const data = new Float32Array(buffer, 4 + length);
   const nf = model ? model.json.faces : -1;
-  if (!model || data.length !== 3 * nf * json.families + 15 * json.overlay) throw new Error('the state does not fit the mesh');
+  const stripeData = 3 * nf * json.families + 15 * json.overlay;
+  if (!model || data.length !== stripeData + 6 * json.quad_edges) throw new Error('the state does not fit the mesh');
   state = json;
   model.geometry.attributes.u.array.set(data.subarray(0, 3 * nf));
   model.geometry.attributes.u.needsUpdate = true;
@@ -208,7 +236,8 @@ function applyState(buffer) {
     model.geometry.attributes.v.needsUpdate = true;
   }
   material.uniforms.families.value = json.families;
-  buildOverlay(data.subarray(3 * nf * json.families));
+  buildOverlay(data.subarray(3 * nf * json.families, stripeData));
+  buildQuadLines(data.subarray(stripeData));
   const mark = model.geometry.attributes.mark.array;
   mark.fill(0);
   while (markers.children.length) {
@@ -255,9 +284,17 @@ function showState() {
   // the field menu shows the server's field (after a refused change, or another mesh)
   const f = state.field;
   const value = f.kind === 'axis' ? `axis:${f.axis.map((x) => Math.round(x * 1e6) / 1e6).join(',')}`
-    : f.kind === 'heat' ? `heat:${Math.round(f.degrees)}` : f.kind + (f.order > 1 && f.kind !== 'principal' ? `@${f.order}` : '');
+    : f.kind === 'heat' ? `heat:${Math.round(f.degrees)}` : f.kind + (f.order > 1 && f.kind !== 'principal' ? `@${f.order}` : '') +
+      (f.cones ? `+${f.cones}` : '');
   ui.family.hidden = state.families < 2;
   ui.automatic.disabled = state.order < 2;
+  ui.quads.disabled = state.order !== 4;
+  ui.quads.checked = state.quads.on;
+  ui.exportQuads.disabled = !(state.quads.on && state.quads.valid);
+  ui.quadStatus.textContent = !state.quads.on ? (state.order === 4 ? 'off' : 'off (a cross field only)')
+    : state.quads.valid ? `${state.quads.faces} quads, ${state.quads.irregular_vertices} irregular vertices (the cones)` +
+      (state.quads.stiffening_rounds ? `, ${state.quads.stiffening_rounds} rounds of stiffening` : '')
+    : `not a quad mesh: ${state.quads.problem}`;
   if ([...ui.field.options].some((o) => o.value === value)) ui.field.value = value;
   const max = Number(ui.stripes.dataset.max);
   ui.stripes.value = String(Math.round(1000 * Math.log(Math.max(state.stripes, 1)) / Math.log(Math.max(max, 1.0001))));
@@ -277,6 +314,7 @@ function showLatency(label, t0, json) {
     `${label}\nevent to picture  ${frame.toFixed(1)} ms\nserver            ${(t.server_ms || 0).toFixed(1)} ms` +
     `\n  solve           ${(t.solve_ms || 0).toFixed(1)} ms` +
     (t.field_ms !== undefined ? `\n  field           ${t.field_ms.toFixed(1)} ms` : '') +
+    (t.quads_ms !== undefined ? `\n  quads           ${t.quads_ms.toFixed(1)} ms` : '') +
     `\n  serialize       ${(t.serialize_ms || 0).toFixed(2)} ms`;
 }
 
@@ -489,8 +527,10 @@ function setField(t0 = performance.now()) {
   if (value.startsWith('axis:')) request = { op: 'field', kind: 'axis', axis: value.slice(5).split(',').map(Number) };
   else if (value.startsWith('heat:')) request = { op: 'field', kind: 'heat', vertex: heatSource, degrees: Number(value.slice(5)) };
   else {
-    const [kind, order] = value.split('@');
+    const [kind, rest] = value.split('@');
+    const [order, cones] = (rest || '').split('+');
     request = { op: 'field', kind, order: Number(order || (kind === 'principal' ? 2 : 1)) };
+    if (cones) request.cones = cones;
   }
   return edit(request, t0, `field ${value}`);
 }
@@ -505,6 +545,8 @@ ui.stripes.addEventListener('input', () => {
 ui.mesh.addEventListener('change', () => edit({ op: 'load', name: ui.mesh.value }, performance.now(), 'load'));
 document.getElementById('clear').addEventListener('click', () => edit({ op: 'clear' }));
 ui.automatic.addEventListener('click', () => edit({ op: 'automatic' }));
+ui.quads.addEventListener('change', () => edit({ op: 'quads', on: ui.quads.checked }));
+ui.exportQuads.addEventListener('click', () => { window.location.href = `api/export_quads.off?token=${encodeURIComponent(token)}`; });
 document.getElementById('export-ply').addEventListener('click', () => { window.location.href = `api/export.ply?token=${encodeURIComponent(token)}`; });
 document.getElementById('export-png').addEventListener('click', () => {
   render();
@@ -666,6 +708,42 @@ async function selftest() {
       branchOf() === fieldOf(), `${grabbable} -> ${fieldOf()}`);
     await saveFrame('editor_line_field_dragged');
   }
+  // a cross field's quad preview: the trivial connection's eight +1/4 cones, the box ticked, the
+  // quads drawn; a cone dragged, the quads follow
+  ui.field.value = 'trivial@4';
+  await setField();
+  await edit({ op: 'frequency', stripes: 30 });
+  ui.quads.click();
+  await settle();
+  const quadsOk = () => state.quads.on && state.quads.valid && quadLines !== null &&
+    state.quad_edges === 2 * state.quads.faces && state.quads.irregular_vertices === state.field_singularities.length;
+  check('the quad preview: quads whose irregular vertices are the cones, drawn', quadsOk(), JSON.stringify(state.quads));
+  check('the panel reports the quads', ui.quadStatus.textContent.includes(`${state.quads.faces} quads`), ui.quadStatus.textContent);
+  await saveFrame('editor_quads');
+  const cone = state.field_singularities.map(([f]) => f).find((f) => {
+    const at = screenOf(f);
+    const hit = pick(at.x, at.y);
+    return at.x > r.left + 0.2 * r.width && at.x < r.right - 0.2 * r.width && at.y > r.top + 0.1 * r.height &&
+      at.y < r.bottom - 0.1 * r.height && hit && hit.point.distanceTo(centroid(f)) < 0.02 * model.json.diagonal;
+  });
+  if (cone !== undefined) {
+    const from = screenOf(cone), to = { x: from.x + 0.06 * r.width, y: from.y + 0.03 * r.height };
+    document.querySelector('input[name="tool"][value="drag"]').click();
+    pointer('pointerdown', from);
+    for (let i = 1; i <= 3; ++i) {
+      pointer('pointermove', { x: from.x + (to.x - from.x) * i / 3, y: from.y + (to.y - from.y) * i / 3 });
+      await settle();
+    }
+    pointer('pointerup', to);
+    await settle();
+    check('a cone dragged, the quads followed', !state.field_singularities.some(([f]) => f === cone) && state.quads.on &&
+      (state.quads.valid ? quadsOk() : state.quads.problem.length > 0), JSON.stringify(state.quads));
+    await saveFrame('editor_quads_dragged');
+  }
+  ui.quads.click();
+  await settle();
+  check('the quad preview off: no quad lines', !state.quads.on && quadLines === null, JSON.stringify(state.quads));
+
   // a field with singularities of its own, for the final picture
   ui.field.value = 'smoothest';
   await setField();

@@ -206,6 +206,10 @@ public:
       if(lattice)
         shift_to_lattice(ystar, s.alpha); // ystar holds the windings now
     }
+    if(m_lattice)
+      for(std::size_t v = 0; v < s.alpha.size(); ++v)
+        for(int a = 0; a < m_cover.d; ++a)
+          s.alpha[v][a] += m_free_offset[v][a]; // y unchanged: P_e c_j - c_i = 0 on every edge
     s.energy = energy(s.y, omega);
     return s;
   }
@@ -590,6 +594,7 @@ private:
     const int d = m_cover.d;
     const std::size_t nv = m_idx.number_of_vertices();
     m_pinned.assign(nv, false);
+    m_free_offset.assign(nv, Value::Zero());
     {
       std::vector<std::vector<std::pair<std::size_t, std::size_t>>> adjacent(nv); // (vertex, edge)
       for(std::size_t e = 0; e < m_weight.size(); ++e)
@@ -628,7 +633,14 @@ private:
           }
         }
         if(!twisted)
+        {
           m_pinned[root] = true;
+          // the stripes of this piece are free up to a constant c transported along it: with
+          // lattice branch points, a generic one (not the pin's 0, where both families' level-0
+          // lines would cross at a mesh vertex, a degenerate crossing for the quads' extraction)
+          for(std::size_t v : queue)
+            m_free_offset[v] = G[v].transpose() * Value(0.5, 0.5);
+        }
       }
     }
 
@@ -936,6 +948,7 @@ private:
   std::vector<Eigen::Matrix2d> m_P;
   std::vector<std::pair<std::size_t, std::size_t>> m_ends;
   std::vector<bool> m_twisted, m_stokes_component, m_pinned;
+  std::vector<Value> m_free_offset; // per vertex of an untwisted piece: its generic lattice offset
   std::vector<Peel_step> m_peel;
   std::vector<Peel_other> m_peel_others;
   std::vector<Free_direction> m_free;
