@@ -371,6 +371,34 @@ TEST_CASE("Field-aligned quads: a folded map is repaired by stiffening, or refus
   }
   CHECK(clockwise == 0);
   CHECK(regular + bsp.branch_faces().size() == num_faces(mesh));
+  // solving again with the last windings: the same map when they are the optimal ones, and never
+  // below the energy of windings chosen anew (the lattice search is exact on this torus)
+  {
+    const auto first = bsp.corner_values(*faces(mesh).begin(), 1);
+    bsp.solve_keeping_windings();
+    const auto again = bsp.corner_values(*faces(mesh).begin(), 1);
+    for(int i = 0; i < 3; ++i)
+      CHECK(std::abs(again[std::size_t(i)] - first[std::size_t(i)]) < 1e-9);
+    bsp.stiffen(std::vector<typename boost::graph_traits<Mesh>::face_descriptor>(faces(mesh).begin(),
+                                                                                 std::next(faces(mesh).begin(), 200)),
+                64.);
+    bsp.solve_keeping_windings();
+    const double kept = bsp.energy();
+    bsp.solve();
+    CHECK(kept >= bsp.energy() * (1. - 1e-9));
+    // the windings of another field or other singularities do not apply
+    std::vector<typename boost::graph_traits<Mesh>::face_descriptor> free_faces;
+    for(auto f : faces(mesh))
+      if(!bsp.is_branch_face(f))
+        free_faces.push_back(f);
+    bsp.set_index(free_faces[free_faces.size() / 4], 1);
+    bsp.set_index(free_faces[3 * free_faces.size() / 4], -1);
+    CHECK_THROWS_AS(bsp.solve_keeping_windings(), SD::Invalid_constraints);
+    bsp.clear_indices();
+    bsp.solve();
+    bsp.set_field(field.map(), 1. / h);
+    CHECK_THROWS_AS(bsp.solve_keeping_windings(), SD::Invalid_constraints);
+  }
 }
 
 TEST_CASE("The extraction's check reports what is not the quad mesh of the field", "[field_aligned_quads][oracle]")

@@ -228,6 +228,7 @@ public:
     m_convention = convention;
     m_frequency = stripes_per_unit_length;
     m_solved = false;
+    m_windings_valid = false;
     m_relaxation.reset();
     update_omega();
   }
@@ -241,6 +242,7 @@ public:
     m_frequency = stripes_per_unit_length;
     m_relaxation.reset();
     m_solved = false;
+    m_windings_valid = false;
     update_omega();
   }
   double frequency() const { return m_frequency; }
@@ -291,6 +293,7 @@ public:
                                 " is out of range (at most " + std::to_string(max_index) + " in absolute value)");
     m_index[f][a] = k;
     m_solved = false;
+    m_windings_valid = false;
   }
   /// The largest absolute stripe index accepted (far beyond what a mesh resolves; it keeps the
   /// sums of indices exact).
@@ -299,6 +302,7 @@ public:
   {
     std::fill(m_index.begin(), m_index.end(), Eigen::Vector2i::Zero());
     m_solved = false;
+    m_windings_valid = false;
   }
   /// Moves every index of face `from` to face `to` (added to the indices there).
   /// \throws Invalid_constraints if `to` cannot hold a singularity; nothing changes then
@@ -315,6 +319,7 @@ public:
     m_index[b] = sum;
     m_index[a].setZero();
     m_solved = false;
+    m_windings_valid = false;
   }
   /// The faces with a non-zero prescribed index.
   std::vector<std::size_t> singular_faces() const
@@ -387,6 +392,7 @@ public:
       k = none;
     m_index = std::move(k);
     m_solved = false;
+    m_windings_valid = false;
     return singular_faces().size();
   }
   /// @}
@@ -401,6 +407,22 @@ public:
   {
     require_field();
     typename Solver::Solution s = m_solver->solve(m_omega, m_index);
+    m_solution = std::move(s);
+    m_solved = true;
+    m_windings_valid = true;
+  }
+  /// After `stiffen()`: solves again with the integers (the windings) of the last `solve()`, one
+  /// back-substitution with the stiffened system, no new choice of windings. The map keeps its
+  /// lattice branch points and its topology; the stiffening moves only its continuous part.
+  /// 	hrows Invalid_constraints if the field, the singularities or the lattice setting changed
+  ///         since the last `solve()` (or there was none): its windings do not apply
+  void solve_keeping_windings()
+  {
+    require_field();
+    if(!m_windings_valid)
+      throw Invalid_constraints("solve_keeping_windings(): no solve() with the current field, singularities and "
+                                "lattice setting to take the windings from");
+    typename Solver::Solution s = m_solver->solve_with_windings(m_omega, m_solution);
     m_solution = std::move(s);
     m_solved = true;
   }
@@ -439,6 +461,7 @@ public:
     }
     m_lattice = on;
     m_solved = false;
+    m_windings_valid = false;
   }
   bool lattice_branch_points() const { return m_lattice; }
   /// Local stiffening (as in Bommes et al.'s mixed-integer quadrangulation): multiplies by
@@ -694,7 +717,7 @@ private:
     update_omega();
     ++m_factorizations;
     m_relaxation.reset();
-    m_solved = false;
+    m_solved = false; // the windings stay valid: the same field and indices, other weights
   }
 
   // Edge weights with the contributions of branch faces dropped: the cotangent weight keeps the
@@ -901,6 +924,7 @@ private:
   SolverTraits m_traits;
   int m_n = 2;
   bool m_uniform = false, m_lattice = false;
+  bool m_windings_valid = false; // the last solve's windings hold for the current field and indices
   std::vector<double> m_stiffness; // per face (stiffen()), empty: all 1
   bool m_own_analysis_cache = false;
   std::shared_ptr<const Indices> m_idx;

@@ -101,6 +101,7 @@ public:
     std::vector<Value> alpha; ///< per vertex: y = d_P alpha + 2 pi (integers) on every edge
     double energy = 0.;
     std::size_t free_directions = 0, winding_changes = 0;
+    std::vector<Value> windings; ///< per edge: the particular solution with the chosen windings (2 pi integers)
   };
 
   /// \param weight per edge, with the contributions of branch faces already removed
@@ -161,8 +162,6 @@ public:
     s.y = optimal_one_form(ystar, omega, &s.alpha);
     s.free_directions = m_free.size();
     const bool lattice = m_lattice && !m_branch.empty();
-    if(lattice && m_free.empty())
-      shift_to_lattice(ystar, s.alpha); // nothing to choose
     if(!m_free.empty())
     {
       ensure_harmonic_basis();
@@ -203,13 +202,22 @@ public:
       }
       else if(changed)
         s.y = optimal_one_form(ystar, omega, &s.alpha);
-      if(lattice)
-        shift_to_lattice(ystar, s.alpha); // ystar holds the windings now
     }
-    if(m_lattice)
-      for(std::size_t v = 0; v < s.alpha.size(); ++v)
-        for(int a = 0; a < m_cover.d; ++a)
-          s.alpha[v][a] += m_free_offset[v][a]; // y unchanged: P_e c_j - c_i = 0 on every edge
+    finish_lattice(ystar, s.alpha); // ystar holds the windings now
+    s.energy = energy(s.y, omega);
+    s.windings = std::move(ystar);
+    return s;
+  }
+
+  /// The optimal solution with the integers of `previous` (of a system with this cover and these
+  /// indices, other weights: a stiffening): one back-substitution, no windings chosen.
+  Solution solve_with_windings(const std::vector<Value>& omega, const Solution& previous) const
+  {
+    Solution s;
+    s.windings = previous.windings;
+    s.y = optimal_one_form(s.windings, omega, &s.alpha);
+    s.free_directions = m_free.size();
+    finish_lattice(s.windings, s.alpha);
     s.energy = energy(s.y, omega);
     return s;
   }
@@ -408,6 +416,15 @@ private:
     const Eigen::VectorXd g_lattice = m_lattice_basis.transpose() * (g + m_Q * c0);
     const Eigen::VectorXi z = closest_integer_point(m_lattice_reduced, g_lattice);
     return coset.offset + (m_lattice_basis * z.cast<double>()).array().round().cast<int>().matrix();
+  }
+
+  // With lattice branch points: theirs to 0, the pieces pinned at 0 to a generic offset
+  void finish_lattice(const std::vector<Value>& windings, std::vector<Value>& alpha) const
+  {
+    if(m_lattice && !m_branch.empty())
+      shift_to_lattice(windings, alpha);
+    for(std::size_t v = 0; m_lattice && v < alpha.size(); ++v)
+      alpha[v] += m_free_offset[v];
   }
 
   // After the windings: every branch point of a component is at 0, or all at pi (1, 1), shifted
