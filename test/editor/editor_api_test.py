@@ -580,14 +580,15 @@ def quad_preview(server):
     expect_refused(server, {"op": "add_pair", "plus": 0, "minus": nf // 2}, ["T-junction"],
                    "quads: a stripe singularity pair while the preview is on")
 
-    # the 8k bunny (genus 0): the trivial cross field's 8 cones of +1/4 are the 8 vertices of valence 3
-    status, state, _ = server.edit({"op": "load", "name": "bunny_8k.off"})
+    # a 1k egg (genus 0; light enough for the sanitizers): the trivial cross field's 8 cones of +1/4
+    # are the 8 vertices of valence 3
+    status, state, _ = server.edit({"op": "load", "name": "egg_1k.off"})
     status, state, _ = server.edit({"op": "field", "kind": "trivial", "order": 4})
-    check("quads: off after loading a mesh, 8 cones on the bunny",
+    check("quads: off after loading a mesh, 8 cones on the egg",
           status == 200 and state["quads"] == {"on": False} and len(state["field_singularities"]) == 8, state)
-    status, state, _ = server.edit({"op": "frequency", "stripes": 12})
+    status, state, _ = server.edit({"op": "frequency", "stripes": 10})
     status, state, data = server.edit({"op": "quads", "on": True})
-    check("quads: the bunny's preview", status == 200 and state["quads"]["valid"], state)
+    check("quads: the egg's preview", status == 200 and state["quads"]["valid"], state)
 
     def read_exported(label, cones):
         status, _, body = server.request("GET", "api/export_quads.off")
@@ -601,7 +602,7 @@ def quad_preview(server):
               (quads, two_sided, chi, irregular))
 
     if status == 200 and state["quads"]["valid"]:
-        read_exported("quads: the bunny's OFF: quads, closed, Euler characteristic 2, valence 3 at 8 vertices "
+        read_exported("quads: the egg's OFF: quads, closed, Euler characteristic 2, valence 3 at 8 vertices "
                       "(the cones), 4 elsewhere", 8)
         # a cone dragged to a neighbouring face: the preview follows
         mesh = server.json("api/mesh")
