@@ -569,7 +569,7 @@ TEMPLATE_TEST_CASE("the octahedron of the paper: counts of Table 1, loops, topol
   CHECK_THROWS_AS(SD::make_octahedron_membrane(mesh, 0), SD::Invalid_parameter);
 }
 
-TEMPLATE_TEST_CASE("bad input throws and leaves the mesh untouched; an all-fixed mesh is a no-op",
+TEMPLATE_TEST_CASE("bad input throws and leaves the mesh untouched, and an all-fixed mesh is a no-op",
                    "[barycentric]", SD_MESH_TYPES)
 {
   using Mesh = TestType;

@@ -853,7 +853,7 @@ TEMPLATE_TEST_CASE("Automatic singularities: where the energy wants them, then e
   }
 }
 
-TEST_CASE("Edits are back-substitutions and equal a fresh solve; both solvers agree", "[branched_stripes]")
+TEST_CASE("Edits are back-substitutions and equal a fresh solve, and both solvers agree", "[branched_stripes]")
 {
   using Mesh = test::Surface_mesh;
   const Mesh mesh = make_case<Mesh>("eight.off");

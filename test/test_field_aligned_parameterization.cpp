@@ -409,7 +409,7 @@ TEMPLATE_TEST_CASE("Automatic windings are integers no worse than their neighbou
   }
 }
 
-TEMPLATE_TEST_CASE("A face with an edge on the boundary cannot hold a singularity; one with a vertex there can",
+TEMPLATE_TEST_CASE("A face with an edge on the boundary cannot hold a singularity, one with a vertex there can",
                    "[stripes]", SD_MESH_TYPES)
 {
   const TestType mesh = make_case<TestType>("hemisphere.off");
@@ -727,7 +727,7 @@ TEMPLATE_TEST_CASE("Bad input throws and leaves the mesh and the outputs untouch
   }
 }
 
-TEMPLATE_TEST_CASE("Out-of-range parameters are refused with Invalid_parameter; nothing changes", "[stripes]",
+TEMPLATE_TEST_CASE("Out-of-range parameters are refused with Invalid_parameter and nothing changes", "[stripes]",
                    SD_MESH_TYPES)
 {
   using V = typename boost::graph_traits<TestType>::vertex_descriptor;

@@ -212,7 +212,7 @@ TEMPLATE_TEST_CASE("Field-aligned quads with prescribed cones: valence 3 at +1/4
 }
 
 TEMPLATE_TEST_CASE("Field-aligned quads from a kept parameterizer: the remesher's mesh, then the quads of a moved "
-                   "cone; what is not a cross field's lattice map is refused", "[field_aligned_quads]",
+                   "cone, and what is not a cross field's lattice map is refused", "[field_aligned_quads]",
                    SD_FIELD_QUAD_MESH_TYPES)
 {
   using Mesh = TestType;

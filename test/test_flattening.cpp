@@ -1607,7 +1607,7 @@ TEMPLATE_TEST_CASE("Glue tabs overlap no piece and no other tab", "[flattening][
   }
 }
 
-TEMPLATE_TEST_CASE("Cutting along no edge copies the mesh; cutting along a path opens it", "[flattening][cut]",
+TEMPLATE_TEST_CASE("Cutting along no edge copies the mesh, cutting along a path opens it", "[flattening][cut]",
                    SD_MESH_TYPES)
 {
   using Mesh = TestType;

@@ -495,7 +495,7 @@ TEMPLATE_TEST_CASE("Intrinsic Delaunay weights remove the spurious extrema of co
   CHECK(cp.minima.size() + cp.maxima.size() == delaunay.constraints().size());
 }
 
-TEST_CASE("Isolines lie on their level along n x grad u; gradient lines land on their isoline",
+TEST_CASE("Isolines lie on their level along n x grad u, gradient lines land on their isoline",
           "[harmonic_quad][curves]")
 {
   const test::Surface_mesh mesh = test::load_mesh<test::Surface_mesh>("kitten.off");
@@ -621,7 +621,7 @@ TEST_CASE("Odd faces: a line that ends on an isoline is continued to the next T-
   CHECK(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup.faces));
 }
 
-TEST_CASE("Odd faces: a single pentagon is led to the boundary; a triangle is merged, not made flat",
+TEST_CASE("Odd faces: a single pentagon is led to the boundary, a triangle is merged and not made flat",
           "[harmonic_quad][odd_faces]")
 {
   // the lowest band of the previous case only: one pentagon above two quads
