@@ -131,14 +131,7 @@ void editor_workload(const Mesh& mesh, const std::string&, Run& run)
   Json state = state_of(bytes);
   if(state["field_singularities"].empty())
     return;
-  double diagonal = 0.;
-  {
-    CGAL::Bbox_3 box;
-    for(auto v : vertices(mesh))
-      box += mesh.point(v).bbox();
-    diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                         CGAL::square(box.zmax() - box.zmin()));
-  }
+  const double diagonal = session->mesh_json()["diagonal"].get<double>(); // the session's own
   const double stripes = (std::min)(double(state["max_stripes"]),
                                     diagonal * std::sqrt(2000. / CGAL::Polygon_mesh_processing::area(mesh)));
   bytes = request(R"({"op":"frequency","stripes":)" + std::to_string(stripes) + "}");
