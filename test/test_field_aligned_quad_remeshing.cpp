@@ -23,6 +23,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -399,6 +400,55 @@ TEST_CASE("Field-aligned quads: a folded map is repaired by stiffening, or refus
     bsp.set_field(field.map(), 1. / h);
     CHECK_THROWS_AS(bsp.solve_keeping_windings(), SD::Invalid_constraints);
   }
+}
+
+TEST_CASE("Graded stiffening: the ring factor applies to the faces around the given ones", "[field_aligned_quads]")
+{
+  // stiffen(F, 1, r) is stiffen(R, r) with R the faces sharing a vertex with F (F among them), and
+  // stiffen(F, a, r) is that followed by a / r on F alone (the factors multiply): the same maps
+  using Mesh = test::Polyhedron;
+  using Face = typename boost::graph_traits<Mesh>::face_descriptor;
+  const Mesh mesh = make_case<Mesh>("torus");
+  const auto field = smoothest_cross_field(mesh);
+  const double h = std::sqrt(surface_area(mesh) / 700.);
+  auto make = [&] {
+    auto bsp = std::make_unique<SD::Branched_stripe_parameterizer<Mesh>>(mesh, SD::parameters::symmetry_order(4));
+    bsp->set_field(field.map(), 1. / h);
+    bsp->set_lattice_branch_points(true);
+    return bsp;
+  };
+  const std::vector<Face> all(faces(mesh).begin(), faces(mesh).end());
+  const std::vector<Face> some{all[10], all[11], all[400]};
+  std::vector<Face> ring;
+  for(Face f : some)
+    for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+      for(Face g : faces_around_target(halfedge(v, mesh), mesh))
+        if(std::find(ring.begin(), ring.end(), g) == ring.end())
+          ring.push_back(g);
+  REQUIRE(ring.size() > 3 * some.size());
+  auto graded = make(), by_hand = make(), plain = make();
+  graded->stiffen(some, 8., 2.);
+  by_hand->stiffen(ring, 2.);
+  by_hand->stiffen(some, 4.);
+  plain->stiffen(some, 8.);
+  double largest = 0., from_plain = 0.;
+  for(auto* bsp : {graded.get(), by_hand.get(), plain.get()})
+    bsp->solve();
+  for(Face f : all)
+    for(int family = 0; family < 2; ++family)
+    {
+      const auto a = graded->corner_values(f, family), b = by_hand->corner_values(f, family),
+                 c = plain->corner_values(f, family);
+      for(int i = 0; i < 3; ++i)
+      {
+        largest = (std::max)(largest, std::abs(a[std::size_t(i)] - b[std::size_t(i)]));
+        from_plain = (std::max)(from_plain, std::abs(a[std::size_t(i)] - c[std::size_t(i)]));
+      }
+    }
+  CHECK(largest < 1e-8);
+  CHECK(from_plain > 1e-6); // the ring's factor does change the map
+  CHECK_THROWS_AS(graded->stiffen(some, 4., 0.5), SD::Invalid_parameter);
+  CHECK_THROWS_AS(graded->stiffen(some, 4., std::nan("")), SD::Invalid_parameter);
 }
 
 TEST_CASE("The extraction's check reports what is not the quad mesh of the field", "[field_aligned_quads][oracle]")

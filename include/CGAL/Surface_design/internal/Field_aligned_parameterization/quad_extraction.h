@@ -285,28 +285,6 @@ Eigen::Vector3d point_in_face(const Indices& idx, const VertexPointMap& vpm, std
          o[2] * position(vpm, target(next(h, tm), tm));
 }
 
-/// The isolines of a stripe parameterizer (points of any kernel, faces as descriptors) as the
-/// extraction reads them.
-template <class Isoline, class Indices>
-std::vector<Stripe_isoline_polyline> stripe_polylines(const std::vector<Isoline>& isolines, const Indices& idx)
-{
-  std::vector<Stripe_isoline_polyline> lines;
-  lines.reserve(isolines.size());
-  for(const auto& line : isolines)
-  {
-    Stripe_isoline_polyline l;
-    l.closed = line.closed;
-    l.level = line.level;
-    l.family = line.family;
-    for(const auto& p : line.points)
-      l.points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-    for(auto f : line.faces)
-      l.faces.push_back(idx.index(f));
-    lines.push_back(std::move(l));
-  }
-  return lines;
-}
-
 /// Checks that the extraction is a closed pure quad mesh with Euler characteristic `chi` whose
 /// vertex at cone i has valence 4 - cone_index[i] and every other vertex valence 4, and whose
 /// quads face the way of the input (the normal of a quad, the cross product of its diagonals,

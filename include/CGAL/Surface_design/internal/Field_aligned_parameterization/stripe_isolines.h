@@ -73,8 +73,11 @@ public:
     std::array<int, 3> edge_first_corner; // the corner at the start of opposite_edge[k]
   };
 
-  Stripe_isoline_builder(std::size_t number_of_vertices, std::size_t number_of_edges, double value_tolerance = 1e-9)
-    : m_vertex_point(number_of_vertices, none), m_edge_points(number_of_edges), m_tolerance(value_tolerance)
+  /// `level_zero_only`: the lines at level pi are not cut (the quad extraction reads level 0 alone)
+  Stripe_isoline_builder(std::size_t number_of_vertices, std::size_t number_of_edges, double value_tolerance = 1e-9,
+                         bool level_zero_only = false)
+    : m_vertex_point(number_of_vertices, none), m_edge_points(number_of_edges), m_tolerance(value_tolerance),
+      m_level_classes(level_zero_only ? 1 : 2)
   {}
 
   /// Cuts one small triangle of face `face` (stripe family `family`) whose angle is linear
@@ -89,7 +92,7 @@ public:
     double lo = s[0].value, hi = s[0].value;
     for(const auto& x : s)
       lo = (std::min)(lo, x.value), hi = (std::max)(hi, x.value);
-    for(int c = 0; c < 2; ++c)
+    for(int c = 0; c < m_level_classes; ++c)
     {
       const double base = c * pi;
       const double m0 = std::ceil((lo - m_tolerance - base) / two_pi), m1 = std::floor((hi + m_tolerance - base) / two_pi);
@@ -101,12 +104,18 @@ public:
   /// The polylines of all pieces added so far.
   std::vector<Stripe_isoline_polyline> polylines() const
   {
-    std::vector<std::vector<std::pair<std::size_t, std::size_t>>> adjacent(m_points.size()); // (point, segment)
-    for(std::size_t s = 0; s < m_segments.size(); ++s)
+    // the segments at each point, in one array (point p's in [first[p], first[p + 1]))
+    std::vector<std::size_t> first(m_points.size() + 1, 0), at_point(2 * m_segments.size());
+    for(const Segment& s : m_segments)
+      ++first[s.a + 1], ++first[s.b + 1];
+    for(std::size_t p = 0; p < m_points.size(); ++p)
+      first[p + 1] += first[p];
     {
-      adjacent[m_segments[s].a].emplace_back(m_segments[s].b, s);
-      adjacent[m_segments[s].b].emplace_back(m_segments[s].a, s);
+      std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+      for(std::size_t s = 0; s < m_segments.size(); ++s)
+        at_point[fill[m_segments[s].a]++] = s, at_point[fill[m_segments[s].b]++] = s;
     }
+    auto degree = [&](std::size_t p) { return first[p + 1] - first[p]; };
     std::vector<bool> used(m_segments.size(), false);
     std::vector<Stripe_isoline_polyline> result;
     auto walk = [&](std::size_t start, std::size_t first_segment) {
@@ -120,7 +129,7 @@ public:
         used[segment] = true;
         line.faces.push_back(m_segments[segment].face);
         const std::size_t next = m_segments[segment].a == at ? m_segments[segment].b : m_segments[segment].a;
-        if(next == start && adjacent[start].size() == 2)
+        if(next == start && degree(start) == 2)
         {
           line.closed = true;
           break;
@@ -134,9 +143,9 @@ public:
         }
         line.points.push_back(m_points[next]);
         at = next;
-        if(adjacent[at].size() != 2)
+        if(degree(at) != 2)
           break;
-        segment = used[adjacent[at][0].second] ? adjacent[at][1].second : adjacent[at][0].second;
+        segment = used[at_point[first[at]]] ? at_point[first[at] + 1] : at_point[first[at]];
         if(used[segment])
           break;
       }
@@ -144,10 +153,10 @@ public:
     };
     // open chains start at the points where they end or branch, then the remaining loops
     for(std::size_t p = 0; p < m_points.size(); ++p)
-      if(adjacent[p].size() != 2)
-        for(const auto& [q, s] : adjacent[p])
-          if(!used[s])
-            walk(p, s);
+      if(degree(p) != 2)
+        for(std::size_t k = first[p]; k < first[p + 1]; ++k)
+          if(!used[at_point[k]])
+            walk(p, at_point[k]);
     for(std::size_t s = 0; s < m_segments.size(); ++s)
       if(!used[s])
         walk(m_segments[s].a, s);
@@ -216,9 +225,10 @@ private:
     }
     if(a == b)
       return;
-    const auto key = std::make_pair((std::min)(a, b), (std::max)(a, b));
-    if(!m_segment_keys.insert(key).second)
-      return; // an edge of the mesh met from both sides
+    // a segment between two corners at the level (a mesh edge, or an edge between two small
+    // triangles) is met again from the other side: kept once
+    if(zeros == 2 && !m_segment_keys.insert(std::make_pair((std::min)(a, b), (std::max)(a, b))).second)
+      return;
     m_segments.push_back({a, b, level_class, family, face.index});
   }
 
@@ -315,8 +325,9 @@ private:
   int m_class = 0; // the level class being cut: 0 or 1 (pi)
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> m_sample_points;
   std::vector<Segment> m_segments;
-  std::set<std::pair<std::size_t, std::size_t>> m_segment_keys;
+  std::set<std::pair<std::size_t, std::size_t>> m_segment_keys; // of the segments between two corners
   double m_tolerance;
+  int m_level_classes;
 };
 
 /// One isoline of a stripe pattern, as the public classes return it: a polyline on the surface
