@@ -49,8 +49,9 @@ const char* usage =
   "  --edge-length H       target edge length (default: sqrt(area / 3000), about 3000 faces)\n"
   "  --target-faces N      about N faces: edge length sqrt(area / N) (not with --edge-length)\n"
   "options of --method field:\n"
-  "  --field smoothest|principal  the cross field: the smoothest one (Knoeppel et al. 2013, default)\n"
-  "                        or the smoothest one aligned with the principal curvature directions\n"
+  "  --field auto|smoothest|principal  the cross field: the smoothest one (Knoeppel et al. 2013), the\n"
+  "                        smoothest one aligned with the principal curvature directions, or (auto,\n"
+  "                        default) of these two the one with fewer cones once they are apart\n"
   "  --cone-distance D     automatic cones at least D h apart (default 1; 0 keeps the field's): closer\n"
   "                        pairs of opposite index are removed, others moved apart, and the field is\n"
   "                        the trivial connection with those cones (Crane et al. 2010)\n"
@@ -87,7 +88,7 @@ const char* usage =
 
 struct Options
 {
-  std::string input, output, picture, up = "+Y", solver = "default", method = "harmonic", field = "smoothest";
+  std::string input, output, picture, up = "+Y", solver = "default", method = "harmonic", field = "auto";
   std::vector<long> minima, maxima;
   std::map<long, int> cones; // --singularity FACE:K/4
   double edge_length = 0., target_faces = 0., curvature_adaptation = 0., cone_distance = 1.;
@@ -107,7 +108,7 @@ Options parse(int argc, char** argv)
     .value("--method", [&](const std::string& v) { o.method = program::parse_choice(v, "--method", {"harmonic", "field"}); })
     .value("--target-faces",
            [&](const std::string& v) { o.target_faces = double(program::parse_integer(v, "--target-faces", 1, 10000000)); })
-    .value("--field", [&](const std::string& v) { o.field = program::parse_choice(v, "--field", {"smoothest", "principal"}); })
+    .value("--field", [&](const std::string& v) { o.field = program::parse_choice(v, "--field", {"auto", "smoothest", "principal"}); })
     .value("--cone-distance", [&](const std::string& v) { o.cone_distance = program::parse_double(v, "--cone-distance", 0., 100.); })
     .repeated("--singularity",
               [&](const std::string& v) {
@@ -323,33 +324,57 @@ int run_field(const Options& o, Traits traits)
   }
   else
   {
-    const double weight = o.field == "principal" ? 0.1 : 0.;
-    SD::smoothest_direction_field(
-      mesh, field,
-      P::symmetry_order(4, P::curvature_alignment_weight(weight, CGAL::parameters::sparse_linear_solver(traits))));
-    auto index = mesh.add_property_map<Mesh::Face_index, int>("f:cone", 0).first;
-    const std::size_t cones = SD::direction_field_singularities(mesh, field, index, P::symmetry_order(4));
-    std::printf("cross field: %s, %zu cones\n",
-                o.field == "principal" ? "smoothest aligned with the principal curvature directions" : "smoothest", cones);
-    if(o.cone_distance > 0.)
-    {
+    // a cross field and its cones, those closer than the cone distance removed or moved apart:
+    // the number of cones left (the irregular vertices of the quads)
+    auto cross_field = [&](const std::string& kind, auto out) {
+      const bool principal = kind == "principal";
+      SD::smoothest_direction_field(
+        mesh, out,
+        P::symmetry_order(4, P::curvature_alignment_weight(principal ? 0.1 : 0., CGAL::parameters::sparse_linear_solver(traits))));
+      auto index = mesh.add_property_map<Mesh::Face_index, int>("f:cone", 0).first;
+      for(auto f : faces(mesh))
+        put(index, f, 0); // (the second field reuses the map)
+      const std::size_t cones = SD::direction_field_singularities(mesh, out, index, P::symmetry_order(4));
+      std::printf("cross field: %s, %zu cones\n",
+                  principal ? "smoothest aligned with the principal curvature directions" : "smoothest", cones);
+      if(o.cone_distance <= 0.)
+        return cones;
       tc.set_indices(index);
       try
       {
         const SD::Singularity_separation s = tc.separate_singularities(o.cone_distance * h);
-        std::printf("cones at least %.3g apart (%.3g h): %zu pairs removed, %zu cones moved, %zu close pairs kept\n",
+        std::printf("  cones at least %.3g apart (%.3g h): %zu pairs removed, %zu cones moved, %zu close pairs kept\n",
                     o.cone_distance * h, o.cone_distance, s.removed_pairs, s.moved, s.kept_pairs);
         if(s.removed_pairs + s.moved > 0)
         {
-          tc.field(field);
+          tc.field(out);
           std::printf("  the field is now the trivial connection with these %zu cones\n", cones - 2 * s.removed_pairs);
         }
+        return cones - 2 * s.removed_pairs;
       }
       catch(const SD::Invalid_constraints& e)
       {
-        std::printf("cones kept where the smoothest field has them: no vertex-based trivial connection has them (%s)\n",
+        std::printf("  cones kept where the field has them: no vertex-based trivial connection has them (%s)\n",
                     e.what());
+        return cones;
       }
+    };
+    if(o.field != "auto")
+      cross_field(o.field, field);
+    else
+    {
+      // both; the one with fewer cones (the smoothest on a tie): the principal directions give
+      // none on a torus or a knotted tube, where the smoothest field has dozens, and many more
+      // than it on a scan (bunny_60k: 182 against 36)
+      auto principal = mesh.add_property_map<Mesh::Vertex_index, program::Vector>("v:principal_cross_field").first;
+      const std::size_t smoothest_cones = cross_field("smoothest", field);
+      const std::size_t principal_cones = cross_field("principal", principal);
+      if(principal_cones < smoothest_cones)
+        for(auto v : vertices(mesh))
+          put(field, v, get(principal, v));
+      std::printf("  auto: the %s field (%zu cones against %zu)\n",
+                  principal_cones < smoothest_cones ? "principal" : "smoothest",
+                  (std::min)(smoothest_cones, principal_cones), (std::max)(smoothest_cones, principal_cones));
     }
   }
 

@@ -288,7 +288,7 @@ done
 # --method field and the options of either method
 for args in "--method" "--method magic" "--target-faces 0" "--target-faces -5" "--target-faces x" \
             "--target-faces 100 --edge-length 0.1" "--field smoothest" "--cone-distance 1" "--singularity 3:1/4" \
-            "--stiffening-rounds 3" "--method field --field magic" "--method field --cone-distance -1" \
+            "--stiffening-rounds 3" "--method field --field magic" "--method field --field auto --field smoothest" "--method field --cone-distance -1" \
             "--method field --cone-distance nan" "--method field --singularity 3:1" "--method field --singularity 3:2/4" \
             "--method field --singularity -1:1/4" "--method field --singularity 3:1/4 --singularity 3:-1/4" \
             "--method field --singularity 3:1/4 --field smoothest" "--method field --stiffening-rounds 65" \
@@ -304,6 +304,19 @@ cones=$(sed -n 's/^field-aligned quads (h = [^)]*): \([0-9]*\) cones.*/\1/p' "$W
 if ! grep -q "100.0% quads" "$WORK/stdout" || [ -z "$cones" ] ||
    ! grep -q "^  $cones irregular vertices" "$WORK/stdout"; then
   echo "FAILED: quad_remesh eight.off --method field: $(grep -E "cones|quads|irregular" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
+# --field auto (the default) takes, of the smoothest and the principal cross field, the one with
+# fewer cones: on the knotted tube the principal one, with no cone, hence no irregular vertex
+accept quad_remesh "$DATA/knot1.off" --method field --target-faces 600 --output "$O/knot.off"
+if ! grep -q "^  auto: the principal field (0 cones against [1-9]" "$WORK/stdout" ||
+   ! grep -q "^  0 irregular vertices" "$WORK/stdout" || ! grep -q "100.0% quads" "$WORK/stdout"; then
+  echo "FAILED: quad_remesh knot1.off --method field: $(grep -E "auto|cones|irregular" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
+accept quad_remesh "$DATA/knot1.off" --method field --field smoothest --target-faces 600 --output "$O/knot_smoothest.off"
+if grep -q "auto:" "$WORK/stdout" || grep -q "^  0 irregular vertices" "$WORK/stdout"; then
+  echo "FAILED: quad_remesh knot1.off --field smoothest: $(grep -E "auto|cones|irregular" "$WORK/stdout")"
   failures=$((failures + 1))
 fi
 refuse quad_remesh "$E"
