@@ -350,6 +350,45 @@ TEST_CASE("Field-aligned quads: a folded map is repaired by stiffening, or refus
                                                    SD::parameters::stiffening_rounds(0, SD::parameters::target_edge_length(h))),
                   SD::Remeshing_failure);
   CHECK(num_faces(out) == before);
+  // the visitor sees every extraction: the first map's, then one per round, the last one valid
+  {
+    std::vector<SD::Field_aligned_quads_round> seen;
+    Quad_mesh quads;
+    const SD::Field_aligned_quad_remeshing_result r = SD::field_aligned_quad_remeshing(
+      mesh, field.map(), quads,
+      SD::parameters::target_edge_length(h).visitor([&](const SD::Field_aligned_quads_round& round) {
+        seen.push_back(round);
+        return true;
+      }));
+    REQUIRE(r.stiffening_rounds > 0);
+    REQUIRE(seen.size() == r.stiffening_rounds + 1);
+    for(std::size_t i = 0; i < seen.size(); ++i)
+    {
+      CHECK(seen[i].round == i);
+      CHECK(seen[i].problem.empty() == (i + 1 == seen.size()));
+      if(i > 0)
+        CHECK(seen[i].seconds >= seen[i - 1].seconds);
+    }
+    CHECK(seen.front().folded_faces == r.initially_folded);
+    CHECK(seen.back().folded_faces == r.folded_faces);
+    CHECK(num_faces(quads) == r.faces);
+    // stopped by the visitor after the first map: a failure that says so, nothing written
+    std::size_t calls = 0;
+    try
+    {
+      SD::field_aligned_quad_remeshing(mesh, field.map(), out,
+                                       SD::parameters::target_edge_length(h).visitor(
+                                         [&](const SD::Field_aligned_quads_round&) { return ++calls > 1; }));
+      FAIL("a stopped remeshing must throw");
+    }
+    catch(const SD::Remeshing_failure& e)
+    {
+      CHECK(std::string(e.what()).find("stopped by the visitor") != std::string::npos);
+      CHECK(std::string(e.what()).find("after 0 rounds") != std::string::npos);
+    }
+    CHECK(calls == 1);
+    CHECK(num_faces(out) == before);
+  }
   // stiffening moves the folds away (and the energy grows: the map gives up some alignment)
   const double energy = bsp.energy();
   for(int round = 0; round < 10 && !bsp.folded_faces().empty(); ++round)

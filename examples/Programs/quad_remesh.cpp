@@ -19,6 +19,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <future>
 #include <iostream>
 #include <map>
 #include <string>
@@ -312,6 +313,23 @@ int run_field(const Options& o, Traits traits)
   program::Stopwatch field_clock;
   Mesh mesh = input; // with the field as a property
   auto field = mesh.add_property_map<Mesh::Vertex_index, program::Vector>("v:cross_field").first;
+  auto index = mesh.add_property_map<Mesh::Face_index, int>("f:cone", 0).first;
+  // a cross field (curvature-aligned or not) and its cones (`out_cones`: the count returned)
+  auto compute = [&mesh](bool aligned, auto out, auto out_cones, auto solver) {
+    SD::smoothest_direction_field(
+      mesh, out,
+      P::symmetry_order(4, P::curvature_alignment_weight(aligned ? 0.1 : 0., CGAL::parameters::sparse_linear_solver(solver))));
+    return SD::direction_field_singularities(mesh, out, out_cones, P::symmetry_order(4));
+  };
+  // --field auto: the principal field is independent of the rest, made on a second thread with a
+  // solver of its own while this one makes the smoothest field (the mesh is only read meanwhile)
+  auto principal = mesh.add_property_map<Mesh::Vertex_index, program::Vector>("v:principal_cross_field").first;
+  auto principal_index = mesh.add_property_map<Mesh::Face_index, int>("f:principal_cone", 0).first;
+  std::future<std::size_t> principal_raw;
+  if(o.cones.empty() && o.field == "auto")
+    principal_raw = std::async(std::launch::async, [&, solver = program::independent_solver(traits)] {
+      return compute(true, principal, principal_index, solver);
+    });
   SD::Trivial_connection tc(mesh, P::symmetry_order(4, CGAL::parameters::sparse_linear_solver(traits)));
   if(!o.cones.empty())
   {
@@ -324,22 +342,14 @@ int run_field(const Options& o, Traits traits)
   }
   else
   {
-    // a cross field and its cones, those closer than the cone distance removed or moved apart:
-    // the number of cones left (the irregular vertices of the quads)
-    auto cross_field = [&](const std::string& kind, auto out) {
-      const bool principal = kind == "principal";
-      SD::smoothest_direction_field(
-        mesh, out,
-        P::symmetry_order(4, P::curvature_alignment_weight(principal ? 0.1 : 0., CGAL::parameters::sparse_linear_solver(traits))));
-      auto index = mesh.add_property_map<Mesh::Face_index, int>("f:cone", 0).first;
-      for(auto f : faces(mesh))
-        put(index, f, 0); // (the second field reuses the map)
-      const std::size_t cones = SD::direction_field_singularities(mesh, out, index, P::symmetry_order(4));
+    // the cones closer than the cone distance removed or moved apart: the number of cones left
+    // (the irregular vertices of the quads)
+    auto separate = [&](bool aligned, std::size_t cones, auto out, auto cone_map) {
       std::printf("cross field: %s, %zu cones\n",
-                  principal ? "smoothest aligned with the principal curvature directions" : "smoothest", cones);
+                  aligned ? "smoothest aligned with the principal curvature directions" : "smoothest", cones);
       if(o.cone_distance <= 0.)
         return cones;
-      tc.set_indices(index);
+      tc.set_indices(cone_map);
       try
       {
         const SD::Singularity_separation s = tc.separate_singularities(o.cone_distance * h);
@@ -360,15 +370,16 @@ int run_field(const Options& o, Traits traits)
       }
     };
     if(o.field != "auto")
-      cross_field(o.field, field);
+      separate(o.field == "principal", compute(o.field == "principal", field, index, traits), field, index);
     else
     {
       // both; the one with fewer cones (the smoothest on a tie): the principal directions give
       // none on a torus or a knotted tube, where the smoothest field has dozens, and many more
       // than it on a scan (bunny_60k: 182 against 36)
-      auto principal = mesh.add_property_map<Mesh::Vertex_index, program::Vector>("v:principal_cross_field").first;
-      const std::size_t smoothest_cones = cross_field("smoothest", field);
-      const std::size_t principal_cones = cross_field("principal", principal);
+      const std::size_t smoothest_raw = compute(false, field, index, traits);
+      const std::size_t principal_count = principal_raw.get();
+      const std::size_t smoothest_cones = separate(false, smoothest_raw, field, index);
+      const std::size_t principal_cones = separate(true, principal_count, principal, principal_index);
       if(principal_cones < smoothest_cones)
         for(auto v : vertices(mesh))
           put(field, v, get(principal, v));
@@ -391,7 +402,15 @@ int run_field(const Options& o, Traits traits)
       const SD::Field_aligned_quad_remeshing_result r = SD::field_aligned_quad_remeshing(
         mesh, field, quads,
         P::target_edge_length(spacing,
-                              P::stiffening_rounds(o.stiffening_rounds, CGAL::parameters::sparse_linear_solver(traits))));
+                              P::stiffening_rounds(o.stiffening_rounds, CGAL::parameters::sparse_linear_solver(traits)))
+          .visitor([](const SD::Field_aligned_quads_round& round) {
+            // progress: on a large mesh a round takes seconds
+            std::printf("  %s %zu: folds in %zu faces; %s (%.2f s)\n", round.round == 0 ? "first map," : "round",
+                        round.round, round.folded_faces,
+                        round.problem.empty() ? "its lines are the quad mesh" : round.problem.c_str(), round.seconds);
+            std::fflush(stdout);
+            return true;
+          }));
       std::printf("field-aligned quads (h = %.4g): %zu cones, %zu faces folded in the first map, %zu rounds of "
                   "stiffening, %zu folded at the end\n",
                   spacing, r.cones, r.initially_folded, r.stiffening_rounds, r.folded_faces);

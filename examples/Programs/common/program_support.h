@@ -397,6 +397,17 @@ Traits solver_sharing_analysis(Traits& traits)
   return fresh;
 }
 
+/// A new traits object with the settings of `traits` (size threshold) and no state shared with
+/// it (no factorization, no analysis cache): for a system solved on another thread.
+template <class Traits>
+Traits independent_solver(Traits& traits)
+{
+  Traits fresh;
+  if constexpr(std::is_same<Traits, CGAL::Surface_design::Default_solver_traits>::value)
+    fresh.solver().set_size_threshold(traits.solver().size_threshold());
+  return fresh;
+}
+
 /// `x` with 4 significant digits (for messages).
 inline std::string text(double x)
 {
