@@ -192,15 +192,20 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
     // folds stay below 2.2 times the first map's on the shared meshes)
     const bool worse = folded.size() > 4 * result.initially_folded + 32;
     if(folded.empty() || result.stiffening_rounds >= std::size_t(rounds) || !go_on || worse)
+    {
+      std::string why = " (the map does not fold";
+      if(!folded.empty())
+      {
+        why = " (the map folds in " + std::to_string(folded.size()) + " faces after " +
+              std::to_string(result.stiffening_rounds) + " rounds of stiffening";
+        if(!go_on)
+          why += ", stopped by the visitor";
+        else if(worse)
+          why += ", against " + std::to_string(result.initially_folded) + " in the first map: stiffening makes it worse";
+      }
       throw Remeshing_failure("the level-0 lines of the stripes do not form the quad mesh of the field: " + problem +
-                              (folded.empty() ? std::string(" (the map does not fold") :
-                                                " (the map folds in " + std::to_string(folded.size()) + " faces after " +
-                                                  std::to_string(result.stiffening_rounds) + " rounds of stiffening" +
-                                                  (!go_on ? ", stopped by the visitor" :
-                                                   worse  ? ", against " + std::to_string(result.initially_folded) +
-                                                              " in the first map: stiffening makes it worse"
-                                                          : std::string())) +
-                              ": another edge length often helps)");
+                              why + ": another edge length often helps)");
+    }
     bsp.stiffen(folded, 4., ring_factor);
     // most rounds keep the windings (one back-substitution); every third chooses them again,
     // since the stiffened energy may want others (measured: keeping them always left fertility at
