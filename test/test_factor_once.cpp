@@ -36,7 +36,7 @@ auto constant_field(const Mesh& mesh)
 
 } // namespace
 
-TEMPLATE_TEST_CASE("Stripes: one factorization, one back-substitution per solve", "[factor-once]", SD_MESH_TYPES)
+TEMPLATE_TEST_CASE("Stripes: one factorization, one back-substitution per solve", "[factor-once]", SD_MESH_TYPES_WITH_IDS)
 {
   TestType mesh;
   SD::make_torus(mesh, 24, 10, 1., 0.35); // genus 1: two automatic generator windings
@@ -65,7 +65,7 @@ TEMPLATE_TEST_CASE("Stripes: one factorization, one back-substitution per solve"
 }
 
 TEMPLATE_TEST_CASE("Trivial connections: one factorization for any number of edits", "[factor-once]",
-                   SD_MESH_TYPES)
+                   SD_MESH_TYPES_WITH_IDS)
 {
   TestType mesh;
   SD::make_sphere(mesh, 6);
@@ -83,7 +83,7 @@ TEMPLATE_TEST_CASE("Trivial connections: one factorization for any number of edi
   REQUIRE(solver.counts().solves == 2); // a sphere has no loops: one back-substitution per solve
 }
 
-TEMPLATE_TEST_CASE("Barycentric embedder: update() only back-substitutes", "[factor-once]", SD_MESH_TYPES)
+TEMPLATE_TEST_CASE("Barycentric embedder: update() only back-substitutes", "[factor-once]", SD_MESH_TYPES_WITH_IDS)
 {
   TestType mesh;
   const auto loops = SD::make_octahedron_membrane(mesh, 3);
@@ -102,7 +102,7 @@ TEMPLATE_TEST_CASE("Barycentric embedder: update() only back-substitutes", "[fac
 }
 
 TEMPLATE_TEST_CASE("Smoothest field: one factorization, one back-substitution per Lanczos step",
-                   "[factor-once]", SD_MESH_TYPES)
+                   "[factor-once]", SD_MESH_TYPES_WITH_IDS)
 {
   TestType mesh;
   SD::make_sphere(mesh, 5);

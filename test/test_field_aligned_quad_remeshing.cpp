@@ -30,10 +30,6 @@
 namespace SD = CGAL::Surface_design;
 namespace SDI = CGAL::Surface_design::internal;
 
-// CGAL's two halfedge data structures (the third of SD_MESH_TYPES, Polyhedron_3 with ids, only
-// changes the index maps, which the other tests cover; this program is long to compile)
-#define SD_FIELD_QUAD_MESH_TYPES test::Surface_mesh, test::Polyhedron
-
 namespace {
 
 using Quad_mesh = test::Surface_mesh;
@@ -159,7 +155,7 @@ std::string quad_mesh_problem(const Mesh& input, const std::map<typename boost::
 } // namespace
 
 TEMPLATE_TEST_CASE("Field-aligned quads: pure quads whose irregular vertices are the cones, one to one",
-                   "[field_aligned_quads]", SD_FIELD_QUAD_MESH_TYPES)
+                   "[field_aligned_quads]", SD_MESH_TYPES)
 {
   using Mesh = TestType;
   for(const auto& [name, quads] : {std::pair<std::string, double>{"torus", 700.}, {"eight.off", 900.}})
@@ -186,7 +182,7 @@ TEMPLATE_TEST_CASE("Field-aligned quads: pure quads whose irregular vertices are
 }
 
 TEMPLATE_TEST_CASE("Field-aligned quads with prescribed cones: valence 3 at +1/4, 5 at -1/4, where asked",
-                   "[field_aligned_quads]", SD_FIELD_QUAD_MESH_TYPES)
+                   "[field_aligned_quads]", SD_MESH_TYPES)
 {
   using Mesh = TestType;
   const Mesh mesh = make_case<Mesh>("torus");
@@ -214,7 +210,7 @@ TEMPLATE_TEST_CASE("Field-aligned quads with prescribed cones: valence 3 at +1/4
 
 TEMPLATE_TEST_CASE("Field-aligned quads from a kept parameterizer: the remesher's mesh, then the quads of a moved "
                    "cone, and what is not a cross field's lattice map is refused", "[field_aligned_quads]",
-                   SD_FIELD_QUAD_MESH_TYPES)
+                   SD_MESH_TYPES)
 {
   using Mesh = TestType;
   using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
@@ -329,9 +325,10 @@ TEST_CASE("Field-aligned quads: both solvers give the same mesh", "[field_aligne
 #undef SD_SAME_MESH
 }
 
-TEST_CASE("Field-aligned quads: a folded map is repaired by stiffening, or refused", "[field_aligned_quads]")
+TEMPLATE_TEST_CASE("Field-aligned quads: a folded map is repaired by stiffening, or refused", "[field_aligned_quads]",
+                   SD_MESH_TYPES)
 {
-  using Mesh = test::Surface_mesh;
+  using Mesh = TestType;
   const Mesh mesh = make_case<Mesh>("torus");
   const auto field = smoothest_cross_field(mesh);
   const double h = std::sqrt(surface_area(mesh) / 700.);
@@ -542,7 +539,7 @@ TEST_CASE("The extraction's check reports what is not the quad mesh of the field
 }
 
 TEMPLATE_TEST_CASE("Bad input to the field-aligned remesher is refused and changes nothing", "[field_aligned_quads]",
-                   SD_FIELD_QUAD_MESH_TYPES)
+                   SD_MESH_TYPES)
 {
   using Mesh = TestType;
   const Mesh torus = make_case<Mesh>("torus");
@@ -577,7 +574,7 @@ TEMPLATE_TEST_CASE("Bad input to the field-aligned remesher is refused and chang
 }
 
 TEMPLATE_TEST_CASE("Separated singularities: no two closer than asked, unless no field exists otherwise",
-                   "[field_aligned_quads]", SD_FIELD_QUAD_MESH_TYPES)
+                   "[field_aligned_quads]", SD_MESH_TYPES)
 {
   using Mesh = TestType;
   const Mesh mesh = test::load_mesh<Mesh>("bunny_1k.off");

@@ -36,7 +36,7 @@ const std::vector<std::string> closed_and_open_meshes = {
 } // namespace
 
 TEMPLATE_TEST_CASE("d1 * d0 = 0 exactly and both have the documented structure", "[dec]",
-                   SD_MESH_TYPES)
+                   SD_MESH_TYPES_WITH_IDS)
 {
   for(const std::string& name : closed_and_open_meshes)
   {
@@ -85,7 +85,7 @@ TEMPLATE_TEST_CASE("d1 * d0 = 0 exactly and both have the documented structure",
 }
 
 TEMPLATE_TEST_CASE("Corner angles, areas, lengths and normals are consistent", "[geometry]",
-                   SD_MESH_TYPES)
+                   SD_MESH_TYPES_WITH_IDS)
 {
   for(const std::string& name : closed_and_open_meshes)
   {
@@ -150,7 +150,7 @@ TEMPLATE_TEST_CASE("Corner angles, areas, lengths and normals are consistent", "
   }
 }
 
-TEMPLATE_TEST_CASE("Normals point outwards on a sphere and areas converge", "[geometry]", SD_MESH_TYPES)
+TEMPLATE_TEST_CASE("Normals point outwards on a sphere and areas converge", "[geometry]", SD_MESH_TYPES_WITH_IDS)
 {
   TestType mesh;
   SD::make_sphere(mesh, 24);
@@ -173,7 +173,7 @@ TEMPLATE_TEST_CASE("Normals point outwards on a sphere and areas converge", "[ge
   REQUIRE(total < 4 * pi);
 }
 
-TEMPLATE_TEST_CASE("Cotangents: CGAL::Weights agrees with the corner angles", "[geometry]", SD_MESH_TYPES)
+TEMPLATE_TEST_CASE("Cotangents: CGAL::Weights agrees with the corner angles", "[geometry]", SD_MESH_TYPES_WITH_IDS)
 {
   for(const std::string name : {"triceratops.off", "bunny_1k.off", "mech-holes-shark.off"})
   {
@@ -202,7 +202,7 @@ TEMPLATE_TEST_CASE("Cotangents: CGAL::Weights agrees with the corner angles", "[
 }
 
 TEMPLATE_TEST_CASE("The cotangent Laplacian: symmetric, PSD, constants in its kernel", "[dec]",
-                   SD_MESH_TYPES)
+                   SD_MESH_TYPES_WITH_IDS)
 {
   for(const std::string name : {"bunny_1k.off", "triceratops.off", "hemisphere.off", "bones.off"})
   {
@@ -263,7 +263,7 @@ TEMPLATE_TEST_CASE("The cotangent Laplacian: symmetric, PSD, constants in its ke
 }
 
 TEMPLATE_TEST_CASE("The cotangent Laplacian has linear precision on planar meshes", "[dec]",
-                   SD_MESH_TYPES)
+                   SD_MESH_TYPES_WITH_IDS)
 {
   // jittered grids have obtuse triangles and negative weights; linear precision must still hold
   for(double jitter : {0., 0.15, 0.3})
@@ -325,7 +325,7 @@ TEMPLATE_TEST_CASE("Operators do not depend on the mesh data structure", "[dec]"
 // as concurrent tasks on meshes above a few thousand elements (bunny_8k: 4151 vertices, 24k
 // halfedges); every element is computed alone, so one thread and several give the same bits.
 TEMPLATE_TEST_CASE("The connection and its frames do not depend on the number of threads", "[geometry]",
-                   SD_MESH_TYPES)
+                   SD_MESH_TYPES_WITH_IDS)
 {
   const TestType mesh = test::load_mesh<TestType>("bunny_8k.off");
   SDI::Mesh_indices<TestType> idx(mesh);

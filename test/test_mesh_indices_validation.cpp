@@ -68,7 +68,7 @@ SD::Mesh_defect defect_of(const Mesh& mesh)
 
 } // namespace
 
-TEMPLATE_TEST_CASE("Index maps are bijections in the input order", "[indices]", SD_MESH_TYPES)
+TEMPLATE_TEST_CASE("Index maps are bijections in the input order", "[indices]", SD_MESH_TYPES_WITH_IDS)
 {
   for(const std::string name : {"bunny_1k.off", "mech-holes-shark.off", "eight.off"})
   {
@@ -183,7 +183,7 @@ TEST_CASE("A Surface_mesh with removed elements is rejected until garbage is col
   CHECK_NOTHROW(validate_mesh(idx, get(CGAL::vertex_point, mesh)));
 }
 
-TEMPLATE_TEST_CASE("Valid meshes pass validation", "[validation]", SD_MESH_TYPES)
+TEMPLATE_TEST_CASE("Valid meshes pass validation", "[validation]", SD_MESH_TYPES_WITH_IDS)
 {
   for(const std::string name : {"bunny_1k.off", "torus.off", "eight.off", "hemisphere.off",
                                 "mech-holes-shark.off", "bones.off", "blobby_3cc.off",
@@ -196,7 +196,7 @@ TEMPLATE_TEST_CASE("Valid meshes pass validation", "[validation]", SD_MESH_TYPES
   }
 }
 
-TEMPLATE_TEST_CASE("Bad input is rejected with a clear exception", "[validation]", SD_MESH_TYPES)
+TEMPLATE_TEST_CASE("Bad input is rejected with a clear exception", "[validation]", SD_MESH_TYPES_WITH_IDS)
 {
   SECTION("empty mesh")
   {
@@ -263,7 +263,7 @@ TEMPLATE_TEST_CASE("Bad input is rejected with a clear exception", "[validation]
   }
 }
 
-TEMPLATE_TEST_CASE("The mesh generators refuse bad sizes with Invalid_parameter", "[validation][generators]", SD_MESH_TYPES)
+TEMPLATE_TEST_CASE("The mesh generators refuse bad sizes with Invalid_parameter", "[validation][generators]", SD_MESH_TYPES_WITH_IDS)
 {
   TestType mesh;
   CHECK_THROWS_AS(SD::make_torus(mesh, 2, 8), SD::Invalid_parameter);
@@ -277,7 +277,7 @@ TEMPLATE_TEST_CASE("The mesh generators refuse bad sizes with Invalid_parameter"
   CHECK(num_faces(mesh) == 12);
 }
 
-TEMPLATE_TEST_CASE("Error messages name the offending element", "[validation]", SD_MESH_TYPES)
+TEMPLATE_TEST_CASE("Error messages name the offending element", "[validation]", SD_MESH_TYPES_WITH_IDS)
 {
   const TestType mesh = test::load_mesh<TestType>("degtri_four.off");
   try

@@ -111,7 +111,7 @@ bool is_mod2_boundary(const Indices& idx, const SDI::Boundary_loops& loops,
 } // namespace
 
 TEMPLATE_TEST_CASE("Components, Euler characteristic, genus and boundary loops", "[topology]",
-                   SD_MESH_TYPES)
+                   SD_MESH_TYPES_WITH_IDS)
 {
   for(const auto& [name, expected] : cases)
   {
@@ -167,7 +167,7 @@ TEMPLATE_TEST_CASE("Components, Euler characteristic, genus and boundary loops",
 }
 
 TEMPLATE_TEST_CASE("Tree-cotree: trees span, generators are closed, independent and non-contractible",
-                   "[topology]", SD_MESH_TYPES)
+                   "[topology]", SD_MESH_TYPES_WITH_IDS)
 {
   for(const auto& [name, expected] : cases)
   {
@@ -275,7 +275,7 @@ TEMPLATE_TEST_CASE("Generators are non-contractible for CGAL::Surface_mesh_topol
 }
 
 TEMPLATE_TEST_CASE("Spanning-tree integration recovers a function from its differential",
-                   "[topology]", SD_MESH_TYPES)
+                   "[topology]", SD_MESH_TYPES_WITH_IDS)
 {
   for(const std::string name : {"bones.off", "eight.off", "mech-holes-shark.off"})
   {
