@@ -16,6 +16,7 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <random>
@@ -661,6 +662,98 @@ TEMPLATE_TEST_CASE("Trivial connections have exactly the prescribed singularitie
     SD_FOR_EACH_SOLVER(SD_RUN)
 #undef SD_RUN
   }
+}
+
+TEMPLATE_TEST_CASE("Trivial connections move negative singularities out of wide faces", "[direction_fields]",
+                   SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  // a decimated scan (obtuse 40%, angles up to 178.8 degrees), genus 1
+  const Mesh mesh = test::load_mesh<Mesh>("kitten_4k_decimated.off");
+  SD::Trivial_connection<Mesh, Vpm<Mesh>> tc(mesh, SD::parameters::symmetry_order(4));
+  const auto& idx = tc.indices();
+  const std::size_t nf = idx.number_of_faces();
+  // the largest angle of every face, read here from the points
+  std::vector<double> largest(nf, 0.);
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    std::vector<Eigen::Vector3d> x;
+    for(auto v : vertices_around_face(halfedge(idx.face(f), mesh), mesh))
+    {
+      const auto p = get(CGAL::vertex_point, mesh, v);
+      x.emplace_back(p.x(), p.y(), p.z());
+    }
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      const Eigen::Vector3d a = x[(k + 1) % 3] - x[k], b = x[(k + 2) % 3] - x[k];
+      largest[f] = (std::max)(largest[f], std::atan2(a.cross(b).norm(), a.dot(b)));
+    }
+  }
+  auto neighbours = [&](std::size_t f) {
+    std::vector<std::size_t> g;
+    for(auto h : halfedges_around_face(halfedge(idx.face(f), mesh), mesh))
+      g.push_back(idx.index(face(opposite(h, mesh), mesh)));
+    return g;
+  };
+  const double wide = 2. * pi / 3.;
+  // a wide face with a neighbour under 120 degrees (the -1/4 cone's), the narrowest neighbour
+  // (where it must go), and another wide face, not next to it (a +1/4 cone's, which stays)
+  std::size_t a = nf, target = nf, b = nf;
+  for(std::size_t f = 0; f < nf && a == nf; ++f)
+  {
+    if(largest[f] < wide + 0.2)
+      continue;
+    std::size_t t = f;
+    for(std::size_t g : neighbours(f))
+      if(largest[g] < largest[t])
+        t = g;
+    if(largest[t] < wide)
+    {
+      a = f;
+      target = t;
+    }
+  }
+  REQUIRE(a < nf);
+  for(std::size_t f = nf; f-- > 0 && b == nf;)
+    if(largest[f] >= wide && f != a && f != target)
+    {
+      const auto ga = neighbours(a);
+      if(std::find(ga.begin(), ga.end(), f) == ga.end())
+        b = f;
+    }
+  REQUIRE(b < nf);
+  tc.set_index(a, -1);
+  tc.set_index(b, 1); // the indices sum to 4 chi = 0
+  CHECK(tc.move_singularities_from_wide_faces() == 1);
+  CHECK(tc.index(idx.face(a)) == 0);
+  CHECK(tc.index(idx.face(target)) == -1);
+  CHECK(tc.index(idx.face(b)) == 1);
+  // the field has exactly the moved singularities, read from the field itself (not the
+  // least-norm check of check_trivial_connection(): on this scan the local correction of
+  // adjustments near pi applies)
+  {
+    Vector_map<Mesh> field;
+    tc.field(boost::make_assoc_property_map(field));
+    check_unit_tangent(mesh, field);
+    const auto index = indices_of(mesh, field, 4);
+    std::size_t wrong = 0;
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      const int k = f == target ? -1 : (f == b ? 1 : 0);
+      wrong += index.at(idx.face(f)) == double(k) / 4. ? 0 : 1;
+    }
+    CHECK(wrong == 0);
+  }
+  // nothing left to move; a threshold above every angle moves nothing either
+  CHECK(tc.move_singularities_from_wide_faces() == 0);
+  tc.set_index(target, 0);
+  tc.set_index(a, -1);
+  CHECK(tc.move_singularities_from_wide_faces(pi) == 0);
+  CHECK(tc.index(idx.face(a)) == -1);
+  CHECK_THROWS_AS(tc.move_singularities_from_wide_faces(0.), SD::Invalid_parameter);
+  CHECK_THROWS_AS(tc.move_singularities_from_wide_faces(3.5), SD::Invalid_parameter);
+  CHECK_THROWS_AS(tc.move_singularities_from_wide_faces(std::nan("")), SD::Invalid_parameter);
+  CHECK(tc.index(idx.face(a)) == -1); // a refused call changes nothing
 }
 
 TEMPLATE_TEST_CASE("Trivial connections: re-solves, the one-call function, bad sums", "[direction_fields]",

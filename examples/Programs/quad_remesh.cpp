@@ -290,76 +290,6 @@ double edge_length(const Mesh& input, const Options& o)
   return std::sqrt(area / o.target_faces);
 }
 
-// The largest corner angle of face f, in radians.
-double largest_angle(const Mesh& mesh, Mesh::Face_index f)
-{
-  std::vector<Eigen::Vector3d> x;
-  for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
-    x.push_back(eigen(mesh.point(v)));
-  double largest = 0.;
-  for(std::size_t i = 0; i < 3; ++i)
-  {
-    const Eigen::Vector3d a = x[(i + 1) % 3] - x[i], b = x[(i + 2) % 3] - x[i];
-    largest = (std::max)(largest, std::atan2(a.cross(b).norm(), a.dot(b)));
-  }
-  return largest;
-}
-
-// Moves every cone of negative index out of a face with an angle of 120 degrees or more, into the
-// neighbour (without a cone) of the smallest largest angle, and solves the connection again; the
-// number moved. The quads' map around a cone of index -1/4 widens the angles at its branch point by
-// 5/4, and from a point inside a face the opposite edge of an angle A is seen under more than A:
-// past 144 degrees that is a fold no stiffening undoes (measured: a 5998-face decimated kitten
-// stayed folded in one such face, 143.5 degrees, after 10 rounds at every h tried). Where the
-// moved cones admit no trivial connection, they stay (0 moved).
-template <class Connection>
-std::size_t move_negative_cones_from_wide_faces(const Mesh& mesh, Connection& tc)
-{
-  const double wide = 2. * 3.14159265358979323846 / 3.;
-  std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> moves; // from, to
-  for(auto f : faces(mesh))
-  {
-    if(tc.index(f) >= 0 || largest_angle(mesh, f) < wide)
-      continue;
-    Mesh::Face_index best = f;
-    double best_angle = largest_angle(mesh, f);
-    for(auto h : halfedges_around_face(halfedge(f, mesh), mesh))
-    {
-      const auto g = face(opposite(h, mesh), mesh);
-      if(g == Mesh::null_face() || tc.index(g) != 0)
-        continue;
-      if(const double a = largest_angle(mesh, g); a < best_angle)
-      {
-        best = g;
-        best_angle = a;
-      }
-    }
-    if(best != f)
-    {
-      tc.set_index(best, tc.index(f));
-      tc.set_index(f, 0);
-      moves.emplace_back(f, best);
-    }
-  }
-  if(moves.empty())
-    return 0;
-  try
-  {
-    tc.solve();
-    return moves.size();
-  }
-  catch(const SD::Invalid_constraints&)
-  {
-    for(auto m = moves.rbegin(); m != moves.rend(); ++m) // last first: a cone may have moved twice
-    {
-      tc.set_index(m->first, tc.index(m->second));
-      tc.set_index(m->second, 0);
-    }
-    tc.solve();
-    return 0;
-  }
-}
-
 template <class Traits>
 int run_field(const Options& o, Traits traits)
 {
@@ -426,7 +356,7 @@ int run_field(const Options& o, Traits traits)
         const SD::Singularity_separation s = tc.separate_singularities(o.cone_distance * h);
         std::printf("  cones at least %.3g apart (%.3g h): %zu pairs removed, %zu cones moved, %zu close pairs kept\n",
                     o.cone_distance * h, o.cone_distance, s.removed_pairs, s.moved, s.kept_pairs);
-        const std::size_t moved = move_negative_cones_from_wide_faces(mesh, tc);
+        const std::size_t moved = tc.move_singularities_from_wide_faces(); // of -1/4, see the manual
         if(moved > 0)
           std::printf("  %zu cones of -1/4 moved out of faces with an angle of 120 degrees or more\n", moved);
         if(s.removed_pairs + s.moved + moved > 0)

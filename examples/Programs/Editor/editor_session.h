@@ -646,7 +646,7 @@ private:
     else // trivial
     {
       // its singularities: spread by farthest-point sampling (default), or the smoothest field's
-      // (for a cross field moved at least the quads' size h apart, as quad_remesh does)
+      // (for a cross field moved at least the quads' size h apart and out of wide faces, as quad_remesh does)
       const std::string cones = request.contains("cones") ? text_arg(request, "cones") : "spread";
       if(cones != "spread" && cones != "smoothest")
         throw Request_error("\"cones\" = '" + cones + "': choose \"spread\" or \"smoothest\"");
@@ -674,6 +674,7 @@ private:
         if(cones == "smoothest" && order == 4)
         {
           connection->separate_singularities(m_diagonal / m_stripes);
+          connection->move_singularities_from_wide_faces(); // a -1/4 cone there folds the quads' map
           field_singularities.clear();
           for(auto f : faces(*m_mesh))
             if(const int k = connection->index(f); k != 0)

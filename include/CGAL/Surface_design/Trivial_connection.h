@@ -23,6 +23,7 @@
 #include <CGAL/Surface_design/solver_traits.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <optional>
@@ -200,11 +201,20 @@ public:
     m_index.assign(idx.number_of_faces(), 0);
     const auto vpm = internal::class_vertex_point_map<VertexPointMap>(tm, np);
     m_centre.resize(idx.number_of_faces());
+    m_largest_angle.resize(idx.number_of_faces());
     for(std::size_t f = 0; f < m_centre.size(); ++f)
     {
-      m_centre[f].setZero();
+      std::array<Eigen::Vector3d, 3> x;
+      int i = 0;
       for(auto v : vertices_around_face(halfedge(idx.face(f), tm), tm))
-        m_centre[f] += internal::position(vpm, v) / 3.;
+        x[std::size_t(i++)] = internal::position(vpm, v);
+      m_centre[f] = x[0] / 3. + x[1] / 3. + x[2] / 3.; // not (x0 + x1 + x2) / 3, which rounds differently
+      m_largest_angle[f] = 0.;
+      for(std::size_t k = 0; k < 3; ++k)
+      {
+        const Eigen::Vector3d a = x[(k + 1) % 3] - x[k], b = x[(k + 2) % 3] - x[k];
+        m_largest_angle[f] = (std::max)(m_largest_angle[f], std::atan2(a.cross(b).norm(), a.dot(b)));
+      }
     }
   }
 
@@ -272,6 +282,66 @@ public:
     });
     solve();
     return result;
+  }
+
+  /// Moves every singularity of negative index out of a face with an angle of `angle` or more
+  /// (radians) into the adjacent face without a singularity whose largest angle is the smallest,
+  /// if it is smaller, then solves. Field-aligned quads need it: the quads' map around a cone of
+  /// index -k/n widens the angles at its branch point by 1 + k/n, and from inside a face the edge
+  /// opposite an angle A is seen under more than A, so a -1/4 cone in a face with an angle past
+  /// 144 degrees folds the map for good (stiffening cannot undo it). Where the moved singularities
+  /// admit no field, they go back where they were.
+  /// \returns the number of singularities moved (0 if they went back)
+  /// \throws Invalid_parameter if `angle` is not in (0, pi]; Invalid_constraints from `solve()` if
+  ///         the singularities before the move admit no field
+  ///
+  /// Complexity: O(|F|) plus one or two `solve()`.
+  std::size_t move_singularities_from_wide_faces(double angle = 2. * internal::pi / 3.)
+  {
+    if(!std::isfinite(angle) || !(angle > 0.) || angle > internal::pi)
+      throw Invalid_parameter("angle", "must lie in (0, pi], got " + std::to_string(angle));
+    solve();
+    const auto& idx = m_solver.indices();
+    const TriangleMesh& tm = idx.mesh();
+    std::vector<std::pair<std::size_t, std::size_t>> moves; // from, to
+    for(std::size_t f = 0; f < m_index.size(); ++f)
+    {
+      if(m_index[f] >= 0 || m_largest_angle[f] < angle)
+        continue;
+      std::size_t best = f;
+      for(auto h : halfedges_around_face(halfedge(idx.face(f), tm), tm))
+      {
+        const auto g = face(opposite(h, tm), tm);
+        if(g == boost::graph_traits<TriangleMesh>::null_face())
+          continue;
+        const std::size_t gi = idx.index(g);
+        if(m_index[gi] == 0 && m_largest_angle[gi] < m_largest_angle[best])
+          best = gi;
+      }
+      if(best != f)
+      {
+        m_index[best] = m_index[f];
+        m_index[f] = 0;
+        moves.emplace_back(f, best);
+      }
+    }
+    if(moves.empty())
+      return 0;
+    try
+    {
+      solve();
+      return moves.size();
+    }
+    catch(const Invalid_constraints&)
+    {
+      for(auto m = moves.rbegin(); m != moves.rend(); ++m) // last first: a singularity may have moved twice
+      {
+        m_index[m->first] = m_index[m->second];
+        m_index[m->second] = 0;
+      }
+      solve();
+      return 0;
+    }
   }
 
   /// Rotates the whole field by `angle` (radians, in the rescaled angles of the frames); the
@@ -534,6 +604,7 @@ private:
   std::vector<double> m_omega; // n rho wrapped into [-pi, pi)
   std::vector<int> m_offset, m_index;
   std::vector<Eigen::Vector3d> m_centre; // of every face
+  std::vector<double> m_largest_angle;   // of every face, radians
   double m_rotation = 0.;
   bool m_solved = false;
   typename Solver::Solution m_solution;
