@@ -12,6 +12,7 @@
 #include <CGAL/Surface_design/exceptions.h>
 #include <CGAL/Surface_design/internal/Core/angles.h>
 #include <CGAL/Surface_design/internal/Core/discrete_connection.h>
+#include <CGAL/Surface_design/internal/Core/geometry.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/Core/named_parameters.h>
 #include <CGAL/Surface_design/internal/Core/Periodic_one_form_solver.h>
@@ -23,7 +24,6 @@
 #include <CGAL/Surface_design/solver_traits.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstddef>
 #include <optional>
@@ -201,21 +201,20 @@ public:
     m_index.assign(idx.number_of_faces(), 0);
     const auto vpm = internal::class_vertex_point_map<VertexPointMap>(tm, np);
     m_centre.resize(idx.number_of_faces());
-    m_largest_angle.resize(idx.number_of_faces());
     for(std::size_t f = 0; f < m_centre.size(); ++f)
     {
-      std::array<Eigen::Vector3d, 3> x;
-      int i = 0;
+      m_centre[f].setZero();
       for(auto v : vertices_around_face(halfedge(idx.face(f), tm), tm))
-        x[std::size_t(i++)] = internal::position(vpm, v);
-      m_centre[f] = x[0] / 3. + x[1] / 3. + x[2] / 3.; // not (x0 + x1 + x2) / 3, which rounds differently
-      m_largest_angle[f] = 0.;
-      for(std::size_t k = 0; k < 3; ++k)
-      {
-        const Eigen::Vector3d a = x[(k + 1) % 3] - x[k], b = x[(k + 2) % 3] - x[k];
-        m_largest_angle[f] = (std::max)(m_largest_angle[f], std::atan2(a.cross(b).norm(), a.dot(b)));
-      }
+        m_centre[f] += internal::position(vpm, v) / 3.;
     }
+    const std::vector<double> corner = internal::corner_angles(idx, vpm);
+    m_largest_angle.assign(idx.number_of_faces(), 0.);
+    for(std::size_t h = 0; h < corner.size(); ++h)
+      if(!idx.is_border(idx.halfedge(h)))
+      {
+        double& largest = m_largest_angle[idx.index(face(idx.halfedge(h), tm))];
+        largest = (std::max)(largest, corner[h]);
+      }
   }
 
   int symmetry_order() const { return m_n; }
