@@ -6,6 +6,7 @@
 // singularity index on analytic fields, trivial connections (exactly the prescribed
 // singularities, zero holonomy elsewhere, least-norm optimality, re-solves), bad input.
 
+#include <largest_face_angles.h>
 #include <test_support.h>
 
 #include <CGAL/Surface_design/direction_fields.h>
@@ -674,21 +675,7 @@ TEMPLATE_TEST_CASE("Trivial connections move negative singularities out of wide 
   const auto& idx = tc.indices();
   const std::size_t nf = idx.number_of_faces();
   // the largest angle of every face, read here from the points
-  std::vector<double> largest(nf, 0.);
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    std::vector<Eigen::Vector3d> x;
-    for(auto v : vertices_around_face(halfedge(idx.face(f), mesh), mesh))
-    {
-      const auto p = get(CGAL::vertex_point, mesh, v);
-      x.emplace_back(p.x(), p.y(), p.z());
-    }
-    for(std::size_t k = 0; k < 3; ++k)
-    {
-      const Eigen::Vector3d a = x[(k + 1) % 3] - x[k], b = x[(k + 2) % 3] - x[k];
-      largest[f] = (std::max)(largest[f], std::atan2(a.cross(b).norm(), a.dot(b)));
-    }
-  }
+  const std::vector<double> largest = test::largest_face_angles(mesh, idx);
   auto neighbours = [&](std::size_t f) {
     std::vector<std::size_t> g;
     for(auto h : halfedges_around_face(halfedge(idx.face(f), mesh), mesh))

@@ -7,6 +7,7 @@
 // automatic cones, the fold repair and the refusals; the separation of singularities; the
 // conformal cone targets; the extraction's checker on broken layouts.
 
+#include <largest_face_angles.h>
 #include <test_support.h>
 
 #include <CGAL/Surface_design/Branched_stripe_parameterizer.h>
@@ -343,9 +344,17 @@ TEMPLATE_TEST_CASE("Field-aligned quads: a folded map is repaired by stiffening,
   Quad_mesh out;
   SD::make_torus(out, 3, 3, 1., 0.3, false); // something the failure must leave as it is
   const std::size_t before = num_faces(out);
-  CHECK_THROWS_AS(SD::field_aligned_quad_remeshing(mesh, field.map(), out,
-                                                   SD::parameters::stiffening_rounds(0, SD::parameters::target_edge_length(h))),
-                  SD::Remeshing_failure);
+  try
+  {
+    SD::field_aligned_quad_remeshing(mesh, field.map(), out,
+                                     SD::parameters::stiffening_rounds(0, SD::parameters::target_edge_length(h)));
+    FAIL("a folded map without stiffening must throw");
+  }
+  catch(const SD::Remeshing_failure& e)
+  {
+    // no face of this torus has an angle of 120 degrees: the failure blames none
+    CHECK(std::string(e.what()).find("holds a cone of -1/4") == std::string::npos);
+  }
   CHECK(num_faces(out) == before);
   // the visitor sees every extraction: the first map's, then one per round, the last one valid
   {
@@ -436,6 +445,50 @@ TEMPLATE_TEST_CASE("Field-aligned quads: a folded map is repaired by stiffening,
     bsp.set_field(field.map(), 1. / h);
     CHECK_THROWS_AS(bsp.solve_keeping_windings(), SD::Invalid_constraints);
   }
+}
+
+TEMPLATE_TEST_CASE("A cone of -1/4 in a face with an angle past 144 degrees: the failure names the face", "[field_aligned_quads]",
+                   SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  // a decimated scan with angles up to 178.8 degrees, genus 1
+  const Mesh mesh = test::load_mesh<Mesh>("kitten_4k_decimated.off");
+  SD::Trivial_connection<Mesh> tc(mesh, SD::parameters::symmetry_order(4));
+  const auto& idx = tc.indices();
+  const std::size_t nf = idx.number_of_faces();
+  // the largest angle of every face, read here from the points
+  const std::vector<double> largest = test::largest_face_angles(mesh, idx);
+  // the -1/4 cone in the widest face: the map around it widens that angle by 5/4, past 180
+  // degrees, a fold no stiffening undoes; the +1/4 cone in the first face under 90 degrees
+  const std::size_t wide = std::size_t(std::max_element(largest.begin(), largest.end()) - largest.begin());
+  REQUIRE(largest[wide] * 5. / 4. > CGAL_PI);
+  const std::size_t narrow = std::size_t(std::find_if(largest.begin(), largest.end(), [](double a) {
+                                           return a < CGAL_PI / 2.;
+                                         }) - largest.begin());
+  REQUIRE(narrow < nf);
+  tc.set_index(wide, -1);
+  tc.set_index(narrow, 1);
+  tc.solve();
+  Field<Mesh> field{&mesh, {}};
+  tc.field(field.map());
+  const double h = std::sqrt(surface_area(mesh) / 1000.);
+  Quad_mesh out;
+  const std::string degrees = std::to_string(int(std::lround(largest[wide] * 180. / CGAL_PI)));
+  try
+  {
+    SD::field_aligned_quad_remeshing(mesh, field.map(), out,
+                                     SD::parameters::stiffening_rounds(1, SD::parameters::target_edge_length(h)));
+    FAIL("the map around a -1/4 cone in a face of " + degrees + " degrees folds");
+  }
+  catch(const SD::Remeshing_failure& e)
+  {
+    const std::string what = e.what();
+    CHECK(what.find("face " + std::to_string(wide) + " holds a cone of -1/4 and has an angle of " + degrees +
+                    " degrees") != std::string::npos);
+    CHECK(what.find("move_singularities_from_wide_faces") != std::string::npos);
+    CHECK(what.find("face " + std::to_string(narrow) + " holds") == std::string::npos); // a +1/4 cone is not blamed
+  }
+  CHECK(num_faces(out) == 0);
 }
 
 TEST_CASE("Graded stiffening: the ring factor applies to the faces around the given ones", "[field_aligned_quads]")

@@ -293,7 +293,7 @@ for args in "--method" "--method magic" "--target-faces 0" "--target-faces -5" "
             "--method field --singularity -1:1/4" "--method field --singularity 3:1/4 --singularity 3:-1/4" \
             "--method field --singularity 3:1/4 --field smoothest" "--method field --stiffening-rounds 65" \
             "--method field --min 0 --max 5" "--method field --no-spectacles" "--method field --singularity 999999:1/4" \
-            "--method field --singularity 0:1/4"; do
+            "--method field --singularity 0:1/4" "--no-input-remeshing" "--method field --no-input-remeshing 1"; do
   # shellcheck disable=SC2086
   refuse quad_remesh "$E" $args --output "$O/q.off"
 done
@@ -314,6 +314,40 @@ cones=$(sed -n 's/^field-aligned quads (h = [^)]*): \([0-9]*\) cones.*/\1/p' "$W
 if ! grep -q "cones of -1/4 moved out of faces with an angle of 120 degrees or more" "$WORK/stdout" ||
    ! grep -q "100.0% quads" "$WORK/stdout" || [ -z "$cones" ] || ! grep -q "^  $cones irregular vertices" "$WORK/stdout"; then
   echo "FAILED: quad_remesh kitten_4k_decimated.off --method field: $(grep -E "moved|cones|quads|irregular" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
+# where the input's triangles leave the map folded at h and h +- 5% (this decimated kitten at 2000
+# quads), the program remeshes the input isotropically at h and makes the field and the quads
+# again: pure quads whose irregular vertices are the cones, the input's topology, compared with
+# the input itself; with --no-input-remeshing it fails instead (exit 1, no file)
+accept quad_remesh "$DATA/kitten_4k_decimated.off" --method field --target-faces 2000 --output "$O/decimated_remeshed.off"
+cones=$(sed -n 's/^field-aligned quads (h = [^)]*): \([0-9]*\) cones.*/\1/p' "$WORK/stdout")
+if [ "$(grep -c "^  failed: " "$WORK/stdout")" != 3 ] || ! grep -q "^  remeshed input: " "$WORK/stdout" ||
+   ! grep -q "100.0% quads" "$WORK/stdout" || [ -z "$cones" ] || ! grep -q "^  $cones irregular vertices" "$WORK/stdout" ||
+   ! grep -q "(as the input's)" "$WORK/stdout"; then
+  echo "FAILED: quad_remesh kitten_4k_decimated.off --target-faces 2000: $(grep -E "failed|remeshed|cones|quads|irregular" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
+refuse quad_remesh "$DATA/kitten_4k_decimated.off" --method field --target-faces 2000 --no-input-remeshing --output "$O/q.off"
+if grep -q "holds a cone of -1/4" "$WORK/stderr"; then # its cones were moved out of wide faces
+  echo "FAILED: quad_remesh kitten_4k_decimated.off --no-input-remeshing blames a wide face: $(cat "$WORK/stderr")"
+  failures=$((failures + 1))
+fi
+# given cones go, on the remeshed input, into the faces nearest theirs; a failure there says where
+# it happened (here: no vertex-based field has this pair of cones on the remeshed kitten)
+refuse quad_remesh "$DATA/kitten_4k_decimated.off" --method field --singularity 100:1/4 --singularity 2000:-1/4 \
+       --target-faces 2000 --stiffening-rounds 1 --output "$O/q.off"
+if ! grep -q "^  the cone of face 2000 is in face [0-9]* of the remeshed input" "$WORK/stdout" ||
+   ! grep -q "on the remeshed input too: " "$WORK/stderr"; then
+  echo "FAILED: quad_remesh kitten_4k_decimated.off --singularity ... (remeshed): $(grep "remeshed" "$WORK/stdout") $(cat "$WORK/stderr")"
+  failures=$((failures + 1))
+fi
+# a given cone of -1/4 in a face with an angle of 179 degrees: the map folds for good there, and
+# the failure says which face and why
+refuse quad_remesh "$DATA/kitten_4k_decimated.off" --method field --singularity 1549:-1/4 --singularity 100:1/4 \
+       --target-faces 1000 --stiffening-rounds 1 --no-input-remeshing --output "$O/q.off"
+if ! grep -q "face 1549 holds a cone of -1/4 and has an angle of 179 degrees" "$WORK/stderr"; then
+  echo "FAILED: quad_remesh kitten_4k_decimated.off --singularity 1549:-1/4: $(cat "$WORK/stderr")"
   failures=$((failures + 1))
 fi
 # --field auto (the default) takes, of the smoothest and the principal cross field, the one with

@@ -202,6 +202,28 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
           why += ", stopped by the visitor";
         else if(worse)
           why += ", against " + std::to_string(result.initially_folded) + " in the first map: stiffening makes it worse";
+        // a cone of -1/4 in a face with an angle A: the map around it widens A by 5/4, past 180
+        // degrees from 144, a fold no stiffening undoes (see the manual)
+        const std::vector<double> corner = internal::corner_angles(idx, bsp.vertex_point_map());
+        std::size_t wide = 0;
+        for(std::size_t i = 0; i < cones.size(); ++i)
+        {
+          double largest = 0.;
+          for(auto hd : halfedges_around_face(halfedge(idx.face(cones[i].face), bsp.mesh()), bsp.mesh()))
+            largest = (std::max)(largest, corner[idx.index(hd)]);
+          if(cone_index[i] < 0 && largest >= 2. * CGAL_PI / 3.)
+          {
+            if(wide == 0)
+              why += "; face " + std::to_string(cones[i].face) + " holds a cone of -1/4 and has an angle of " +
+                     std::to_string(int(std::lround(largest * 180. / CGAL_PI))) + " degrees, which the map around the "
+                     "cone widens by 5/4";
+            ++wide;
+          }
+        }
+        if(wide > 1)
+          why += " (" + std::to_string(wide) + " such cones)";
+        if(wide > 0)
+          why += ": move such cones into a neighbour (Trivial_connection::move_singularities_from_wide_faces())";
       }
       throw Remeshing_failure("the level-0 lines of the stripes do not form the quad mesh of the field: " + problem +
                               why + ": another edge length often helps)");
@@ -282,7 +304,9 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
 ///         range, a field vector not finite or normal to the surface); Invalid_constraints
 ///         (cones that no quad mesh has: no windings put them all on the lattice);
 ///         Remeshing_failure when the lines do not form such a quad mesh (the map still folds:
-///         another h often helps). `out` is not modified when it throws.
+///         another h often helps; the message names a cone of -1/4 in a face with an angle of
+///         120 degrees or more, see `Trivial_connection::move_singularities_from_wide_faces()`).
+///         `out` is not modified when it throws.
 ///
 /// Complexity: one sparse factorization per round, the extraction O(lines crossing each face²).
 template <class TriangleMesh, class VertexVectorMap, class PolygonMesh,
