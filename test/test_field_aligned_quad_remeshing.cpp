@@ -491,6 +491,56 @@ TEMPLATE_TEST_CASE("A cone of -1/4 in a face with an angle past 144 degrees: the
   CHECK(num_faces(out) == 0);
 }
 
+TEMPLATE_TEST_CASE("The stiffening rounds give up where they make the map worse", "[field_aligned_quads]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
+  // the kitten decimated to 1 998 faces at 1 500 quads, with the cones quad_remesh makes (the
+  // smoothest cross field's, at least h apart, none of -1/4 in a wide face): the folds grow
+  // after the rounds that choose the windings again (measured: 9, 4, 5, 34, 105)
+  const Mesh mesh = test::load_mesh<Mesh>("kitten_2k_decimated.off");
+  const double h = std::sqrt(surface_area(mesh) / 1500.);
+  const auto smoothest = smoothest_cross_field(mesh);
+  const auto raw = cones_of(mesh, smoothest);
+  std::map<face_descriptor, int> every;
+  for(auto f : faces(mesh))
+    every[f] = raw.count(f) ? raw.at(f) : 0;
+  SD::Trivial_connection<Mesh> tc(mesh, SD::parameters::symmetry_order(4));
+  tc.set_indices(boost::make_assoc_property_map(every));
+  tc.separate_singularities(h);
+  tc.move_singularities_from_wide_faces();
+  Field<Mesh> field{&mesh, {}};
+  tc.field(field.map());
+  std::vector<std::size_t> folded;
+  Quad_mesh out;
+  try
+  {
+    SD::field_aligned_quad_remeshing(mesh, field.map(), out,
+                                     SD::parameters::target_edge_length(h).visitor([&](const SD::Field_aligned_quads_round& r) {
+                                       folded.push_back(r.folded_faces);
+                                       return true;
+                                     }));
+    FAIL("the rounds make this map worse and must give up");
+  }
+  catch(const SD::Remeshing_failure& e)
+  {
+    const std::string what = e.what();
+    CHECK(what.find("stiffening makes it worse") != std::string::npos);
+    REQUIRE(!folded.empty());
+    // the rule: the rounds stop at the first map with more than 4 times the first map's folds
+    // and 32 more, and the failure gives both counts
+    const std::size_t limit = 4 * folded.front() + 32;
+    CHECK(folded.back() > limit);
+    for(std::size_t i = 0; i + 1 < folded.size(); ++i)
+      CHECK(folded[i] <= limit);
+    CHECK(folded.size() < 11); // before the 10 rounds ran out
+    CHECK(what.find("the map folds in " + std::to_string(folded.back()) + " faces after " +
+                    std::to_string(folded.size() - 1) + " rounds of stiffening, against " +
+                    std::to_string(folded.front()) + " in the first map") != std::string::npos);
+  }
+  CHECK(num_faces(out) == 0);
+}
+
 TEST_CASE("Graded stiffening: the ring factor applies to the faces around the given ones", "[field_aligned_quads]")
 {
   // stiffen(F, 1, r) is stiffen(R, r) with R the faces sharing a vertex with F (F among them), and
