@@ -268,11 +268,13 @@ int report_and_write(const Mesh& input, const Mesh& quads, const Options& o, pro
   return 0;
 }
 
+long euler_characteristic(const Mesh& m) { return long(num_vertices(m)) - long(num_edges(m)) + long(num_faces(m)); }
+
 // The input mesh, with its counts printed.
 Mesh read_input(const Options& o)
 {
   Mesh input = program::read_mesh(o.input);
-  const long chi = long(num_vertices(input)) - long(num_edges(input)) + long(num_faces(input));
+  const long chi = euler_characteristic(input);
   std::cout << "read " << o.input << ": " << num_vertices(input) << " vertices, " << num_faces(input)
             << " faces, Euler characteristic " << chi << '\n';
   return input;
@@ -432,10 +434,10 @@ Mesh isotropically_remeshed(const Mesh& input, double h)
   CGAL::Polygon_mesh_processing::isotropic_remeshing(faces(remeshed), h, remeshed,
                                                      CGAL::parameters::number_of_iterations(5));
   remeshed.collect_garbage();
-  auto chi = [](const Mesh& m) { return long(num_vertices(m)) - long(num_edges(m)) + long(num_faces(m)); };
-  if(chi(remeshed) != chi(input) || !CGAL::is_closed(remeshed) || !CGAL::is_triangle_mesh(remeshed))
+  const long before = euler_characteristic(input), after = euler_characteristic(remeshed);
+  if(after != before || !CGAL::is_closed(remeshed))
     throw std::runtime_error("the isotropic remeshing of the input changed its topology (Euler characteristic " +
-                             std::to_string(chi(input)) + " -> " + std::to_string(chi(remeshed)) + "); nothing written");
+                             std::to_string(before) + " -> " + std::to_string(after) + "); nothing written");
   return remeshed;
 }
 
@@ -449,17 +451,21 @@ std::map<long, int> carried_cones(const Mesh& from, const Mesh& to, const std::m
       c += eigen(m.point(v)) / 3.;
     return c;
   };
+  std::vector<Eigen::Vector3d> centroids;
+  if(!cones.empty())
+    for(auto g : faces(to))
+      centroids.push_back(centroid(to, g));
   std::map<long, int> carried;
   for(const auto& [f, k] : cones)
   {
     const Eigen::Vector3d c = centroid(from, Mesh::Face_index(Mesh::size_type(f)));
     long nearest = -1;
     double best = std::numeric_limits<double>::infinity();
-    for(auto g : faces(to))
-      if(const double d = (centroid(to, g) - c).squaredNorm(); d < best)
+    for(std::size_t g = 0; g < centroids.size(); ++g)
+      if(const double d = (centroids[g] - c).squaredNorm(); d < best)
       {
         best = d;
-        nearest = long(std::size_t(g));
+        nearest = long(g);
       }
     if(!carried.emplace(nearest, k).second)
       throw std::runtime_error("two of the given cones fall into face " + std::to_string(nearest) +
