@@ -170,6 +170,26 @@ TEST_CASE("Supernodal Cholesky: several right-hand sides, refactorization, share
   const Eigen::MatrixXd x = s.solve(b);
   for(Eigen::Index k = 0; k < 3; ++k)
     REQUIRE((x.col(k) - s.solve(Eigen::VectorXd(b.col(k)))).norm() <= 1e-14 * x.col(k).norm());
+  // the columns are solved in two halves, concurrently with TBB: the same bits within one thread,
+  // and every column (an odd count: halves of 2 and 3) that of its own solve
+  Eigen::MatrixXd five(a.rows(), 5);
+  for(unsigned k = 0; k < 5; ++k)
+    five.col(k) = test::test_vector(a.rows(), k + 11);
+  const Eigen::MatrixXd x5 = s.solve(five);
+  Eigen::MatrixXd x5_one_thread;
+#if defined(CGAL_LINKED_WITH_TBB)
+  tbb::task_arena one_thread(1);
+  one_thread.execute([&] { x5_one_thread = s.solve(five); });
+#else
+  x5_one_thread = s.solve(five);
+#endif
+  REQUIRE(x5 == x5_one_thread);
+  const Real_matrix full = a.selfadjointView<Eigen::Lower>();
+  for(Eigen::Index k = 0; k < 5; ++k)
+  {
+    REQUIRE((x5.col(k) - s.solve(Eigen::VectorXd(five.col(k)))).norm() <= 1e-14 * x5.col(k).norm());
+    REQUIRE((full * x5.col(k) - five.col(k)).norm() <= 1e-12 * full.norm() * x5.col(k).norm());
+  }
 
   // new values on the same pattern: factorize only
   Real_matrix shifted = a;

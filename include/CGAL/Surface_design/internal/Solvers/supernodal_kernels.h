@@ -607,9 +607,28 @@ public:
       solve_one(b, x);
       return;
     }
-    Dense y(n, k), gathered(Eigen::Index(sym.largest_below), k);
-    for(Eigen::Index i = 0; i < n; ++i)
-      y.row(i) = b.row(sym.old_of_new[std::size_t(i)]);
+    // the columns are independent: two halves, solved concurrently (a fixed split, so that the
+    // result does not depend on the number of threads; measured on the 58 harmonic parts of the
+    // kitten's cross-field stripes, 22k unknowns: 70 -> 40 ms on 2 cores)
+    x.derived().resize(n, k);
+    const Eigen::Index half = k / 2;
+    for_each_index(2, m_parallel, [&](std::size_t part) {
+      const Eigen::Index first = part == 0 ? 0 : half, count = part == 0 ? half : k - half;
+      Dense y(n, count);
+      for(Eigen::Index i = 0; i < n; ++i)
+        y.row(i) = b.row(sym.old_of_new[std::size_t(i)]).segment(first, count);
+      solve_permuted(y);
+      for(Eigen::Index i = 0; i < n; ++i)
+        x.row(sym.old_of_new[std::size_t(i)]).segment(first, count) = y.row(i);
+    });
+  }
+
+private:
+  // y = P A^-1 P^T y for the permuted right-hand sides y (one per column), by blocks of columns
+  void solve_permuted(Dense& y) const
+  {
+    const Supernodal_symbolic& sym = *m_symbolic;
+    Dense gathered(Eigen::Index(sym.largest_below), y.cols());
     const int ns = sym.supernode_count();
     for(int s = 0; s < ns; ++s) // L y = b
     {
@@ -640,12 +659,8 @@ public:
       }
       panel.topRows(columns).template triangularView<Eigen::Lower>().adjoint().solveInPlace(block);
     }
-    x.derived().resize(n, k);
-    for(Eigen::Index i = 0; i < n; ++i)
-      x.row(sym.old_of_new[std::size_t(i)]) = y.row(i);
   }
 
-private:
   // One right-hand side (the common case: every re-solve of an edit): column by column through the
   // panels, scattering into (forward) and gathering from (backward) the permuted vector directly.
   // A back-substitution reads the factor once, so it runs at memory speed; per-supernode calls of
