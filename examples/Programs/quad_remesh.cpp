@@ -306,6 +306,9 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
 {
   // the cross field
   program::Stopwatch field_clock;
+  // one ordering and analysis for the systems of this mesh's pattern (the smoothest field's, the
+  // trivial connection's, the stripes' and their stiffening rounds', in 2 x 2 blocks)
+  program::solver_sharing_analysis(traits);
   Mesh mesh = surface; // with the field as a property
   auto field = mesh.add_property_map<Mesh::Vertex_index, program::Vector>("v:cross_field").first;
   auto index = mesh.add_property_map<Mesh::Face_index, int>("f:cone", 0).first;
