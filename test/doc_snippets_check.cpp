@@ -8,6 +8,7 @@
 //
 // usage: doc_snippets_check PROJECT_SOURCE_DIR
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -67,7 +68,8 @@ int main(int argc, char** argv)
       std::size_t j = i + 1;
       for(; j < lines.size() && lines[j].rfind("```", 0) != 0; ++j)
         block.push_back(lines[j]);
-      std::vector<std::string> file = read_lines(root / m[1].str());
+      const std::vector<std::string> whole = read_lines(root / m[1].str());
+      std::vector<std::string> file = whole;
       if(file.empty())
       {
         std::cerr << where << ": " << m[1].str() << " does not exist or is empty\n";
@@ -93,6 +95,14 @@ int main(int argc, char** argv)
         std::cerr << where << ": the block differs from " << m[1].str() << m[2].str() << " at its line " << d + 1
                   << ":\n  manual: " << (d < block.size() ? block[d] : "<end>")
                   << "\n  file:   " << (d < file.size() ? file[d] : "<end>") << "\n";
+        // the usual cause, an edit above the lines: where the block is now, if it is there once
+        std::size_t found = 0, at = 0;
+        for(std::size_t s = 0; m[2].matched && !block.empty() && s + block.size() <= whole.size(); ++s)
+          if(std::equal(block.begin(), block.end(), whole.begin() + std::ptrdiff_t(s)))
+            ++found, at = s;
+        if(found == 1)
+          std::cerr << "  the block is lines " << at + 1 << "-" << at + block.size() << " of the file now: update the "
+                    << "snippet line\n";
         ++failures;
       }
       ++checked;
