@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <limits>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -154,6 +155,12 @@ Components connected_components(const Indices& idx, const Boundary_loops& loops)
 ///   2g cycles are a basis of the first homology of the capped surface.
 ///
 /// Dual nodes are numbered: real faces 0..|F|-1, then virtual face |F| + l for boundary loop l.
+///
+/// With `boundary_first`, the breadth-first primal tree walks a whole boundary loop as soon as it
+/// reaches one of its vertices: T then holds every edge of every boundary loop but one, so that
+/// each virtual face is a leaf of the dual graph (joined through that one edge). A 1-form that
+/// vanishes on T then vanishes on the boundary but for one edge per loop (used where the
+/// boundary must lie on a level line of a stripe function).
 struct Tree_cotree
 {
   // primal tree
@@ -175,7 +182,8 @@ struct Tree_cotree
 };
 
 template <class Indices>
-Tree_cotree tree_cotree(const Indices& idx, const Components& comps, const Boundary_loops& loops)
+Tree_cotree tree_cotree(const Indices& idx, const Components& comps, const Boundary_loops& loops,
+                        bool boundary_first = false)
 {
   const auto& tm = idx.mesh();
   const std::size_t nv = idx.number_of_vertices(), ne = idx.number_of_edges(),
@@ -188,11 +196,42 @@ Tree_cotree tree_cotree(const Indices& idx, const Components& comps, const Bound
   t.edge_in_tree.assign(ne, false);
   t.vertex_order.reserve(nv);
   std::vector<bool> reached(nv, false);
+  // boundary_first: the loop and position of every boundary vertex (as the source of a border
+  // halfedge), and whether its loop was walked
+  std::vector<std::pair<std::size_t, std::size_t>> on_loop;
+  std::vector<bool> walked;
+  if(boundary_first)
+  {
+    on_loop.assign(nv, {npos, 0});
+    walked.assign(loops.size(), false);
+    for(std::size_t l = 0; l < loops.size(); ++l)
+      for(std::size_t k = 0; k < loops.loops[l].size(); ++k)
+        on_loop[idx.source_index(idx.halfedge(loops.loops[l][k]))] = {l, k};
+  }
+  // from v, reached, the rest of its boundary loop along the border halfedges
+  auto walk_loop = [&](std::size_t v) {
+    if(!boundary_first || on_loop[v].first == npos || walked[on_loop[v].first])
+      return;
+    const auto [l, k] = on_loop[v];
+    walked[l] = true;
+    const std::vector<std::size_t>& loop = loops.loops[l];
+    for(std::size_t m = 0; m + 1 < loop.size(); ++m)
+    {
+      const std::size_t h = loop[(k + m) % loop.size()], w = idx.target_index(idx.halfedge(h));
+      if(reached[w]) // a vertex twice on the loop (not on a manifold mesh): its first visit stands
+        continue;
+      reached[w] = true;
+      t.parent_halfedge[w] = h;
+      t.edge_in_tree[idx.edge_index(idx.halfedge(h))] = true;
+      t.vertex_order.push_back(w);
+    }
+  };
   for(const Component_info& c : comps.info)
   {
     std::size_t head = t.vertex_order.size();
     t.vertex_order.push_back(c.root_vertex);
     reached[c.root_vertex] = true;
+    walk_loop(c.root_vertex);
     while(head < t.vertex_order.size())
     {
       const auto v = idx.vertex(t.vertex_order[head++]);
@@ -205,6 +244,7 @@ Tree_cotree tree_cotree(const Indices& idx, const Components& comps, const Bound
         t.parent_halfedge[w] = idx.index(h);
         t.edge_in_tree[idx.edge_index(h)] = true;
         t.vertex_order.push_back(w);
+        walk_loop(w);
       }
     }
   }
@@ -342,13 +382,15 @@ struct Topology
   Tree_cotree tree;
 };
 
+/// With `boundary_first`, the primal tree holds every boundary edge but one per loop (see
+/// `Tree_cotree`).
 template <class Indices>
-Topology compute_topology(const Indices& idx)
+Topology compute_topology(const Indices& idx, bool boundary_first = false)
 {
   Topology t;
   t.boundary = boundary_loops(idx);
   t.components = connected_components(idx, t.boundary);
-  t.tree = tree_cotree(idx, t.components, t.boundary);
+  t.tree = tree_cotree(idx, t.components, t.boundary, boundary_first);
   return t;
 }
 
