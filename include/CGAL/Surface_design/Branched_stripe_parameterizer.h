@@ -33,6 +33,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -149,7 +150,8 @@ public:
     auto idx = std::make_shared<Indices>(tm, np);
     internal::validate_mesh(*idx, m_vpm);
     m_idx = idx;
-    m_topology = std::make_shared<internal::Topology>(internal::compute_topology(*m_idx));
+    // the tree holds every boundary edge but one per loop: boundary loops on level lines need it
+    m_topology = std::make_shared<internal::Topology>(internal::compute_topology(*m_idx, true));
     m_connection = internal::levi_civita_connection(*m_idx, m_vpm);
     m_cot = weighting == Edge_weighting::cotangent ? internal::halfedge_cotangents(*m_idx, m_vpm)
                                                    : std::vector<double>(m_idx->number_of_halfedges(), 1.);
@@ -215,7 +217,7 @@ public:
     {
       // every system its own solver object (copies of Eigen's traits share one factorization)
       solver = std::make_unique<Solver>(m_idx, m_topology, cover, weights(cover), internal::new_solver_like(m_traits),
-                                        "twisted Laplacian of the stripes", spoke_weights(cover));
+                                        "twisted Laplacian of the stripes", spoke_weights(cover), level_sheets(cover));
     }
     catch(...)
     {
@@ -427,6 +429,30 @@ public:
     m_solved = true;
   }
   bool is_solved() const { return m_solved; }
+  /// Whether every boundary loop lies on a level-0 line of the family normal to it (alpha = 0
+  /// modulo 2 pi at its vertices, no stripe crossing it): the field must be normal to the
+  /// boundary for some family (within 45 degrees) on every boundary edge. Factors again when a
+  /// field is set.
+  /// \throws Invalid_constraints where the field runs along the boundary
+  void set_boundary_on_level_lines(bool on)
+  {
+    const bool was = m_boundary_level;
+    m_boundary_level = on;
+    if(!has_field() || was == on)
+      return;
+    try
+    {
+      refactor();
+      m_windings_valid = false;
+    }
+    catch(...)
+    {
+      m_boundary_level = was;
+      throw;
+    }
+  }
+  bool boundary_on_level_lines() const { return m_boundary_level; }
+
   /// Whether `solve()` puts every branch point on the lattice of the stripes: every stripe angle
   /// 0 modulo 2 pi there, so that a line field's stripes run through its branch points and each
   /// cone of a cross field is a crossing of the two families (the condition for their level-0
@@ -746,13 +772,42 @@ private:
   {
     const internal::Direction_field_cover cover = m_solver->cover();
     auto solver = std::make_unique<Solver>(m_idx, m_topology, cover, weights(cover), internal::new_solver_like(m_traits),
-                                           "twisted Laplacian of the stripes", spoke_weights(cover));
+                                           "twisted Laplacian of the stripes", spoke_weights(cover), level_sheets(cover));
     solver->set_lattice_branch_points(m_lattice);
     m_solver = std::move(solver);
     update_omega();
     ++m_factorizations;
     m_relaxation.reset();
     m_solved = false; // the windings stay valid: the same field and indices, other weights
+  }
+
+  // With boundary_on_level_lines(): per boundary edge i -> j (its orientation), the sheet whose
+  // direction at i is within 45 degrees of the edge's normal (bit a of the mask); empty otherwise.
+  std::vector<std::uint8_t> level_sheets(const internal::Direction_field_cover& cover) const
+  {
+    if(!m_boundary_level)
+      return {};
+    std::vector<std::uint8_t> mask(m_idx->number_of_edges(), 0);
+    for(const auto& loop : m_topology->boundary.loops)
+      for(std::size_t h : loop)
+      {
+        const auto hd = m_idx->halfedge(h);
+        const std::size_t e = m_idx->edge_index(hd);
+        const auto oriented = m_idx->oriented_halfedge(e);
+        const std::size_t i = m_idx->source_index(oriented);
+        const double edge_angle = m_connection.frames.angle[m_idx->index(oriented)];
+        for(int a = 0; a < cover.d; ++a)
+        {
+          const double direction = cover.angle[i] + double(a) * internal::two_pi / double(cover.n);
+          if(std::abs(std::sin(direction - edge_angle)) > std::sqrt(0.5))
+            mask[e] = std::uint8_t(mask[e] | (1u << a));
+        }
+        if(mask[e] == 0)
+          throw Invalid_constraints("boundary edge " + std::to_string(e) + ": the field runs along the boundary "
+                                    "there (within 45 degrees), so no level line of its stripes can follow the "
+                                    "boundary; give a field normal to the boundary");
+      }
+    return mask;
   }
 
   // Edge weights with the contributions of branch faces dropped: the cotangent weight keeps the
@@ -961,6 +1016,7 @@ private:
   bool m_uniform = false, m_lattice = false;
   bool m_windings_valid = false; // the last solve's windings hold for the current field and indices
   std::vector<double> m_stiffness; // per face (stiffen()), empty: all 1
+  bool m_boundary_level = false;    // boundary loops on level-0 lines
   bool m_own_analysis_cache = false;
   std::shared_ptr<const Indices> m_idx;
   std::shared_ptr<const internal::Topology> m_topology;

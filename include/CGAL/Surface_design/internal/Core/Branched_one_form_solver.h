@@ -19,6 +19,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -107,10 +108,15 @@ public:
   /// \param weight per edge, with the contributions of branch faces already removed
   /// \param spoke_weight per face, empty or the weights of the three spokes from the corners of a
   ///        branch face to its branch point (see the class documentation); 0 in regular faces
+  /// \param level_sheets per edge, empty or a bit mask of the sheets (in the frame of the edge's
+  ///        source) on which the edge lies on a level-0 line: alpha = 0 (mod 2 pi) at its ends and
+  ///        y = 0 on it (boundary edges only; a loop with one such edge must have them all, and
+  ///        the tree must hold all its edges but one: `compute_topology(idx, true)`)
   Branched_one_form_solver(std::shared_ptr<const Indices> idx, std::shared_ptr<const Topology> topology,
                            const Direction_field_cover& cover, std::vector<double> weight, SolverTraits traits,
-                           const std::string& name, const std::vector<std::array<double, 3>>& spoke_weight = {})
-    : m_idx_ptr(std::move(idx)), m_topology_ptr(std::move(topology)), m_idx(*m_idx_ptr), m_topology(*m_topology_ptr), m_cover(cover), m_weight(std::move(weight)), m_system(std::move(traits), name)
+                           const std::string& name, const std::vector<std::array<double, 3>>& spoke_weight = {},
+                           std::vector<std::uint8_t> level_sheets = {})
+    : m_idx_ptr(std::move(idx)), m_topology_ptr(std::move(topology)), m_idx(*m_idx_ptr), m_topology(*m_topology_ptr), m_cover(cover), m_weight(std::move(weight)), m_system(std::move(traits), name), m_level_sheets(std::move(level_sheets))
   {
     const std::size_t ne = m_idx.number_of_edges();
     m_P.resize(ne);
@@ -122,6 +128,7 @@ public:
     }
     find_twisted_components();
     collect_branch_faces(spoke_weight);
+    collect_level_constraints();
     build_forest();
     factor();
   }
@@ -133,9 +140,17 @@ public:
   /// Whether connected component c has a non-trivial monodromy (then no Stokes condition holds).
   bool is_twisted(std::size_t c) const { return m_twisted[c]; }
   std::size_t number_of_free_directions() const { return m_free.size(); }
+  /// The integer directions of the windings: the free edges' and one per chain of values on a
+  /// level-0 boundary line (its offset, 2 pi times an integer).
+  std::size_t number_of_directions() const { return m_free.size() + m_chain_eta.size(); }
   /// Whether vertex v's values are pinned to 0 (one per piece of the weighted graph whose
   /// transport is trivial): the optimality condition d_P^T W (y - omega) = 0 holds elsewhere.
-  bool is_pinned(std::size_t v) const { return m_pinned[v]; }
+  bool is_pinned(std::size_t v) const
+  {
+    return m_fixed[v * std::size_t(m_cover.d)] && (m_cover.d == 1 || m_fixed[v * std::size_t(m_cover.d) + 1]);
+  }
+  /// Whether value a of vertex v is fixed (a pin, or a vertex on a level-0 boundary line).
+  bool is_fixed(std::size_t v, int a) const { return m_fixed[v * std::size_t(m_cover.d) + std::size_t(a)]; }
 
   /// The targets b_k of the spokes, per face (read in branch faces only), on the face's reference
   /// sheets; 0 until set.
@@ -160,9 +175,9 @@ public:
     Solution s;
     std::vector<Value> ystar = particular_solution(k);
     s.y = optimal_one_form(ystar, omega, &s.alpha);
-    s.free_directions = m_free.size();
+    s.free_directions = number_of_directions();
     const bool lattice = m_lattice && !m_branch.empty();
-    if(!m_free.empty())
+    if(number_of_directions() > 0)
     {
       ensure_harmonic_basis();
       const std::size_t m = m_kept.size();
@@ -216,7 +231,7 @@ public:
     Solution s;
     s.windings = previous.windings;
     s.y = optimal_one_form(s.windings, omega, &s.alpha);
-    s.free_directions = m_free.size();
+    s.free_directions = number_of_directions();
     finish_lattice(s.windings, s.alpha);
     s.energy = energy(s.y, omega);
     return s;
@@ -381,7 +396,7 @@ private:
     std::vector<std::size_t> aux(m_topology.components.size(), npos);
     std::size_t n_aux = 0;
     for(const Branch& b : m_branch)
-      if(aux[b.component] == npos)
+      if(aux[b.component] == npos && !m_level_component[b.component]) // no global shift by pi there
         aux[b.component] = n_aux++;
     const std::vector<Face_index> t0 = branch_curls(ystar);
     std::vector<std::vector<std::uint8_t>> rows;
@@ -394,7 +409,8 @@ private:
         std::vector<std::uint8_t> row(m + n_aux, 0);
         for(std::size_t j = 0; j < m; ++j)
           row[j] = std::uint8_t(branch_parity(b, m_direction_curl[m_kept[j]][b])[Eigen::Index(a)]);
-        row[m + aux[m_branch[b].component]] = 1;
+        if(aux[m_branch[b].component] != npos)
+          row[m + aux[m_branch[b].component]] = 1;
         rows.push_back(std::move(row));
         rhs.push_back(std::uint8_t(q0[Eigen::Index(a)]));
       }
@@ -439,6 +455,8 @@ private:
       const Face_index q = branch_parity(b, t[b]);
       int& s = shift[m_branch[b].component];
       const bool uniform = m_cover.d == 1 || q[0] == q[1];
+      if(m_level_component[m_branch[b].component])
+        s = 0; // the boundary's level lines fix the shift
       if(s == -1 && uniform)
         s = q[0];
       if(!uniform || q[0] != s)
@@ -451,6 +469,132 @@ private:
       if(shift[m_topology.components.vertex_component[v]] == 1)
         for(int a = 0; a < m_cover.d; ++a)
           alpha[v][a] += half;
+  }
+
+  // --- boundary loops on level-0 lines
+
+  // The loops on level lines, the values they fix (alpha = 0 modulo 2 pi), and one integer
+  // direction per chain of such values (linked along the loops' edges): its offset 2 pi N.
+  void collect_level_constraints()
+  {
+    const std::size_t nl = m_topology.boundary.size(), d = std::size_t(m_cover.d), nv = m_idx.number_of_vertices();
+    m_level_loop.assign(nl, false);
+    m_level_component.assign(m_topology.components.size(), false);
+    if(m_level_sheets.empty())
+      return;
+    std::vector<std::size_t> chain(nv * d, npos);
+    std::vector<double> sign(nv * d, 0.);
+    std::vector<std::vector<std::pair<std::size_t, std::size_t>>> link(nv * d); // (value, edge)
+    for(std::size_t l = 0; l < nl; ++l)
+    {
+      const std::vector<std::size_t>& loop = m_topology.boundary.loops[l];
+      std::size_t level = 0, off_tree = 0;
+      for(std::size_t h : loop)
+      {
+        const std::size_t e = m_idx.edge_index(m_idx.halfedge(h));
+        level += m_level_sheets[e] != 0 ? 1 : 0;
+        off_tree += m_topology.tree.edge_in_tree[e] ? 0 : 1;
+      }
+      if(level == 0)
+        continue;
+      if(level != loop.size())
+        throw Invalid_constraints("boundary loop " + std::to_string(l) + ": " + std::to_string(level) + " of its " +
+                                  std::to_string(loop.size()) + " edges lie on a level line, not all");
+      if(off_tree != 1)
+        throw Invalid_constraints("boundary loop " + std::to_string(l) + " on level lines: the spanning tree must hold "
+                                  "all its edges but one (compute_topology(idx, true)), not all but " +
+                                  std::to_string(off_tree));
+      m_level_loop[l] = true;
+      m_level_component[m_topology.components.vertex_component[m_idx.source_index(m_idx.halfedge(loop.front()))]] =
+        true;
+      for(std::size_t h : loop)
+      {
+        const std::size_t e = m_idx.edge_index(m_idx.halfedge(h));
+        const auto [i, j] = m_ends[e];
+        for(std::size_t a = 0; a < d; ++a)
+          if((m_level_sheets[e] >> a) & 1)
+            for(std::size_t b = 0; b < d; ++b)
+              if(m_P[e](Eigen::Index(a), Eigen::Index(b)) != 0.)
+              {
+                link[i * d + a].emplace_back(j * d + b, e);
+                link[j * d + b].emplace_back(i * d + a, e);
+              }
+      }
+    }
+    // chains: breadth-first over the linked values, 1_chain transported so that d_P 1_chain = 0
+    // on the chain's edges (P_e(a, b) s_j = s_i); a chain whose transport around a loop negates
+    // it has no offset (N = -N)
+    std::vector<std::vector<std::size_t>> members;
+    std::vector<bool> consistent;
+    for(std::size_t start = 0; start < nv * d; ++start)
+    {
+      if(link[start].empty() || chain[start] != npos)
+        continue;
+      const std::size_t c = members.size();
+      members.emplace_back(1, start);
+      consistent.push_back(true);
+      chain[start] = c;
+      sign[start] = 1.;
+      for(std::size_t head = 0; head < members[c].size(); ++head)
+      {
+        const std::size_t x = members[c][head];
+        for(const auto& [y, e] : link[x])
+        {
+          // x and y are (i, a) and (j, b) of edge e in some order: s_(i, a) = P_e(a, b) s_(j, b)
+          const std::size_t xv = x / d, yv = y / d;
+          const bool x_is_source = m_ends[e].first == xv && m_ends[e].second == yv;
+          const double p = x_is_source ? m_P[e](Eigen::Index(x % d), Eigen::Index(y % d))
+                                       : m_P[e](Eigen::Index(y % d), Eigen::Index(x % d));
+          const double s_y = p * sign[x]; // p = +-1
+          if(chain[y] == npos)
+          {
+            chain[y] = c;
+            sign[y] = s_y;
+            members[c].push_back(y);
+          }
+          else if(sign[y] != s_y)
+            consistent[c] = false;
+        }
+      }
+    }
+    for(std::size_t x = 0; x < nv * d; ++x)
+      if(chain[x] != npos)
+        m_level_values.emplace_back(x / d, int(x % d));
+    std::vector<std::size_t> direction(members.size(), npos);
+    for(std::size_t c = 0; c < members.size(); ++c)
+      if(consistent[c])
+      {
+        direction[c] = m_chain_eta.size();
+        m_chain_eta.emplace_back();
+      }
+    // 2 pi d_P(1_chain) on every edge with an end in the chain
+    for(std::size_t e = 0; e < m_ends.size(); ++e)
+    {
+      const auto [i, j] = m_ends[e];
+      std::array<std::size_t, 4> touched{npos, npos, npos, npos};
+      for(std::size_t a = 0; a < d; ++a)
+      {
+        touched[a] = chain[i * d + a];
+        touched[2 + a] = chain[j * d + a];
+      }
+      for(std::size_t k = 0; k < 4; ++k)
+      {
+        const std::size_t c = touched[k];
+        if(c == npos || direction[c] == npos || std::find(touched.begin(), touched.begin() + k, c) != touched.begin() + k)
+          continue;
+        Value fi = Value::Zero(), fj = Value::Zero();
+        for(std::size_t a = 0; a < d; ++a)
+        {
+          if(chain[i * d + a] == c)
+            fi[Eigen::Index(a)] = sign[i * d + a];
+          if(chain[j * d + a] == c)
+            fj[Eigen::Index(a)] = sign[j * d + a];
+        }
+        const Value v = two_pi * (m_P[e] * fj - fi);
+        if(!v.isZero())
+          m_chain_eta[direction[c]].emplace_back(e, v);
+      }
+    }
   }
 
   // --- topology of the cover
@@ -504,8 +648,8 @@ private:
           if(t.edge_in_tree[e] || in_forest[e])
             return;
           const std::size_t other = dual_node(m_idx.index(opposite(m_idx.halfedge(h), tm)));
-          if(reached[other])
-            return;
+          if(reached[other] || (other >= nf && m_level_loop[other - nf]))
+            return; // a loop on level lines is no node: its one edge off the tree is fixed (or free)
           reached[other] = true;
           in_forest[e] = true;
           parent_edge_of[other] = e;
@@ -526,10 +670,11 @@ private:
         order.push_back(f);
       }
     for(std::size_t l = 0; l < loops.size(); ++l)
-    {
-      reached[nf + l] = true;
-      order.push_back(nf + l);
-    }
+      if(!m_level_loop[l])
+      {
+        reached[nf + l] = true;
+        order.push_back(nf + l);
+      }
     grow(0);
     m_stokes_component.assign(m_topology.components.size(), false);
     for(std::size_t f = 0; f < nf; ++f)
@@ -538,9 +683,13 @@ private:
         const std::size_t c = m_topology.components.face_component[f];
         if(m_twisted[c])
           throw Invalid_constraints(
-            "connected component " + std::to_string(c) + " is closed, its field has no singularity, and its sheets "
-            "are exchanged around a loop (a twisted field on a torus): stripes on such a field are not supported; "
-            "give the field a pair of singularities");
+            "connected component " + std::to_string(c) + " has no free boundary, its field has no singularity, and "
+            "its sheets are exchanged around a loop (a twisted field on a torus): stripes on such a field are not "
+            "supported; give the field a pair of singularities");
+        if(m_cover.d == 2 && m_level_component[c])
+          throw Invalid_constraints(
+            "connected component " + std::to_string(c) + ": a cross field without singularity whose boundary lies on "
+            "level lines is not supported yet (the two families' windings along the boundary loops are coupled)");
         m_stokes_component[c] = true;
         reached[f] = true;
         const std::size_t head = order.size();
@@ -598,7 +747,8 @@ private:
     free_edges.insert(free_edges.end(), last.begin(), last.end());
     for(std::size_t e : free_edges)
       for(int a = 0; a < m_cover.d; ++a)
-        m_free.push_back({e, a});
+        if(m_level_sheets.empty() || !((m_level_sheets[e] >> a) & 1)) // a level sheet stays 0
+          m_free.push_back({e, a});
   }
 
   // L = d_P^T W d_P on d values per vertex. Its kernel is the f with P_e f_j = f_i on every edge of
@@ -610,7 +760,9 @@ private:
   {
     const int d = m_cover.d;
     const std::size_t nv = m_idx.number_of_vertices();
-    m_pinned.assign(nv, false);
+    m_fixed.assign(nv * std::size_t(d), false);
+    for(const auto& [v, a] : m_level_values)
+      m_fixed[v * std::size_t(d) + std::size_t(a)] = true;
     m_free_offset.assign(nv, Value::Zero());
     {
       std::vector<std::vector<std::pair<std::size_t, std::size_t>>> adjacent(nv); // (vertex, edge)
@@ -651,12 +803,24 @@ private:
         }
         if(!twisted)
         {
-          m_pinned[root] = true;
-          // the stripes of this piece are free up to a constant c transported along it: with
-          // lattice branch points, a generic one (not the pin's 0, where both families' level-0
-          // lines would cross at a mesh vertex, a degenerate crossing for the quads' extraction)
+          // the stripes of this piece are free up to a constant c transported along it (f_v =
+          // G_v^T c), but for the components of c that its values on level lines fix: the root
+          // (G = I) pinned on the others
+          Value free_part(1., 1.);
           for(std::size_t v : queue)
-            m_free_offset[v] = G[v].transpose() * Value(0.5, 0.5);
+            for(int a = 0; a < d; ++a)
+              if(m_fixed[v * std::size_t(d) + std::size_t(a)])
+                for(int b = 0; b < d; ++b)
+                  if(G[v](b, a) != 0.)
+                    free_part[b] = 0.;
+          for(int a = 0; a < d; ++a)
+            if(free_part[a] != 0.)
+              m_fixed[root * std::size_t(d) + std::size_t(a)] = true;
+          // with lattice branch points, a generic constant (not the pin's 0, where both families'
+          // level-0 lines would cross at a mesh vertex, a degenerate crossing for the quads'
+          // extraction)
+          for(std::size_t v : queue)
+            m_free_offset[v] = G[v].transpose() * Value(0.5 * free_part[0], 0.5 * free_part[1]);
         }
       }
     }
@@ -664,7 +828,7 @@ private:
     std::vector<Eigen::Triplet<double>> entries;
     entries.reserve(std::size_t(d * d) * (4 * m_weight.size()) + std::size_t(d) * nv);
     auto add = [&](std::size_t i, std::size_t j, int a, int b, double value) {
-      if(m_pinned[i] || m_pinned[j])
+      if(m_fixed[i * std::size_t(d) + std::size_t(a)] || m_fixed[j * std::size_t(d) + std::size_t(b)])
         value = 0.; // kept in the pattern
       entries.emplace_back(Eigen::Index(i * std::size_t(d) + std::size_t(a)),
                            Eigen::Index(j * std::size_t(d) + std::size_t(b)), value);
@@ -706,11 +870,9 @@ private:
                   add(u, v, a, b, block(a, b));
             }
         }
-    for(std::size_t v = 0; v < nv; ++v)
-      if(m_pinned[v])
-        for(int a = 0; a < d; ++a)
-          entries.emplace_back(Eigen::Index(v * std::size_t(d) + std::size_t(a)),
-                               Eigen::Index(v * std::size_t(d) + std::size_t(a)), 1.);
+    for(std::size_t i = 0; i < nv * std::size_t(d); ++i)
+      if(m_fixed[i])
+        entries.emplace_back(Eigen::Index(i), Eigen::Index(i), 1.);
     const Eigen::Index size = Eigen::Index(nv * std::size_t(d));
     Sparse_matrix L(size, size);
     L.setFromTriplets(entries.begin(), entries.end());
@@ -728,7 +890,7 @@ private:
       if(m_stokes_component[c] && !sum[c].head(m_cover.d).isZero())
       {
         std::ostringstream s;
-        s << "on connected component " << c << " (closed, its field without singularity or twist) the stripe indices"
+        s << "on connected component " << c << " (its field without singularity or twist, no free boundary) the stripe indices"
           << (m_cover.d == 2 ? " of each of the two stripe families" : "") << " must sum to 0 (Stokes' theorem), got "
           << sum[c][0];
         if(m_cover.d == 2)
@@ -774,7 +936,7 @@ private:
   Eigen::VectorXd potential_rhs(const std::vector<Value>& ystar, const std::vector<Value>* omega) const
   {
     const std::size_t d = std::size_t(m_cover.d), ne = ystar.size();
-    Eigen::VectorXd b = Eigen::VectorXd::Zero(Eigen::Index(m_pinned.size() * d));
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(Eigen::Index(m_fixed.size()));
     const std::vector<Value> residual = weighted_residual(ystar, omega);
     for(std::size_t e = 0; e < ne; ++e)
     {
@@ -786,10 +948,9 @@ private:
         b[Eigen::Index(m_ends[e].second * d + a)] += xj[Eigen::Index(a)];
       }
     }
-    for(std::size_t v = 0; v < m_pinned.size(); ++v)
-      if(m_pinned[v])
-        for(std::size_t a = 0; a < d; ++a)
-          b[Eigen::Index(v * d + a)] = 0.;
+    for(std::size_t i = 0; i < m_fixed.size(); ++i)
+      if(m_fixed[i])
+        b[Eigen::Index(i)] = 0.;
     return b;
   }
 
@@ -810,8 +971,8 @@ private:
       y[e] = ystar[e] + m_P[e] * value(m_ends[e].second) - value(m_ends[e].first);
     if(potential)
     {
-      potential->resize(m_pinned.size());
-      for(std::size_t v = 0; v < m_pinned.size(); ++v)
+      potential->resize(m_idx.number_of_vertices());
+      for(std::size_t v = 0; v < potential->size(); ++v)
         (*potential)[v] = value(v);
     }
     return y;
@@ -844,13 +1005,18 @@ private:
       return;
     // built in locals and committed at the end: a failing back-substitution leaves no half basis
     // Every direction and every response is independent of the others: concurrent tasks (TBB).
-    const std::size_t m = m_free.size(), ne = m_idx.number_of_edges();
+    const std::size_t m = number_of_directions(), ne = m_idx.number_of_edges();
     std::vector<Sparse_form> eta(m);
     std::vector<std::vector<Face_index>> curls(m);
     for_each_index(m, true, [&](std::size_t j) {
       std::vector<Value> y(ne, Value::Zero());
-      y[m_free[j].edge][m_free[j].sheet] = two_pi;
-      y = peel(std::move(y), nullptr);
+      if(j < m_free.size())
+      {
+        y[m_free[j].edge][m_free[j].sheet] = two_pi;
+        y = peel(std::move(y), nullptr);
+      }
+      else // exact: no face to meet
+        y = dense_form(m_chain_eta[j - m_free.size()], ne);
       curls[j] = branch_curls(y);
       for(std::size_t e = 0; e < ne; ++e)
         if(!y[e].isZero())
@@ -859,7 +1025,7 @@ private:
     Eigen::MatrixXd full = Eigen::MatrixXd::Zero(Eigen::Index(m), Eigen::Index(m));
     // the responses y(eta_k, 0) and their potentials, kept (for the kept directions) when they
     // fit in the memory budget: a solve whose windings move adds them instead of solving again
-    const std::size_t d = std::size_t(m_cover.d), nv = m_pinned.size();
+    const std::size_t d = std::size_t(m_cover.d), nv = m_idx.number_of_vertices();
     const bool keep_responses = m * (ne + nv) * d <= response_budget;
     std::vector<Response> response(keep_responses ? m : 0);
     // the potentials of the directions solved by blocks of right-hand sides (a supernodal
@@ -964,7 +1130,14 @@ private:
   mutable Factored_system<SolverTraits> m_system;
   std::vector<Eigen::Matrix2d> m_P;
   std::vector<std::pair<std::size_t, std::size_t>> m_ends;
-  std::vector<bool> m_twisted, m_stokes_component, m_pinned;
+  std::vector<bool> m_twisted, m_stokes_component;
+  std::vector<bool> m_fixed; // per value (v d + a): a pin or a value on a level-0 boundary line
+  // level-0 boundary lines: the sheets per edge, the loops and components they constrain, the
+  // values they fix, and the sparse integer directions 2 pi d_P(1_chain) of their chains
+  std::vector<std::uint8_t> m_level_sheets;
+  std::vector<bool> m_level_loop, m_level_component;
+  std::vector<std::pair<std::size_t, int>> m_level_values;
+  std::vector<Sparse_form> m_chain_eta;
   std::vector<Value> m_free_offset; // per vertex of an untwisted piece: its generic lattice offset
   std::vector<Peel_step> m_peel;
   std::vector<Peel_other> m_peel_others;
