@@ -22,6 +22,7 @@
 #include <CGAL/Surface_design/internal/Field_aligned_parameterization/stripe_interpolation.h>
 #include <CGAL/Surface_design/internal/Field_aligned_parameterization/stripe_isolines.h>
 #include <CGAL/Surface_design/internal/Field_aligned_parameterization/stripe_relaxation.h>
+#include <CGAL/Surface_design/internal/Field_aligned_parameterization/stripe_weights.h>
 #include <CGAL/Surface_design/parameters.h>
 #include <CGAL/Surface_design/solver_traits.h>
 
@@ -781,121 +782,30 @@ private:
     m_solved = false; // the windings stay valid: the same field and indices, other weights
   }
 
-  // With boundary_on_level_lines(): per boundary edge i -> j (its orientation), the sheet whose
-  // direction at i is within 45 degrees of the edge's normal (bit a of the mask); empty otherwise.
+  // With boundary_on_level_lines(): the sheets normal to the boundary (cover_constraints.h)
   std::vector<std::uint8_t> level_sheets(const internal::Direction_field_cover& cover) const
   {
-    if(!m_boundary_level)
-      return {};
-    std::vector<std::uint8_t> mask(m_idx->number_of_edges(), 0);
-    for(const auto& loop : m_topology->boundary.loops)
-      for(std::size_t h : loop)
-      {
-        const auto hd = m_idx->halfedge(h);
-        const std::size_t e = m_idx->edge_index(hd);
-        const auto oriented = m_idx->oriented_halfedge(e);
-        const std::size_t i = m_idx->source_index(oriented);
-        const double edge_angle = m_connection.frames.angle[m_idx->index(oriented)];
-        for(int a = 0; a < cover.d; ++a)
-        {
-          const double direction = cover.angle[i] + double(a) * internal::two_pi / double(cover.n);
-          if(std::abs(std::sin(direction - edge_angle)) > std::sqrt(0.5))
-            mask[e] = std::uint8_t(mask[e] | (1u << a));
-        }
-        if(mask[e] == 0)
-          throw Invalid_constraints("boundary edge " + std::to_string(e) + ": the field runs along the boundary "
-                                    "there (within 45 degrees), so no level line of its stripes can follow the "
-                                    "boundary; give a field normal to the boundary");
-      }
-    return mask;
+    return m_boundary_level ? internal::boundary_normal_sheets(*m_idx, *m_topology, m_connection.frames, cover)
+                            : std::vector<std::uint8_t>();
   }
 
-  // Edge weights with the contributions of branch faces dropped: the cotangent weight keeps the
-  // halves of its regular faces, the uniform weight 1 the share of its faces that are regular.
+  // The stripes' weights (stripe_weights.h): per edge, and per branch face its spokes'
   std::vector<double> weights(const internal::Direction_field_cover& cover) const
   {
-    std::vector<double> w(m_idx->number_of_edges(), 0.);
-    for(std::size_t e = 0; e < w.size(); ++e)
-    {
-      const auto h = m_idx->oriented_halfedge(e);
-      int faces = 0;
-      double regular = 0.; // the stiffness of the regular faces
-      for(const auto g : {h, opposite(h, m_tm)})
-        if(!m_idx->is_border(g))
-        {
-          ++faces;
-          const std::size_t f = m_idx->index(face(g, m_tm));
-          if(cover.regular[f])
-          {
-            regular += stiffness(f);
-            w[e] += 0.5 * stiffness(f) * m_cot[m_idx->index(g)];
-          }
-          else if(m_lattice && !m_uniform)
-            w[e] += 0.5 * stiffness(f) * (std::max)(0., sub_triangle_cotangents(f, g)[0]);
-        }
-      if(m_uniform)
-        w[e] = regular / double(faces);
-    }
-    return w;
+    return internal::stripe_edge_weights(*m_idx, m_vpm, cover, m_cot, m_stiffness, m_lattice, m_uniform);
   }
-
-  // The corners of face f, in the order source(h), target(h), target(next(h)) for h = halfedge(f).
-  std::array<Eigen::Vector3d, 3> corners(std::size_t f) const
+  std::vector<std::array<double, 3>> spoke_weights(const internal::Direction_field_cover& cover) const
   {
-    // (vertices_around_face() starts at target(h): not this order)
-    const auto h = halfedge(m_idx->face(f), m_tm);
-    return {internal::position(m_vpm, source(h, m_tm)), internal::position(m_vpm, target(h, m_tm)),
-            internal::position(m_vpm, target(next(h, m_tm), m_tm))};
+    return internal::stripe_spoke_weights(*m_idx, m_vpm, cover, m_stiffness, m_lattice, m_uniform);
   }
+  std::array<Eigen::Vector3d, 3> corners(std::size_t f) const { return internal::face_corners(*m_idx, m_vpm, f); }
   std::array<double, 3> branch_point_coordinates(std::size_t f) const
   {
     return internal::branch_point_barycentric(corners(f));
   }
   Eigen::Vector3d branch_point_position(std::size_t f) const
   {
-    const auto x = corners(f);
-    const auto o = branch_point_coordinates(f);
-    return o[0] * x[0] + o[1] * x[1] + o[2] * x[2];
-  }
-
-  // The cotangents in the triangle (source(h), target(h), o) of face f, o its branch point: at o,
-  // at source(h), at target(h).
-  std::array<double, 3> sub_triangle_cotangents(std::size_t f, halfedge_descriptor h) const
-  {
-    const Eigen::Vector3d o = branch_point_position(f);
-    const Eigen::Vector3d a = internal::position(m_vpm, source(h, m_tm)), b = internal::position(m_vpm, target(h, m_tm));
-    auto cot = [](const Eigen::Vector3d& x, const Eigen::Vector3d& y) { return x.dot(y) / x.cross(y).norm(); };
-    return {cot(a - o, b - o), cot(b - a, o - a), cot(a - b, o - b)};
-  }
-
-  // With branch points on the lattice: the weights of the spokes from the corners of every branch
-  // face to its branch point o (the cotangent weights of the triangles (c_k, c_k+1, o): spoke k is
-  // opposite corner k+1 in one of them and corner k-1 in the other; at least 0), in the order of
-  // the corners (source(h), target(h), target(next(h)) for h = halfedge(f)); empty otherwise.
-  std::vector<std::array<double, 3>> spoke_weights(const internal::Direction_field_cover& cover) const
-  {
-    if(!m_lattice)
-      return {};
-    std::vector<std::array<double, 3>> w(m_idx->number_of_faces(), {0., 0., 0.});
-    for(std::size_t f = 0; f < w.size(); ++f)
-    {
-      if(cover.regular[f])
-        continue;
-      int k = 0;
-      for(auto h : halfedges_around_face(halfedge(m_idx->face(f), m_tm), m_tm))
-      {
-        // the triangle (c_k, c_k+1, o): its angle at c_k+1 is opposite spoke k, at c_k opposite spoke k+1
-        const std::array<double, 3> c = m_uniform ? std::array<double, 3>{1., 1., 1.} : sub_triangle_cotangents(f, h);
-        w[f][std::size_t(k)] += 0.5 * c[2];
-        w[f][std::size_t((k + 1) % 3)] += 0.5 * c[1];
-        ++k;
-      }
-      for(double& x : w[f])
-        x = (std::max)(0., x);
-      for(double& x : w[f])
-        x *= stiffness(f);
-    }
-    return w;
+    return internal::branch_point_position(*m_idx, m_vpm, f);
   }
 
   // omega per edge and sheet: the field of sheet a at i and of sheet a + r at j integrated along

@@ -9,6 +9,7 @@
 
 #include <CGAL/Surface_design/exceptions.h>
 #include <CGAL/Surface_design/internal/Core/angles.h>
+#include <CGAL/Surface_design/internal/Core/cover_constraints.h>
 #include <CGAL/Surface_design/internal/Core/direction_field_cover.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/Core/topology.h>
@@ -471,130 +472,14 @@ private:
           alpha[v][a] += half;
   }
 
-  // --- boundary loops on level-0 lines
-
-  // The loops on level lines, the values they fix (alpha = 0 modulo 2 pi), and one integer
-  // direction per chain of such values (linked along the loops' edges): its offset 2 pi N.
+  // --- boundary loops on level-0 lines (cover_constraints.h)
   void collect_level_constraints()
   {
-    const std::size_t nl = m_topology.boundary.size(), d = std::size_t(m_cover.d), nv = m_idx.number_of_vertices();
-    m_level_loop.assign(nl, false);
-    m_level_component.assign(m_topology.components.size(), false);
-    if(m_level_sheets.empty())
-      return;
-    std::vector<std::size_t> chain(nv * d, npos);
-    std::vector<double> sign(nv * d, 0.);
-    std::vector<std::vector<std::pair<std::size_t, std::size_t>>> link(nv * d); // (value, edge)
-    for(std::size_t l = 0; l < nl; ++l)
-    {
-      const std::vector<std::size_t>& loop = m_topology.boundary.loops[l];
-      std::size_t level = 0, off_tree = 0;
-      for(std::size_t h : loop)
-      {
-        const std::size_t e = m_idx.edge_index(m_idx.halfedge(h));
-        level += m_level_sheets[e] != 0 ? 1 : 0;
-        off_tree += m_topology.tree.edge_in_tree[e] ? 0 : 1;
-      }
-      if(level == 0)
-        continue;
-      if(level != loop.size())
-        throw Invalid_constraints("boundary loop " + std::to_string(l) + ": " + std::to_string(level) + " of its " +
-                                  std::to_string(loop.size()) + " edges lie on a level line, not all");
-      if(off_tree != 1)
-        throw Invalid_constraints("boundary loop " + std::to_string(l) + " on level lines: the spanning tree must hold "
-                                  "all its edges but one (compute_topology(idx, true)), not all but " +
-                                  std::to_string(off_tree));
-      m_level_loop[l] = true;
-      m_level_component[m_topology.components.vertex_component[m_idx.source_index(m_idx.halfedge(loop.front()))]] =
-        true;
-      for(std::size_t h : loop)
-      {
-        const std::size_t e = m_idx.edge_index(m_idx.halfedge(h));
-        const auto [i, j] = m_ends[e];
-        for(std::size_t a = 0; a < d; ++a)
-          if((m_level_sheets[e] >> a) & 1)
-            for(std::size_t b = 0; b < d; ++b)
-              if(m_P[e](Eigen::Index(a), Eigen::Index(b)) != 0.)
-              {
-                link[i * d + a].emplace_back(j * d + b, e);
-                link[j * d + b].emplace_back(i * d + a, e);
-              }
-      }
-    }
-    // chains: breadth-first over the linked values, 1_chain transported so that d_P 1_chain = 0
-    // on the chain's edges (P_e(a, b) s_j = s_i); a chain whose transport around a loop negates
-    // it has no offset (N = -N)
-    std::vector<std::vector<std::size_t>> members;
-    std::vector<bool> consistent;
-    for(std::size_t start = 0; start < nv * d; ++start)
-    {
-      if(link[start].empty() || chain[start] != npos)
-        continue;
-      const std::size_t c = members.size();
-      members.emplace_back(1, start);
-      consistent.push_back(true);
-      chain[start] = c;
-      sign[start] = 1.;
-      for(std::size_t head = 0; head < members[c].size(); ++head)
-      {
-        const std::size_t x = members[c][head];
-        for(const auto& [y, e] : link[x])
-        {
-          // x and y are (i, a) and (j, b) of edge e in some order: s_(i, a) = P_e(a, b) s_(j, b)
-          const std::size_t xv = x / d, yv = y / d;
-          const bool x_is_source = m_ends[e].first == xv && m_ends[e].second == yv;
-          const double p = x_is_source ? m_P[e](Eigen::Index(x % d), Eigen::Index(y % d))
-                                       : m_P[e](Eigen::Index(y % d), Eigen::Index(x % d));
-          const double s_y = p * sign[x]; // p = +-1
-          if(chain[y] == npos)
-          {
-            chain[y] = c;
-            sign[y] = s_y;
-            members[c].push_back(y);
-          }
-          else if(sign[y] != s_y)
-            consistent[c] = false;
-        }
-      }
-    }
-    for(std::size_t x = 0; x < nv * d; ++x)
-      if(chain[x] != npos)
-        m_level_values.emplace_back(x / d, int(x % d));
-    std::vector<std::size_t> direction(members.size(), npos);
-    for(std::size_t c = 0; c < members.size(); ++c)
-      if(consistent[c])
-      {
-        direction[c] = m_chain_eta.size();
-        m_chain_eta.emplace_back();
-      }
-    // 2 pi d_P(1_chain) on every edge with an end in the chain
-    for(std::size_t e = 0; e < m_ends.size(); ++e)
-    {
-      const auto [i, j] = m_ends[e];
-      std::array<std::size_t, 4> touched{npos, npos, npos, npos};
-      for(std::size_t a = 0; a < d; ++a)
-      {
-        touched[a] = chain[i * d + a];
-        touched[2 + a] = chain[j * d + a];
-      }
-      for(std::size_t k = 0; k < 4; ++k)
-      {
-        const std::size_t c = touched[k];
-        if(c == npos || direction[c] == npos || std::find(touched.begin(), touched.begin() + k, c) != touched.begin() + k)
-          continue;
-        Value fi = Value::Zero(), fj = Value::Zero();
-        for(std::size_t a = 0; a < d; ++a)
-        {
-          if(chain[i * d + a] == c)
-            fi[Eigen::Index(a)] = sign[i * d + a];
-          if(chain[j * d + a] == c)
-            fj[Eigen::Index(a)] = sign[j * d + a];
-        }
-        const Value v = two_pi * (m_P[e] * fj - fi);
-        if(!v.isZero())
-          m_chain_eta[direction[c]].emplace_back(e, v);
-      }
-    }
+    Boundary_level_lines l = boundary_level_lines(m_idx, m_topology, m_P, m_ends, m_level_sheets, m_cover.d);
+    m_level_loop = std::move(l.loop);
+    m_level_component = std::move(l.component);
+    m_level_values = std::move(l.values);
+    m_chain_eta = std::move(l.chain_eta);
   }
 
   // --- topology of the cover
@@ -763,67 +648,7 @@ private:
     m_fixed.assign(nv * std::size_t(d), false);
     for(const auto& [v, a] : m_level_values)
       m_fixed[v * std::size_t(d) + std::size_t(a)] = true;
-    m_free_offset.assign(nv, Value::Zero());
-    {
-      std::vector<std::vector<std::pair<std::size_t, std::size_t>>> adjacent(nv); // (vertex, edge)
-      for(std::size_t e = 0; e < m_weight.size(); ++e)
-        if(m_weight[e] != 0.)
-        {
-          adjacent[m_ends[e].first].emplace_back(m_ends[e].second, e);
-          adjacent[m_ends[e].second].emplace_back(m_ends[e].first, e);
-        }
-      // breadth-first over each piece, G_v the transport from its root; an edge (i -> j) closes a
-      // loop with transport G_i P_e G_j^T
-      std::vector<Eigen::Matrix2d> G(nv, Eigen::Matrix2d::Identity());
-      std::vector<bool> reached(nv, false);
-      std::vector<std::size_t> queue;
-      for(std::size_t root = 0; root < nv; ++root)
-      {
-        if(reached[root])
-          continue;
-        reached[root] = true;
-        queue.assign(1, root);
-        bool twisted = false;
-        for(std::size_t head = 0; head < queue.size(); ++head)
-        {
-          const std::size_t v = queue[head];
-          for(const auto& [w, e] : adjacent[v])
-          {
-            // the transition from v to w along e
-            const Eigen::Matrix2d P = m_ends[e].first == v ? m_P[e] : Eigen::Matrix2d(m_P[e].transpose());
-            if(!reached[w])
-            {
-              reached[w] = true;
-              G[w] = G[v] * P;
-              queue.push_back(w);
-            }
-            else if(!(G[v] * P * G[w].transpose() - Eigen::Matrix2d::Identity()).isZero(1e-12))
-              twisted = true;
-          }
-        }
-        if(!twisted)
-        {
-          // the stripes of this piece are free up to a constant c transported along it (f_v =
-          // G_v^T c), but for the components of c that its values on level lines fix: the root
-          // (G = I) pinned on the others
-          Value free_part(1., 1.);
-          for(std::size_t v : queue)
-            for(int a = 0; a < d; ++a)
-              if(m_fixed[v * std::size_t(d) + std::size_t(a)])
-                for(int b = 0; b < d; ++b)
-                  if(G[v](b, a) != 0.)
-                    free_part[b] = 0.;
-          for(int a = 0; a < d; ++a)
-            if(free_part[a] != 0.)
-              m_fixed[root * std::size_t(d) + std::size_t(a)] = true;
-          // with lattice branch points, a generic constant (not the pin's 0, where both families'
-          // level-0 lines would cross at a mesh vertex, a degenerate crossing for the quads'
-          // extraction)
-          for(std::size_t v : queue)
-            m_free_offset[v] = G[v].transpose() * Value(0.5 * free_part[0], 0.5 * free_part[1]);
-        }
-      }
-    }
+    m_free_offset = pin_untwisted_pieces(m_weight, m_P, m_ends, d, m_fixed); // cover_constraints.h
 
     std::vector<Eigen::Triplet<double>> entries;
     entries.reserve(std::size_t(d * d) * (4 * m_weight.size()) + std::size_t(d) * nv);

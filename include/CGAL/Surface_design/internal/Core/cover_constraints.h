@@ -1,0 +1,284 @@
+// Copyright (c) 2026 The CGAL Surface Design authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The values of the stripe problem on a direction field's cover that are fixed rather than solved:
+// boundary loops on level-0 lines (their values, and one integer offset per chain of them) and
+// the pins of the pieces whose transport is trivial.
+
+#ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_COVER_CONSTRAINTS_H
+#define CGAL_SURFACE_DESIGN_INTERNAL_CORE_COVER_CONSTRAINTS_H
+
+#include <CGAL/Surface_design/exceptions.h>
+#include <CGAL/Surface_design/internal/Core/angles.h>
+#include <CGAL/Surface_design/internal/Core/direction_field_cover.h>
+#include <CGAL/Surface_design/internal/Core/vertex_frames.h>
+#include <CGAL/Surface_design/internal/Core/topology.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_design {
+namespace internal {
+
+/// Boundary loops on level-0 lines of the stripes (`Branched_one_form_solver`): the loops and
+/// components they constrain, the values they fix (vertex, sheet: alpha = 0 modulo 2 pi), and one
+/// integer direction per chain of such values linked along the loops' edges, 2 pi d_P(1_chain)
+/// (sparse, per edge): the chain's offset 2 pi N. A chain whose transport around a loop negates
+/// it has no offset (N = -N).
+struct Boundary_level_lines
+{
+  std::vector<bool> loop, component;
+  std::vector<std::pair<std::size_t, int>> values;
+  std::vector<std::vector<std::pair<std::size_t, Eigen::Vector2d>>> chain_eta;
+};
+
+/// `level_sheets`: per edge, empty or the bit mask of its sheets (in the frame of its source,
+/// `ends[e].first`) on a level line; P the sheet transitions, d the values per vertex.
+/// \throws Invalid_constraints for a loop with some but not all edges on level lines, or whose
+///         edges the tree does not all hold but one
+template <class Indices>
+Boundary_level_lines boundary_level_lines(const Indices& idx, const Topology& topology,
+                                          const std::vector<Eigen::Matrix2d>& P,
+                                          const std::vector<std::pair<std::size_t, std::size_t>>& ends,
+                                          const std::vector<std::uint8_t>& level_sheets, int d_values)
+{
+  Boundary_level_lines out;
+  const std::size_t nl = topology.boundary.size(), d = std::size_t(d_values), nv = idx.number_of_vertices();
+  out.loop.assign(nl, false);
+  out.component.assign(topology.components.size(), false);
+  if(level_sheets.empty())
+    return out;
+  std::vector<std::size_t> chain(nv * d, npos);
+  std::vector<double> sign(nv * d, 0.);
+  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> link(nv * d); // (value, edge)
+  for(std::size_t l = 0; l < nl; ++l)
+  {
+    const std::vector<std::size_t>& loop = topology.boundary.loops[l];
+    std::size_t level = 0, off_tree = 0;
+    for(std::size_t h : loop)
+    {
+      const std::size_t e = idx.edge_index(idx.halfedge(h));
+      level += level_sheets[e] != 0 ? 1 : 0;
+      off_tree += topology.tree.edge_in_tree[e] ? 0 : 1;
+    }
+    if(level == 0)
+      continue;
+    if(level != loop.size())
+      throw Invalid_constraints("boundary loop " + std::to_string(l) + ": " + std::to_string(level) + " of its " +
+                                std::to_string(loop.size()) + " edges lie on a level line, not all");
+    if(off_tree != 1)
+      throw Invalid_constraints("boundary loop " + std::to_string(l) + " on level lines: the spanning tree must hold "
+                                "all its edges but one (compute_topology(idx, true)), not all but " +
+                                std::to_string(off_tree));
+    out.loop[l] = true;
+    out.component[topology.components.vertex_component[idx.source_index(idx.halfedge(loop.front()))]] =
+      true;
+    for(std::size_t h : loop)
+    {
+      const std::size_t e = idx.edge_index(idx.halfedge(h));
+      const auto [i, j] = ends[e];
+      for(std::size_t a = 0; a < d; ++a)
+        if((level_sheets[e] >> a) & 1)
+          for(std::size_t b = 0; b < d; ++b)
+            if(P[e](Eigen::Index(a), Eigen::Index(b)) != 0.)
+            {
+              link[i * d + a].emplace_back(j * d + b, e);
+              link[j * d + b].emplace_back(i * d + a, e);
+            }
+    }
+  }
+  // chains: breadth-first over the linked values, 1_chain transported so that d_P 1_chain = 0
+  // on the chain's edges (P_e(a, b) s_j = s_i); a chain whose transport around a loop negates
+  // it has no offset (N = -N)
+  std::vector<std::vector<std::size_t>> members;
+  std::vector<bool> consistent;
+  for(std::size_t start = 0; start < nv * d; ++start)
+  {
+    if(link[start].empty() || chain[start] != npos)
+      continue;
+    const std::size_t c = members.size();
+    members.emplace_back(1, start);
+    consistent.push_back(true);
+    chain[start] = c;
+    sign[start] = 1.;
+    for(std::size_t head = 0; head < members[c].size(); ++head)
+    {
+      const std::size_t x = members[c][head];
+      for(const auto& [y, e] : link[x])
+      {
+        // x and y are (i, a) and (j, b) of edge e in some order: s_(i, a) = P_e(a, b) s_(j, b)
+        const std::size_t xv = x / d, yv = y / d;
+        const bool x_is_source = ends[e].first == xv && ends[e].second == yv;
+        const double p = x_is_source ? P[e](Eigen::Index(x % d), Eigen::Index(y % d))
+                                     : P[e](Eigen::Index(y % d), Eigen::Index(x % d));
+        const double s_y = p * sign[x]; // p = +-1
+        if(chain[y] == npos)
+        {
+          chain[y] = c;
+          sign[y] = s_y;
+          members[c].push_back(y);
+        }
+        else if(sign[y] != s_y)
+          consistent[c] = false;
+      }
+    }
+  }
+  for(std::size_t x = 0; x < nv * d; ++x)
+    if(chain[x] != npos)
+      out.values.emplace_back(x / d, int(x % d));
+  std::vector<std::size_t> direction(members.size(), npos);
+  for(std::size_t c = 0; c < members.size(); ++c)
+    if(consistent[c])
+    {
+      direction[c] = out.chain_eta.size();
+      out.chain_eta.emplace_back();
+    }
+  // 2 pi d_P(1_chain) on every edge with an end in the chain
+  for(std::size_t e = 0; e < ends.size(); ++e)
+  {
+    const auto [i, j] = ends[e];
+    std::array<std::size_t, 4> touched{npos, npos, npos, npos};
+    for(std::size_t a = 0; a < d; ++a)
+    {
+      touched[a] = chain[i * d + a];
+      touched[2 + a] = chain[j * d + a];
+    }
+    for(std::size_t k = 0; k < 4; ++k)
+    {
+      const std::size_t c = touched[k];
+      if(c == npos || direction[c] == npos || std::find(touched.begin(), touched.begin() + k, c) != touched.begin() + k)
+        continue;
+      Eigen::Vector2d fi = Eigen::Vector2d::Zero(), fj = Eigen::Vector2d::Zero();
+      for(std::size_t a = 0; a < d; ++a)
+      {
+        if(chain[i * d + a] == c)
+          fi[Eigen::Index(a)] = sign[i * d + a];
+        if(chain[j * d + a] == c)
+          fj[Eigen::Index(a)] = sign[j * d + a];
+      }
+      const Eigen::Vector2d v = two_pi * (P[e] * fj - fi);
+      if(!v.isZero())
+        out.chain_eta[direction[c]].emplace_back(e, v);
+    }
+  }
+  return out;
+}
+
+/// Per boundary edge i -> j (its orientation), the bit mask of the sheets whose direction at i is
+/// within 45 degrees of the edge's normal: the sheets whose level lines can follow the boundary.
+/// \throws Invalid_constraints where no sheet is (the field runs along the boundary)
+template <class Indices>
+std::vector<std::uint8_t> boundary_normal_sheets(const Indices& idx, const Topology& topology,
+                                                 const Vertex_frames& frames, const Direction_field_cover& cover)
+{
+  std::vector<std::uint8_t> mask(idx.number_of_edges(), 0);
+  for(const auto& loop : topology.boundary.loops)
+    for(std::size_t h : loop)
+    {
+      const std::size_t e = idx.edge_index(idx.halfedge(h));
+      const auto oriented = idx.oriented_halfedge(e);
+      const double edge_angle = frames.angle[idx.index(oriented)];
+      for(int a = 0; a < cover.d; ++a)
+      {
+        const double direction = cover.angle[idx.source_index(oriented)] + double(a) * two_pi / double(cover.n);
+        if(std::abs(std::sin(direction - edge_angle)) > std::sqrt(0.5))
+          mask[e] = std::uint8_t(mask[e] | (1u << a));
+      }
+      if(mask[e] == 0)
+        throw Invalid_constraints("boundary edge " + std::to_string(e) + ": the field runs along the boundary there "
+                                  "(within 45 degrees), so no level line of its stripes can follow the boundary; "
+                                  "give a field normal to the boundary");
+    }
+  return mask;
+}
+
+/// Pins one value per free component of every piece of the graph of edges of non-zero weight
+/// whose transport is trivial: there the stripes are free up to a constant c transported along
+/// the piece (f_v = G_v^T c), but for the components of c that the values already fixed (on
+/// level lines) determine; the root (G = I) is pinned on the others (`fixed`, per value v d + a).
+/// Returns per vertex the generic lattice offset of its piece (0.5 on the free components of c,
+/// transported; 0 on twisted pieces).
+inline std::vector<Eigen::Vector2d> pin_untwisted_pieces(const std::vector<double>& weight,
+                                                         const std::vector<Eigen::Matrix2d>& transition,
+                                                         const std::vector<std::pair<std::size_t, std::size_t>>& ends,
+                                                         int d, std::vector<bool>& fixed)
+{
+  const std::size_t nv = fixed.size() / std::size_t(d);
+  std::vector<Eigen::Vector2d> offset(nv, Eigen::Vector2d::Zero());
+  {
+    std::vector<std::vector<std::pair<std::size_t, std::size_t>>> adjacent(nv); // (vertex, edge)
+    for(std::size_t e = 0; e < weight.size(); ++e)
+      if(weight[e] != 0.)
+      {
+        adjacent[ends[e].first].emplace_back(ends[e].second, e);
+        adjacent[ends[e].second].emplace_back(ends[e].first, e);
+      }
+    // breadth-first over each piece, G_v the transport from its root; an edge (i -> j) closes a
+    // loop with transport G_i P_e G_j^T
+    std::vector<Eigen::Matrix2d> G(nv, Eigen::Matrix2d::Identity());
+    std::vector<bool> reached(nv, false);
+    std::vector<std::size_t> queue;
+    for(std::size_t root = 0; root < nv; ++root)
+    {
+      if(reached[root])
+        continue;
+      reached[root] = true;
+      queue.assign(1, root);
+      bool twisted = false;
+      for(std::size_t head = 0; head < queue.size(); ++head)
+      {
+        const std::size_t v = queue[head];
+        for(const auto& [w, e] : adjacent[v])
+        {
+          // the transition from v to w along e
+          const Eigen::Matrix2d P = ends[e].first == v ? transition[e] : Eigen::Matrix2d(transition[e].transpose());
+          if(!reached[w])
+          {
+            reached[w] = true;
+            G[w] = G[v] * P;
+            queue.push_back(w);
+          }
+          else if(!(G[v] * P * G[w].transpose() - Eigen::Matrix2d::Identity()).isZero(1e-12))
+            twisted = true;
+        }
+      }
+      if(!twisted)
+      {
+        // the stripes of this piece are free up to a constant c transported along it (f_v =
+        // G_v^T c), but for the components of c that its values on level lines fix: the root
+        // (G = I) pinned on the others
+        Eigen::Vector2d free_part(1., 1.);
+        for(std::size_t v : queue)
+          for(int a = 0; a < d; ++a)
+            if(fixed[v * std::size_t(d) + std::size_t(a)])
+              for(int b = 0; b < d; ++b)
+                if(G[v](b, a) != 0.)
+                  free_part[b] = 0.;
+        for(int a = 0; a < d; ++a)
+          if(free_part[a] != 0.)
+            fixed[root * std::size_t(d) + std::size_t(a)] = true;
+        // with lattice branch points, a generic constant (not the pin's 0, where both families'
+        // level-0 lines would cross at a mesh vertex, a degenerate crossing for the quads'
+        // extraction)
+        for(std::size_t v : queue)
+          offset[v] = G[v].transpose() * Eigen::Vector2d(0.5 * free_part[0], 0.5 * free_part[1]);
+      }
+    }
+  }
+  return offset;
+}
+
+} // namespace internal
+} // namespace Surface_design
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_DESIGN_INTERNAL_CORE_COVER_CONSTRAINTS_H
