@@ -1442,6 +1442,17 @@ TEMPLATE_TEST_CASE("Boundary loops on level lines: the angle is 0 on the boundar
       CHECK(p.energy() >= free_energy * (1. - 1e-12)); // a constraint cannot lower the optimum
       CHECK(p.energy() <= 4. * free_energy + 1.);      // and the boundary's stripes stay close to the field's
       (void)free_along;
+#if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
+      // the other solver: the same optimum
+      Bsp<TestType, SD::Cholmod_solver_traits> q(mesh, SD::parameters::symmetry_order(n));
+      q.set_boundary_on_level_lines(true);
+      q.set_field(field_map(mesh, field), 7.3 / diagonal(mesh));
+      q.solve();
+      CHECK(std::abs(q.energy() - p.energy()) <= 1e-8 * p.energy());
+      CHECK(boundary_level_gaps(mesh, q).first < 1e-8);
+#else
+      SD_CHOLMOD_UNAVAILABLE("the boundary's level lines with both solvers");
+#endif
       // optimal over the values left free: the energy, quadratic, changes by the same amount along
       // y +- d_P delta (delta random, 0 on the fixed values); along a delta on the boundary's
       // values alone it does not (the constraint holds the optimum there)
@@ -1482,4 +1493,37 @@ TEMPLATE_TEST_CASE("Boundary loops on level lines: the angle is 0 on the boundar
           CHECK(std::abs(ep - em) <= 1e-9 * (ep + em));
       }
     }
+}
+
+TEMPLATE_TEST_CASE("Boundary loops on level lines: refused where the field runs along the boundary, or for a cross "
+                   "field without cones",
+                   "[branched_stripes]", SD_MESH_TYPES)
+{
+  const TestType band = make_case<TestType>("band");
+  // the smoothest line field tangent to the boundary: no level line can follow it
+  std::vector<Vector_of<TestType>> tangent(num_vertices(band));
+  {
+    const SDI::Mesh_indices<TestType> idx(band);
+    std::map<Vertex<TestType>, Vector_of<TestType>> map;
+    SD::smoothest_direction_field(band, boost::make_assoc_property_map(map),
+                                  SD::parameters::symmetry_order(2, SD::parameters::field_boundary_condition(
+                                                                      SD::Direction_field_boundary::tangent)));
+    for(std::size_t v = 0; v < idx.number_of_vertices(); ++v)
+      tangent[v] = map.at(idx.vertex(v));
+  }
+  Bsp<TestType> p(band, SD::parameters::symmetry_order(2));
+  p.set_field(field_map(band, tangent), 7.3 / diagonal(band));
+  p.solve();
+  const double energy = p.energy();
+  REQUIRE_THROWS_WITH(p.set_boundary_on_level_lines(true),
+                      Catch::Matchers::Contains("the field runs along the boundary"));
+  REQUIRE_FALSE(p.boundary_on_level_lines()); // nothing changed
+  p.solve();
+  REQUIRE(p.energy() == energy);
+  // a cross field normal to both circles of the band has no cone: not supported yet, said so
+  Bsp<TestType> c(band, SD::parameters::symmetry_order(4));
+  c.set_boundary_on_level_lines(true);
+  REQUIRE_THROWS_WITH(c.set_field(field_map(band, smoothest_normal_to_boundary(band, 4)), 7.3 / diagonal(band)),
+                      Catch::Matchers::Contains("not supported yet"));
+  REQUIRE_FALSE(c.has_field());
 }
