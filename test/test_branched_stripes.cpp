@@ -30,6 +30,7 @@
 #include <numeric>
 #include <set>
 #include <sstream>
+#include <utility>
 
 namespace SD = CGAL::Surface_design;
 namespace SDI = CGAL::Surface_design::internal;
@@ -122,6 +123,24 @@ auto field_map(const Mesh& mesh, const std::vector<Vector_of<Mesh>>& by_index)
   auto idx = std::make_shared<SDI::Mesh_indices<Mesh>>(mesh);
   return boost::make_function_property_map<Vertex<Mesh>>(
     [idx, &by_index](Vertex<Mesh> v) { return by_index[idx->index(v)]; });
+}
+
+// The stripe energy at y + d_P delta and y - d_P delta (delta per vertex): equal to first order
+// exactly when y is optimal over the values that delta moves.
+template <class Solver, class Indices>
+std::pair<double, double> energies_along(const Solver& solver, const Indices& idx, const std::vector<Eigen::Vector2d>& y,
+                                         const std::vector<Eigen::Vector2d>& omega,
+                                         const std::vector<Eigen::Vector2d>& delta)
+{
+  std::vector<Eigen::Vector2d> plus = y, minus = y;
+  for(std::size_t e = 0; e < y.size(); ++e)
+  {
+    const auto ij = idx.edge_vertices(e);
+    const Eigen::Vector2d z = solver.transition(e) * delta[ij.second] - delta[ij.first];
+    plus[e] += z;
+    minus[e] -= z;
+  }
+  return {solver.energy(plus, omega), solver.energy(minus, omega)};
 }
 
 // --- the independent readings of a pattern, from `value(f, b, family)` alone
@@ -357,15 +376,7 @@ void check_pattern(const Parameterizer& p)
           state = state * 1664525u + 1013904223u;
           delta[v][a] = solver.is_pinned(v) ? 0. : double(state >> 8) / double(1u << 24) - 0.5;
         }
-      std::vector<Eigen::Vector2d> plus = y, minus = y;
-      for(std::size_t e = 0; e < y.size(); ++e)
-      {
-        const auto ij = idx.edge_vertices(e);
-        const Eigen::Vector2d z = solver.transition(e) * delta[ij.second] - delta[ij.first];
-        plus[e] += z;
-        minus[e] -= z;
-      }
-      const double ep = solver.energy(plus, omega), em = solver.energy(minus, omega);
+      const auto [ep, em] = energies_along(solver, idx, y, omega, delta);
       INFO("energy along +- d_P delta: " << ep << " " << em);
       REQUIRE(std::abs(ep - em) <= 1e-9 * (ep + em));
     }
@@ -1477,15 +1488,7 @@ TEMPLATE_TEST_CASE("Boundary loops on level lines: the angle is 0 on the boundar
             }
         }
         REQUIRE(moved > 0);
-        std::vector<Eigen::Vector2d> plus = y, minus = y;
-        for(std::size_t e = 0; e < y.size(); ++e)
-        {
-          const auto ij = idx.edge_vertices(e);
-          const Eigen::Vector2d z = solver.transition(e) * delta[ij.second] - delta[ij.first];
-          plus[e] += z;
-          minus[e] -= z;
-        }
-        const double ep = solver.energy(plus, omega), em = solver.energy(minus, omega);
+        const auto [ep, em] = energies_along(solver, idx, y, omega, delta);
         INFO("moving " << (on_level ? "the boundary's" : "the free") << " values: energy " << ep << " " << em);
         if(on_level)
           CHECK(std::abs(ep - em) > 1e-6 * (ep + em));
