@@ -537,6 +537,90 @@ TEMPLATE_TEST_CASE("Boundary-aligned smoothest fields", "[direction_fields]", SD
     }
 }
 
+// the face centroids of the nonzero indices
+template <class Mesh>
+std::vector<std::pair<Eigen::Vector3d, double>> cones_with_positions(const Mesh& mesh, const Vector_map<Mesh>& field, int n)
+{
+  std::vector<std::pair<Eigen::Vector3d, double>> cones;
+  for(const auto& [f, k] : indices_of(mesh, field, n))
+    if(k != 0.)
+    {
+      Eigen::Vector3d c = Eigen::Vector3d::Zero();
+      for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+      {
+        const auto& p = get(CGAL::vertex_point, mesh, v);
+        c += Eigen::Vector3d(p.x(), p.y(), p.z()) / 3.;
+      }
+      cones.emplace_back(c, k);
+    }
+  return cones;
+}
+
+TEMPLATE_TEST_CASE("Boundary-aligned cross fields: the normalized flow moves the linear solve's clustered zeros apart",
+                   "[direction_fields]", SD_MESH_TYPES)
+{
+  // the hemisphere (radius 1): the linear solve's four quarter turns cluster near the pole (|u|
+  // ~ r^4 there); the flow's rest point has four +1/4 cones kept apart
+  const TestType mesh = make_case<TestType>("hemisphere.off");
+  auto field_after = [&](int steps, auto traits) {
+    Vector_map<TestType> field;
+    SD::smoothest_direction_field(
+      mesh, boost::make_assoc_property_map(field),
+      SD::parameters::symmetry_order(4, SD::parameters::field_boundary_condition(
+                                          SD::Direction_field_boundary::tangent,
+                                          SD::parameters::unit_length_iterations(steps).sparse_linear_solver(traits))));
+    return field;
+  };
+  auto closest_pair = [](const std::vector<std::pair<Eigen::Vector3d, double>>& cones) {
+    double d = 1e300;
+    for(std::size_t i = 0; i < cones.size(); ++i)
+      for(std::size_t j = i + 1; j < cones.size(); ++j)
+        d = (std::min)(d, (cones[i].first - cones[j].first).norm());
+    return d;
+  };
+  const auto linear = field_after(0, SD::Default_solver_traits());
+  const auto linear_cones = cones_with_positions(mesh, linear, 4);
+  double linear_sum = 0.;
+  for(const auto& c : linear_cones)
+    linear_sum += c.second;
+  CHECK(linear_sum == 1.); // Poincare-Hopf with chi alone (the boundary is parallel)
+  // the oracle below sees the cluster
+  CHECK(closest_pair(linear_cones) < 0.15);
+#define SD_FLOW_CASE(Traits, label)                                                                     \
+  {                                                                                                     \
+    CAPTURE(label);                                                                                     \
+    const auto flowed = field_after(30, Traits());                                                      \
+    check_unit_tangent(mesh, flowed);                                                                   \
+    const auto cones = cones_with_positions(mesh, flowed, 4);                                           \
+    REQUIRE(cones.size() == 4);                                                                         \
+    for(const auto& c : cones)                                                                          \
+      CHECK(c.second == 0.25);                                                                          \
+    CHECK(closest_pair(cones) > 0.4); /* 0.57 measured: the cones at about 0.4 from the pole */        \
+    /* the boundary values are kept */                                                                  \
+    for(auto h : halfedges(mesh))                                                                       \
+      if(is_border(h, mesh))                                                                            \
+        CHECK((to_eigen(flowed.at(target(h, mesh))) - to_eigen(linear.at(target(h, mesh)))).norm() < 1e-12); \
+  }
+  SD_FOR_EACH_SOLVER(SD_FLOW_CASE)
+#undef SD_FLOW_CASE
+  // and nothing changes without a boundary condition (the steps apply to Dirichlet components)
+  const TestType sphere = make_case<TestType>("small sphere");
+  Vector_map<TestType> plain, with_steps;
+  SD::smoothest_direction_field(sphere, boost::make_assoc_property_map(plain), SD::parameters::symmetry_order(4));
+  SD::smoothest_direction_field(sphere, boost::make_assoc_property_map(with_steps),
+                                SD::parameters::symmetry_order(4, SD::parameters::unit_length_iterations(30)));
+  for(auto v : vertices(sphere))
+    CHECK((to_eigen(plain.at(v)) - to_eigen(with_steps.at(v))).norm() == 0.);
+  for(int bad : {-1, 1001})
+  {
+    Vector_map<TestType> untouched;
+    CHECK_THROWS_AS(SD::smoothest_direction_field(mesh, boost::make_assoc_property_map(untouched),
+                                                  SD::parameters::unit_length_iterations(bad)),
+                    SD::Invalid_parameter);
+    CHECK(untouched.empty());
+  }
+}
+
 TEMPLATE_TEST_CASE("Curvature-aligned cross fields follow the principal directions of a torus",
                    "[direction_fields]", SD_MESH_TYPES)
 {

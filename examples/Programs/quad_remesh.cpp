@@ -313,10 +313,17 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
   auto field = mesh.add_property_map<Mesh::Vertex_index, program::Vector>("v:cross_field").first;
   auto index = mesh.add_property_map<Mesh::Face_index, int>("f:cone", 0).first;
   // a cross field (curvature-aligned or not) and its cones (`out_cones`: the count returned)
-  auto compute = [&mesh](bool aligned, auto out, auto out_cones, auto solver) {
+  // along the boundary, if any: one of its directions normal to it, so that the boundary is a
+  // line of the quads
+  const bool closed = CGAL::is_closed(mesh);
+  auto compute = [&mesh, closed](bool aligned, auto out, auto out_cones, auto solver) {
     SD::smoothest_direction_field(
       mesh, out,
-      P::symmetry_order(4, P::curvature_alignment_weight(aligned ? 0.1 : 0., CGAL::parameters::sparse_linear_solver(solver))));
+      P::symmetry_order(4, P::curvature_alignment_weight(
+                             aligned ? 0.1 : 0.,
+                             P::field_boundary_condition(
+                               closed ? SD::Direction_field_boundary::free : SD::Direction_field_boundary::tangent,
+                               P::unit_length_iterations(30, CGAL::parameters::sparse_linear_solver(solver))))));
     return SD::direction_field_singularities(mesh, out, out_cones, P::symmetry_order(4));
   };
   // --field auto: the principal field is independent of the rest, made on a second thread with a
@@ -347,6 +354,11 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
                   aligned ? "smoothest aligned with the principal curvature directions" : "smoothest", cones);
       if(o.cone_distance <= 0.)
         return cones;
+      if(!closed)
+      {
+        std::printf("  cones where the field has them (the separation does not keep the field along the boundary yet)\n");
+        return cones;
+      }
       tc.set_indices(cone_map);
       try
       {
@@ -483,9 +495,9 @@ int run_field(const Options& o, Traits traits)
 {
   program::Stopwatch clock;
   const Mesh input = read_input(o);
-  if(!CGAL::is_closed(input))
-    throw std::runtime_error("--method field takes closed meshes (the lines do not follow a boundary yet): use "
-                             "--method harmonic for this one; nothing written");
+  if(!CGAL::is_closed(input) && !o.cones.empty())
+    throw program::Usage_error("--singularity on a mesh with a boundary: not supported yet (the prescribed cones' "
+                               "field does not follow the boundary); without it the field's own cones are used");
   double h = edge_length(input, o);
   if(!(h > 0.))
   {

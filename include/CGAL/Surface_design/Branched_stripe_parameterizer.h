@@ -681,11 +681,23 @@ public:
   /// @{
 
   /// The isolines at level 0 alone, as the quad extraction reads them (points as `Eigen::Vector3d`,
-  /// faces by their index): `isolines()` without its level-pi lines and conversions.
+  /// faces by their index): `isolines()` without its level-pi lines and conversions. With the
+  /// boundary on level lines, the pieces along the boundary (and along chords between two of its
+  /// vertices) are left out: the extraction adds the boundary loops.
   std::vector<internal::Stripe_isoline_polyline> level_zero_polylines() const
   {
     solution();
     internal::Stripe_isoline_builder builder(m_idx->number_of_vertices(), m_idx->number_of_edges(), 1e-9, true);
+    if(m_boundary_level)
+    {
+      // the boundary is a level-0 line: the extraction adds its loops itself (a line along it
+      // would run through ears and chords where the angle is constant)
+      std::vector<bool> on(m_idx->number_of_vertices(), false);
+      for(std::size_t h = 0; h < m_idx->number_of_halfedges(); ++h)
+        if(m_idx->is_border(m_idx->halfedge(h)))
+          on[m_idx->index(target(m_idx->halfedge(h), m_tm))] = true;
+      builder.set_boundary_vertices(std::move(on));
+    }
     add_isolines(builder, 9);
     return builder.polylines();
   }

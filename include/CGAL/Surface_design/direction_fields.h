@@ -94,7 +94,14 @@ struct Smoothest_direction_field_result
 ///    several hundred (near-degenerate eigenvalues, e.g. on a round sphere).
 ///  - `field_boundary_condition(Direction_field_boundary::tangent or normal)`: on components with
 ///    boundary, u is fixed at the boundary vertices to the boundary tangent (or inward normal) and
-///    the interior minimizes E: one linear solve (Knöppel et al., sec. 6.1).
+///    the interior minimizes E: one linear solve (Knöppel et al., sec. 6.1). Its zeros cluster
+///    where the boundary data must wind (a disk: all n of them at the centre, |u| ~ r^n), and
+///    `unit_length_iterations(k)` moves them apart: k steps of the implicit flow
+///    (A + s M) u' = s M u / |u| (boundary values kept, s = 100 / the component's area), whose
+///    rest points minimize E(u) + s sum_v m_v |u_v - u_v / |u_v||^2, a Ginzburg-Landau-like
+///    penalty with a core about a tenth of the component's size: the singularities of a unit
+///    field, kept apart by their interaction energy (the hemisphere: four +1/n cones around the
+///    pole instead of a cluster at it).
 ///  - `curvature_alignment_weight(t) > 0` (n even): minimizes E(u) + t sum_v m~_v |u_v - q_v|^2
 ///    where q is the principal curvature direction field (n = 2: the larger principal curvature
 ///    direction; n = 4: both), with magnitude |kappa_1 - kappa_2| scaled to area-weighted RMS 1,
@@ -148,6 +155,13 @@ struct Smoothest_direction_field_result
 ///     \cgalParamDefault{`0`}
 ///     \cgalParamExtra{throws `Invalid_parameter` if it is negative or not finite, or if it is positive and
 ///                     `symmetry_order` is odd or the curvature tensor of the mesh vanishes everywhere}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{unit_length_iterations}
+///     \cgalParamDescription{steps of the normalized flow after the linear solve on components with a boundary
+///                           condition (above); ignored with curvature alignment and on components without one}
+///     \cgalParamType{`int`, in [0, 1000]}
+///     \cgalParamDefault{`0`}
+///     \cgalParamExtra{throws `Invalid_parameter` if out of range}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{normalize_field}
 ///     \cgalParamDescription{`true`: unit tangent vectors; `false`: vectors of length |u_v|, u scaled per
@@ -221,6 +235,72 @@ struct Smoothest_direction_field_result
 ///
 /// Complexity: one sparse Hermitian factorization of size |V| and, for the eigenproblem, one
 /// back-substitution per Lanczos step (typically 10 to 20).
+namespace internal {
+
+// `steps` steps of (A + s M) u' = s M u / |u| on the components of the Dirichlet vertices `fixed`
+// (their values kept, and the other components'), s = 100 / the component's area; x: u, (Re, Im)
+// interleaved. Where A + s M is not positive definite on the free vertices (obtuse triangles'
+// negative cotangent weights), the field is left as the linear solve made it.
+template <class Solver, class NamedParameters>
+void unit_length_flow(const Complex_sparse_matrix& a_energy, const std::vector<double>& mass, const std::vector<bool>& fixed,
+                      const Components& comps, int steps, const NamedParameters& np, Eigen::VectorXd& x)
+{
+  const std::size_t nv = mass.size();
+  std::vector<double> area(comps.info.size(), 0.);
+  std::vector<bool> with_boundary(comps.info.size(), false);
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    area[comps.vertex_component[v]] += mass[v];
+    if(fixed[v])
+      with_boundary[comps.vertex_component[v]] = true;
+  }
+  // the vertices kept: the Dirichlet ones and those of components without boundary condition
+  std::vector<bool> kept(nv);
+  std::vector<double> s(nv, 0.);
+  Eigen::VectorXcd u_kept = Eigen::VectorXcd::Zero(Eigen::Index(nv));
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    const std::size_t c = comps.vertex_component[v];
+    kept[v] = fixed[v] || !with_boundary[c];
+    s[v] = with_boundary[c] ? 100. / area[c] : 0.;
+    if(kept[v])
+      u_kept[Eigen::Index(v)] = {x[Eigen::Index(2 * v)], x[Eigen::Index(2 * v + 1)]};
+  }
+  Complex_sparse_matrix a = a_energy;
+  const Eigen::VectorXcd coupling = a * u_kept;
+  a.prune([&kept](Eigen::Index i, Eigen::Index j, const std::complex<double>&) {
+    return !kept[std::size_t(i)] && !kept[std::size_t(j)];
+  });
+  for(std::size_t v = 0; v < nv; ++v)
+    a.coeffRef(Eigen::Index(v), Eigen::Index(v)) += kept[v] ? 1. : s[v] * mass[v];
+  a.makeCompressed();
+  Hermitian_system<Solver> flow(solver_traits(np), "normalized flow");
+  try
+  {
+    flow.factor(std::move(a));
+  }
+  catch(const Linear_solver_failure&)
+  {
+    return;
+  }
+  Eigen::VectorXd rhs(Eigen::Index(2 * nv)), y(Eigen::Index(2 * nv));
+  for(int step = 0; step < steps; ++step)
+  {
+    for(std::size_t v = 0; v < nv; ++v)
+    {
+      const Eigen::Index r = Eigen::Index(v);
+      const std::complex<double> u(x[2 * r], x[2 * r + 1]);
+      const std::complex<double> b =
+        kept[v] ? u : s[v] * mass[v] * (std::abs(u) > 0. ? u / std::abs(u) : u) - coupling[r];
+      rhs[2 * r] = b.real(), rhs[2 * r + 1] = b.imag();
+    }
+    flow.solve(rhs, y);
+    x = y;
+  }
+}
+
+} // namespace internal
+
 template <class TriangleMesh, class VertexVectorMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 Smoothest_direction_field_result smoothest_direction_field(const TriangleMesh& tm, VertexVectorMap field,
@@ -235,6 +315,7 @@ Smoothest_direction_field_result smoothest_direction_field(const TriangleMesh& t
     choose_parameter(get_parameter(np, internal_np::field_boundary_condition), Direction_field_boundary::free);
   const double alignment = choose_parameter(get_parameter(np, internal_np::curvature_alignment_weight), 0.);
   const bool normalize = choose_parameter(get_parameter(np, internal_np::normalize_field), true);
+  const int flow_steps = choose_parameter(get_parameter(np, internal_np::unit_length_iterations), 0);
   const double tolerance = choose_parameter(get_parameter(np, internal_np::eigen_tolerance), 1e-6);
   const std::size_t max_iterations =
     choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(200));
@@ -243,6 +324,8 @@ Smoothest_direction_field_result smoothest_direction_field(const TriangleMesh& t
   internal::require_nonnegative("curvature_alignment_weight", alignment);
   internal::require_in_range("eigen_tolerance", tolerance, 0., 1., true, true);
   internal::require_at_least("number_of_iterations", max_iterations, std::size_t(1));
+  if(flow_steps < 0 || flow_steps > 1000)
+    throw Invalid_parameter("unit_length_iterations", "must lie in [0, 1000], got " + std::to_string(flow_steps));
   if(boundary != Direction_field_boundary::free && boundary != Direction_field_boundary::tangent &&
      boundary != Direction_field_boundary::normal)
     throw Invalid_parameter("field_boundary_condition", "not a Direction_field_boundary enumerator");
@@ -361,6 +444,8 @@ Smoothest_direction_field_result smoothest_direction_field(const TriangleMesh& t
   Eigen::VectorXd x = Eigen::VectorXd::Zero(Eigen::Index(2 * nv));
   if(!std::all_of(eigen_component.begin(), eigen_component.end(), [](bool b) { return b; }))
     system.solve(rhs_fixed, x); // boundary conditions and alignment: one linear solve
+  if(flow_steps > 0 && alignment == 0. && boundary != Direction_field_boundary::free)
+    internal::unit_length_flow<Solver>(a_energy, mass, fixed, comps, flow_steps, np, x);
   if(any_eigen)
   {
     // the smallest eigenvector of every remaining component: shift-invert Lanczos on A + eps M,

@@ -126,11 +126,14 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
   if(!bsp.lattice_branch_points())
     throw Invalid_constraints("extract_field_aligned_quads(): the branch points are not on the lattice (call "
                               "set_lattice_branch_points(true)): the cones would not be vertices of the quads");
+  std::size_t boundary_loops = 0;
   for(const auto& c : bsp.topology().components.info)
-    if(c.boundary_loops != 0)
-      throw Invalid_mesh(Mesh_defect::not_closed, Invalid_mesh::no_element,
-                         "field-aligned quads need a closed surface: the lines do not follow a boundary");
+    boundary_loops += c.boundary_loops;
+  if(boundary_loops != 0 && !bsp.boundary_on_level_lines())
+    throw Invalid_constraints("extract_field_aligned_quads(): the mesh has a boundary and it is not on level lines "
+                              "(call set_boundary_on_level_lines(true)): the quads would not follow it");
   const auto& idx = bsp.indices();
+  internal::require_smooth_boundary(idx, bsp.vertex_point_map());
   for(auto f : faces(bsp.mesh()))
     for(int family = 0; family < 2; ++family)
       if(bsp.index(f, family) != 0)
@@ -166,6 +169,7 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
   // triangles at 800 quads stays folded after 10 graded rounds; the kitten, 4.4 triangles per
   // quad, needs 4 graded rounds instead of 9, fertility 5 instead of 7)
   const double ring_factor = double(num_faces(bsp.mesh())) * h * h >= 1.5 * surface.area ? 2. : 1.;
+  const std::vector<internal::Stripe_isoline_polyline> boundary = internal::boundary_polylines(idx, bsp.vertex_point_map());
   internal::Quad_extraction q;
   double extraction_seconds = 0.;
   for(;;)
@@ -176,8 +180,8 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
     result.folded_faces = folded.size();
     const auto extraction_start = Clock::now();
     q = internal::extract_quads(bsp.level_zero_polylines(), surface.normal, cones,
-                                1e-9 * std::sqrt(surface.area));
-    const std::string problem = internal::quad_extraction_problem(q, cone_index, chi, surface.normal);
+                                1e-9 * std::sqrt(surface.area), 0., boundary);
+    const std::string problem = internal::quad_extraction_problem(q, cone_index, chi, surface.normal, boundary_loops);
     extraction_seconds += seconds_since(extraction_start);
     bool go_on = true;
     internal::if_given(np, CGAL::internal_np::visitor, [&](const auto& visitor) {
@@ -323,17 +327,22 @@ Field_aligned_quad_remeshing_result field_aligned_quad_remeshing(const TriangleM
   if(rounds < 0 || rounds > 64)
     throw Invalid_parameter("stiffening_rounds", "must lie in [0, 64], got " + std::to_string(rounds));
   Branched_stripe_parameterizer bsp(tm, parameters::symmetry_order(4, np));
-  for(const auto& c : bsp.topology().components.info)
-    if(c.boundary_loops != 0)
-      throw Invalid_mesh(Mesh_defect::not_closed, Invalid_mesh::no_element,
-                         "field_aligned_quad_remeshing() takes closed surfaces: the lines do not follow a boundary");
   const double area = internal::quad_extraction_input(bsp.indices(), bsp.vertex_point_map()).area;
   const double h = choose_parameter(get_parameter(np, internal_np::target_edge_length), std::sqrt(area / 3000.));
   if(!std::isfinite(h) || !(h > 0.) || area / (h * h) > 1e7)
     throw Invalid_parameter("target_edge_length", "must be finite and positive and give at most 10^7 quads, got " +
                                                     std::to_string(h));
-  bsp.set_field(field, 1. / h);
+  // (the switches first: set_field() then factors once)
   bsp.set_lattice_branch_points(true);
+  bool boundary = false;
+  for(const auto& c : bsp.topology().components.info)
+    boundary = boundary || c.boundary_loops != 0;
+  if(boundary)
+  {
+    internal::require_smooth_boundary(bsp.indices(), bsp.vertex_point_map());
+    bsp.set_boundary_on_level_lines(true);
+  }
+  bsp.set_field(field, 1. / h); // throws where the field runs along the boundary
   bsp.solve();
   // (the parameters it reads: the rounds and the visitor)
   Field_aligned_quad_remeshing_result result = extract_field_aligned_quads(bsp, out, np);

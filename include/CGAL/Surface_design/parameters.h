@@ -26,6 +26,7 @@ enum symmetry_order_t { symmetry_order };
 enum curvature_alignment_weight_t { curvature_alignment_weight };
 enum field_boundary_condition_t { field_boundary_condition };
 enum normalize_field_t { normalize_field };
+enum unit_length_iterations_t { unit_length_iterations };
 enum eigen_tolerance_t { eigen_tolerance };
 enum developability_energy_t { developability_energy };
 enum number_of_subdivisions_t { number_of_subdivisions };
@@ -104,6 +105,7 @@ CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(symmetry_order)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(curvature_alignment_weight)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(field_boundary_condition)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(normalize_field)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(unit_length_iterations)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(eigen_tolerance)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(developability_energy)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(number_of_subdivisions)

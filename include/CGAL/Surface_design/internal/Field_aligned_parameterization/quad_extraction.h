@@ -8,7 +8,9 @@
 #ifndef CGAL_SURFACE_DESIGN_INTERNAL_FIELD_ALIGNED_PARAMETERIZATION_QUAD_EXTRACTION_H
 #define CGAL_SURFACE_DESIGN_INTERNAL_FIELD_ALIGNED_PARAMETERIZATION_QUAD_EXTRACTION_H
 
+#include <CGAL/Surface_design/exceptions.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>
+#include <CGAL/Surface_design/internal/Core/topology.h>
 #include <CGAL/Surface_design/internal/Field_aligned_parameterization/stripe_isolines.h>
 
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -38,10 +40,63 @@ struct Quad_extraction
   std::vector<std::size_t> point_face;                 ///< the input face each point lies in
   std::vector<std::vector<std::size_t>> faces;         ///< every traced polygon, counterclockwise
   std::vector<std::size_t> cone_vertex;                ///< per cone (input order), its vertex
+  std::vector<bool> on_boundary;                       ///< per point: whether it lies on a boundary loop
   std::size_t non_quads = 0;                           ///< faces with other than four sides
-  std::size_t open_ends = 0;                           ///< lines ending elsewhere than at a cone
-  std::size_t closed_lines_without_crossing = 0;       ///< closed lines that cross no other line
+  std::size_t open_ends = 0;                           ///< lines ending elsewhere than at a cone or a boundary
+  std::size_t closed_lines_without_crossing = 0;       ///< closed lines (boundary loops too) that meet no other line
+  std::size_t holes = 0;                               ///< polygons traced outside a boundary loop (not in faces)
+  std::size_t broken_holes = 0;                        ///< polygons running partly outside a boundary loop
 };
+
+/// Throws Invalid_constraints at the boundary vertex where the boundary turns the most if it turns
+/// by more than 45 degrees there (the angle between its two boundary edges' directions): a corner,
+/// where the quads would need a vertex of valence 2 or 4 on the boundary, which the extraction
+/// does not make yet.
+template <class Indices, class VertexPointMap>
+void require_smooth_boundary(const Indices& idx, const VertexPointMap& vpm)
+{
+  const auto& tm = idx.mesh();
+  double largest = 0.;
+  std::size_t at = 0;
+  for(std::size_t i = 0; i < idx.number_of_halfedges(); ++i)
+  {
+    const auto h = idx.halfedge(i);
+    if(!idx.is_border(h))
+      continue;
+    const Eigen::Vector3d a = position(vpm, source(h, tm)), b = position(vpm, target(h, tm)),
+                          c = position(vpm, target(next(h, tm), tm));
+    const double turn = std::atan2((b - a).cross(c - b).norm(), (b - a).dot(c - b));
+    if(turn > largest)
+      largest = turn, at = idx.index(target(h, tm));
+  }
+  if(largest > CGAL_PI / 4.)
+    throw Invalid_constraints("the boundary turns by " + std::to_string(int(std::lround(largest * 180. / CGAL_PI))) +
+                              " degrees at vertex " + std::to_string(at) + ": the quads follow boundaries that turn by "
+                              "at most 45 degrees at every vertex; corners are not supported yet");
+}
+
+/// The boundary loops of the input as closed polylines, the surface on their left (along the
+/// face's halfedges): points at the boundary vertices, faces[i] the face of the edge from points[i].
+template <class Indices, class VertexPointMap>
+std::vector<Stripe_isoline_polyline> boundary_polylines(const Indices& idx, const VertexPointMap& vpm)
+{
+  const auto& tm = idx.mesh();
+  std::vector<Stripe_isoline_polyline> result;
+  for(const auto& loop : boundary_loops(idx).loops)
+  {
+    Stripe_isoline_polyline line;
+    line.closed = true;
+    // the border halfedges run with the surface on their right: backwards, along their opposites
+    for(std::size_t i = loop.size(); i-- > 0;)
+    {
+      const auto h = idx.halfedge(loop[i]);
+      line.points.push_back(position(vpm, target(h, tm)));
+      line.faces.push_back(idx.index(face(opposite(h, tm), tm)));
+    }
+    result.push_back(std::move(line));
+  }
+  return result;
+}
 
 /// One cone of the field: its branch face and the branch point (where its lines end).
 struct Quad_extraction_cone
@@ -53,7 +108,9 @@ struct Quad_extraction_cone
 /// The quad layout of the lines of level `level` (0 or pi, both families; the other lines are
 /// ignored): level 0 where the cones are on the lattice; without cones either level works, and pi
 /// avoids the mesh vertex where the stripe angle is pinned to 0. `normal` gives each input face's unit normal (the orientation of the surface),
-/// `cones` the branch points where lines end (within `tolerance` of the point).
+/// `cones` the branch points where lines end (within `tolerance` of the point). `boundary`: the
+/// input's boundary loops (`boundary_polylines()`) where they lie on level lines: the lines that
+/// end on them make vertices there, and the polygons traced outside them are the holes.
 ///
 /// Vertices: every crossing of two pieces of line inside one input face (pieces are half-open at
 /// their ends, so that a crossing on an input edge is counted once), and every cone. Edges: the
@@ -63,12 +120,17 @@ struct Quad_extraction_cone
 inline Quad_extraction extract_quads(const std::vector<Stripe_isoline_polyline>& all_lines,
                                      const std::vector<Eigen::Vector3d>& normal,
                                      const std::vector<Quad_extraction_cone>& cones, double tolerance,
-                                     double level = 0.)
+                                     double level = 0.,
+                                     const std::vector<Stripe_isoline_polyline>& boundary = {})
 {
   std::vector<const Stripe_isoline_polyline*> lines;
   for(const auto& line : all_lines)
     if(std::abs(line.level - level) < 1e-9 && line.points.size() >= 2)
       lines.push_back(&line);
+  const std::size_t first_boundary_line = lines.size();
+  for(const auto& line : boundary)
+    lines.push_back(&line);
+  auto is_boundary = [&](std::size_t l) { return l >= first_boundary_line; };
   Quad_extraction out;
 
   // the pieces: piece s of line l from points[s] to points[s + 1] (closed lines wrap) in faces[s]
@@ -93,6 +155,7 @@ inline Quad_extraction extract_quads(const std::vector<Stripe_isoline_polyline>&
   auto add_point = [&](const Eigen::Vector3d& x, std::size_t f) {
     out.points.push_back(x);
     out.point_face.push_back(f);
+    out.on_boundary.push_back(false);
     return out.points.size() - 1;
   };
   // the branch point of each branch face: the lines that end there meet only there, at the cone
@@ -113,6 +176,8 @@ inline Quad_extraction extract_quads(const std::vector<Stripe_isoline_polyline>&
       {
         const auto [l1, s1] = here[i];
         const auto [l2, s2] = here[j];
+        if(is_boundary(l1) || is_boundary(l2))
+          continue; // lines meet the boundary at their ends (below)
         const Eigen::Vector3d& p0 = lines[l1]->points[s1];
         const Eigen::Vector3d& q0 = lines[l2]->points[s2];
         const Eigen::Vector2d p = flat(p0), r = flat(piece_end(l1, s1)) - p;
@@ -152,7 +217,66 @@ inline Quad_extraction extract_quads(const std::vector<Stripe_isoline_polyline>&
         }
     }
   }
-  for(std::size_t l = 0; l < lines.size(); ++l)
+  // the ends on the boundary: a point of a boundary piece in the end's face (on the boundary
+  // edge), or a boundary vertex; lines ending at the same point share its vertex
+  if(!boundary.empty())
+  {
+    std::map<std::array<double, 3>, std::pair<std::size_t, std::size_t>> boundary_vertex; // point -> (line, i)
+    for(std::size_t l = first_boundary_line; l < lines.size(); ++l)
+      for(std::size_t i = 0; i < lines[l]->points.size(); ++i)
+      {
+        const Eigen::Vector3d& x = lines[l]->points[i];
+        boundary_vertex.emplace(std::array<double, 3>{x.x(), x.y(), x.z()}, std::make_pair(l, i));
+      }
+    std::map<std::pair<std::size_t, std::size_t>, std::vector<std::pair<double, std::size_t>>> on_piece;
+    auto boundary_point = [&](const Eigen::Vector3d& x, std::size_t f) -> std::pair<std::size_t, double> {
+      for(const auto& [l, s] : in_face[f])
+      {
+        if(!is_boundary(l))
+          continue;
+        const Eigen::Vector3d& a = lines[l]->points[s];
+        const Eigen::Vector3d d = piece_end(l, s) - a;
+        const double t = std::clamp((x - a).dot(d) / d.squaredNorm(), 0., 1.);
+        if((a + t * d - x).norm() < tolerance)
+          return {l, (x - piece_end(l, s)).norm() < tolerance ? double(s + 1) : double(s) + t};
+      }
+      const auto it = boundary_vertex.find({x.x(), x.y(), x.z()});
+      if(it != boundary_vertex.end())
+        return {it->second.first, double(it->second.second)};
+      return {lines.size(), 0.};
+    };
+    for(std::size_t l = 0; l < first_boundary_line; ++l)
+      for(int end = 0; end < 2; ++end)
+      {
+        const auto& line = *lines[l];
+        if(line.closed || end_used[2 * l + std::size_t(end)])
+          continue;
+        const Eigen::Vector3d& x = end == 0 ? line.points.front() : line.points.back();
+        const std::size_t f = end == 0 ? line.faces.front() : line.faces.back();
+        auto [b, position] = boundary_point(x, f);
+        if(b == lines.size())
+          continue;
+        const std::size_t count = lines[b]->points.size();
+        if(position >= double(count))
+          position -= double(count);
+        const std::size_t piece = std::size_t(position);
+        auto& here = on_piece[{b, piece}];
+        std::size_t v = out.points.size();
+        for(const auto& [p, w] : here)
+          if(std::abs(p - position) * (piece_end(b, piece) - lines[b]->points[piece]).norm() < tolerance)
+            v = w;
+        if(v == out.points.size())
+        {
+          add_point(x, f);
+          out.on_boundary[v] = true;
+          here.emplace_back(position, v);
+          on_line[b].emplace_back(position, v);
+        }
+        on_line[l].emplace_back(end == 0 ? 0. : double(line.points.size() - 1), v);
+        end_used[2 * l + std::size_t(end)] = true;
+      }
+  }
+  for(std::size_t l = 0; l < first_boundary_line; ++l)
     if(!lines[l]->closed)
       out.open_ends += (end_used[2 * l] ? 0 : 1) + (end_used[2 * l + 1] ? 0 : 1);
 
@@ -162,6 +286,7 @@ inline Quad_extraction extract_quads(const std::vector<Stripe_isoline_polyline>&
   {
     std::size_t from, to;
     Eigen::Vector3d direction; // leaving `from`
+    bool outside = false;      // along a boundary loop, the surface on its right
   };
   std::vector<Half> half;
   auto piece_direction = [&](std::size_t l, double position, bool forward) {
@@ -194,8 +319,8 @@ inline Quad_extraction extract_quads(const std::vector<Stripe_isoline_polyline>&
     {
       const auto& [pa, a] = list[i];
       const auto& [pb, b] = list[(i + 1) % count];
-      half.push_back({a, b, piece_direction(l, pa, true)});
-      half.push_back({b, a, piece_direction(l, pb, false)});
+      half.push_back({a, b, piece_direction(l, pa, true), false});
+      half.push_back({b, a, piece_direction(l, pb, false), is_boundary(l)});
     }
   }
   // the rotation around each vertex: counterclockwise in its face's plane
@@ -233,15 +358,22 @@ inline Quad_extraction extract_quads(const std::vector<Stripe_isoline_polyline>&
     if(done[h0])
       continue;
     std::vector<std::size_t> polygon;
-    std::size_t h = h0;
+    std::size_t h = h0, outside = 0;
     while(!done[h])
     {
       done[h] = true;
       polygon.push_back(half[h].from);
+      outside += half[h].outside ? 1 : 0;
       h = next(h);
     }
     if(h != h0)
       polygon.clear(); // not a cycle through h0: cannot happen with a rotation at every vertex
+    if(outside != 0)
+    {
+      // outside a boundary loop: a hole when it runs along the loop alone
+      ++(outside == polygon.size() ? out.holes : out.broken_holes);
+      continue;
+    }
     if(polygon.size() != 4)
       ++out.non_quads;
     out.faces.push_back(std::move(polygon));
@@ -285,18 +417,26 @@ Eigen::Vector3d point_in_face(const Indices& idx, const VertexPointMap& vpm, std
          o[2] * position(vpm, target(next(h, tm), tm));
 }
 
-/// Checks that the extraction is a closed pure quad mesh with Euler characteristic `chi` whose
-/// vertex at cone i has valence 4 - cone_index[i] and every other vertex valence 4, and whose
-/// quads face the way of the input (the normal of a quad, the cross product of its diagonals,
-/// against the unit normals `normal` of the input faces its corners lie in). Returns what is wrong,
-/// or an empty string.
+/// Checks that the extraction is a pure quad mesh with Euler characteristic `chi` and
+/// `boundary_loops` holes (every line ending at a cone or on a boundary loop, every edge in two
+/// quads, or in one along a boundary) whose vertex at cone i has valence 4 - cone_index[i], every
+/// boundary vertex valence 3 (in two quads: the boundary has no corner) and every other vertex
+/// valence 4, and whose quads face the way of the input (the normal of a quad, the cross product
+/// of its diagonals, against the unit normals `normal` of the input faces its corners lie in).
+/// Returns what is wrong, or an empty string.
 inline std::string quad_extraction_problem(const Quad_extraction& q, const std::vector<int>& cone_index, long chi,
-                                           const std::vector<Eigen::Vector3d>& normal)
+                                           const std::vector<Eigen::Vector3d>& normal,
+                                           std::size_t boundary_loops = 0)
 {
   if(q.open_ends != 0)
-    return std::to_string(q.open_ends) + " line ends are not at a cone";
+    return std::to_string(q.open_ends) + " line ends are not at a cone" + (boundary_loops != 0 ? " or a boundary" : "");
   if(q.closed_lines_without_crossing != 0)
-    return std::to_string(q.closed_lines_without_crossing) + " closed lines cross no other line";
+    return std::to_string(q.closed_lines_without_crossing) + " closed lines (or boundary loops) meet no other line";
+  if(q.broken_holes != 0)
+    return std::to_string(q.broken_holes) + " polygons run partly outside the boundary";
+  if(q.holes != boundary_loops)
+    return "the quads have " + std::to_string(q.holes) + " holes, the input " + std::to_string(boundary_loops) +
+           " boundary loops";
   if(q.non_quads != 0)
     return std::to_string(q.non_quads) + " of " + std::to_string(q.faces.size()) + " faces are not quads";
   std::map<std::pair<std::size_t, std::size_t>, int> edge_faces;
@@ -309,7 +449,7 @@ inline std::string quad_extraction_problem(const Quad_extraction& q, const std::
       ++valence[a];
     }
   for(const auto& [edge, count] : edge_faces)
-    if(count != 2)
+    if(count != 2 && !(count == 1 && q.on_boundary[edge.first] && q.on_boundary[edge.second]))
       return "the edge between vertices " + std::to_string(edge.first) + " and " + std::to_string(edge.second) +
              " has " + std::to_string(count) + " quads";
   if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(q.faces))
@@ -317,13 +457,15 @@ inline std::string quad_extraction_problem(const Quad_extraction& q, const std::
   const long euler = long(q.points.size()) - long(edge_faces.size()) + long(q.faces.size());
   if(euler != chi)
     return "Euler characteristic " + std::to_string(euler) + ", the input's " + std::to_string(chi);
+  // (valence: the quads around a vertex, as many as its edges inside, one fewer on a boundary)
   std::vector<int> expected(q.points.size(), 4);
   for(std::size_t i = 0; i < cone_index.size(); ++i)
     expected[q.cone_vertex[i]] = 4 - cone_index[i];
   for(std::size_t v = 0; v < q.points.size(); ++v)
-    if(valence[v] != expected[v])
-      return "vertex " + std::to_string(v) + " has valence " + std::to_string(valence[v]) + " where " +
-             std::to_string(expected[v]) + " is due";
+    if(q.on_boundary[v] ? valence[v] != 2 : valence[v] != expected[v])
+      return "vertex " + std::to_string(v) + (q.on_boundary[v] ? " on the boundary is in " : " has valence ") +
+             std::to_string(valence[v]) + (q.on_boundary[v] ? " quads where 2 are due" : " where " +
+             std::to_string(expected[v]) + " is due");
   std::size_t flipped = 0;
   for(const auto& face : q.faces)
   {

@@ -80,6 +80,12 @@ public:
       m_level_classes(level_zero_only ? 1 : 2)
   {}
 
+  /// The mesh vertices on a boundary that lies on level lines (`on[v]`): the pieces of level
+  /// lines running from one such vertex to another (along a boundary edge, or a chord between two
+  /// boundary vertices) are not cut, the caller adding the boundary loops itself (the quad
+  /// extraction); lines crossing the boundary still end on it.
+  void set_boundary_vertices(std::vector<bool> on) { m_boundary_vertex = std::move(on); }
+
   /// Cuts one small triangle of face `face` (stripe family `family`) whose angle is linear
   /// between the samples, at every level 0 + 2 pi m and pi + 2 pi m it reaches. `unwrap`: the
   /// samples' values are known only up to multiples of 2 pi (samples of a face with a winding
@@ -225,11 +231,19 @@ private:
     }
     if(a == b)
       return;
+    if(zeros == 2 && on_boundary(a) && on_boundary(b))
+      return; // along the boundary (see set_boundary_vertices())
     // a segment between two corners at the level (a mesh edge, or an edge between two small
     // triangles) is met again from the other side: kept once
     if(zeros == 2 && !m_segment_keys.insert(std::make_pair((std::min)(a, b), (std::max)(a, b))).second)
       return;
     m_segments.push_back({a, b, level_class, family, face.index});
+  }
+
+  bool on_boundary(std::size_t point) const
+  {
+    return point < m_point_vertex.size() && m_point_vertex[point] != none && !m_boundary_vertex.empty() &&
+           m_boundary_vertex[m_point_vertex[point]];
   }
 
   Eigen::Vector3d position(const Face& face, const std::array<double, 3>& b) const
@@ -270,6 +284,8 @@ private:
       {
         id = m_points.size();
         m_points.push_back(face.position[std::size_t(nonzero)]);
+        m_point_vertex.resize(m_points.size(), none);
+        m_point_vertex[id] = face.vertex[std::size_t(nonzero)];
       }
       return id;
     }
@@ -320,6 +336,8 @@ private:
 
   std::vector<Eigen::Vector3d> m_points;
   std::vector<std::size_t> m_vertex_point;
+  std::vector<std::size_t> m_point_vertex; // the mesh vertex a point is at, none elsewhere (may be short)
+  std::vector<bool> m_boundary_vertex;     // see set_boundary_vertices()
   std::vector<std::vector<Carrier_point>> m_edge_points;
   std::map<std::tuple<std::size_t, std::size_t, std::size_t>, std::vector<Carrier_point>> m_local_points;
   int m_class = 0; // the level class being cut: 0 or 1 (pi)
