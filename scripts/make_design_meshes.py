@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # Copyright (c) 2026 The CGAL Surface Design authors.
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Writes the three generated design meshes of data/ (standard library only, deterministic):
+"""Writes the generated meshes of data/ (standard library only, deterministic):
 
 - egg_1k.off: an icosphere (icosahedron, 4-1 subdivided 3 times: 642 vertices, 1280 faces)
   stretched along z by 1.35, its sections widened by (1 + 0.18 z): an egg, blunt end up.
@@ -9,6 +9,8 @@
   its long (x) axis by 0.9 rad per unit length: a twisted pebble.
 - pebble_320.off: the same pebble from the icosphere one level coarser (162 vertices, 320 faces),
   the lighter input of the developability example under the sanitizers.
+- torus_1k.off, noisy_sheet.off: a noisy torus and a noisy half cylinder (below).
+- saddle_l.off: an L-shaped saddle (corners for the field-aligned quads).
 
 Usage: python3 scripts/make_design_meshes.py [OUTPUT_FOLDER]   (default: data/)
 """
@@ -101,6 +103,32 @@ def noisy_sheet(around, along, noise, seed):
     return points, faces
 
 
+def saddle_l(n, jitter, seed):
+    """The n x n grid of [0, 1]^2 without its cells i, j >= n / 2: an L (five convex corners, one
+    concave), the vertices inside it moved by up to `jitter` cells in the plane at random, lifted
+    to the saddle z = 0.4 ((x - 0.5)^2 - (y - 0.5)^2) (the field-aligned quads with corners)."""
+    rng = random.Random(seed)
+    cells = [(i, j) for j in range(n) for i in range(n) if not (i >= n // 2 and j >= n // 2)]
+    in_l = set(cells)
+    index, points = {}, []
+    for j in range(n + 1):
+        for i in range(n + 1):
+            around = sum(1 for c in [(i - 1, j - 1), (i, j - 1), (i - 1, j), (i, j)] if c in in_l)
+            if around == 0:
+                continue
+            x, y = i / n, j / n
+            if around == 4:
+                x += rng.uniform(-jitter, jitter) / n
+                y += rng.uniform(-jitter, jitter) / n
+            index[(i, j)] = len(points)
+            points.append((x, y, 0.4 * ((x - 0.5) ** 2 - (y - 0.5) ** 2)))
+    faces = []
+    for i, j in cells:
+        a, b, c, d = index[(i, j)], index[(i + 1, j)], index[(i, j + 1)], index[(i + 1, j + 1)]
+        faces += [(a, b, d), (a, d, c)] if (i + j) % 2 == 0 else [(a, b, c), (b, d, c)]
+    return points, faces
+
+
 def write_off(path, points, faces, comment):
     with open(path, "w") as f:
         f.write("OFF\n# %s\n%d %d 0\n" % (comment, len(points), len(faces)))
@@ -126,6 +154,10 @@ def main():
     points, faces = noisy_sheet(28, 20, 0.025, 7)
     write_off(os.path.join(out, "noisy_sheet.off"), points, faces,
               "half cylinder 28 x 20, interior vertices moved by up to 0.025 radially at random (seed 7)")
+    points, faces = saddle_l(24, 0.2, 11)
+    write_off(os.path.join(out, "saddle_l.off"), points, faces,
+              "L of the 24 x 24 grid of the unit square, inner vertices moved by up to 0.2 cells (seed 11), "
+              "on z = 0.4 ((x - 0.5)^2 - (y - 0.5)^2)")
 
 
 if __name__ == "__main__":

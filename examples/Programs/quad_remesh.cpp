@@ -45,9 +45,12 @@ const char* usage =
   "  Delaunay Laplacian, h / 2 near the saddles, h / sqrt 2, h / 2).\n"
   "  --method field: the lines of the two stripe families of a cross field with its cones on the\n"
   "  lattice: pure quads whose irregular vertices are exactly the field's cones (valence 3 at +1/4,\n"
-  "  5 at -1/4); closed meshes. Where the lines do not form such a mesh, h is tried 5% smaller and\n"
-  "  5% larger, then the input is remeshed isotropically at edge length h (its triangles' shapes\n"
-  "  can fold the map: decimated meshes) and the whole tried again, before the program fails.\n"
+  "  5 at -1/4). On a mesh with a boundary the field follows it and every boundary loop is a line of\n"
+  "  the quads (valence 3 along it; 2 at a convex corner, 4 at a concave one); a boundary that\n"
+  "  zigzags at the scale of h fails, and so does a field without cones on a surface with several\n"
+  "  boundary loops (not supported yet). Where the lines do not form such a mesh, h is tried 5%\n"
+  "  smaller and 5% larger, then the input is remeshed isotropically at edge length h (its triangles'\n"
+  "  shapes can fold the map: decimated meshes) and the whole tried again, before the program fails.\n"
   "options of both methods:\n"
   "  --method harmonic|field\n"
   "  --edge-length H       target edge length (default: sqrt(area / 3000), about 3000 faces)\n"
@@ -60,9 +63,11 @@ const char* usage =
   "                        pairs of opposite index are removed, others moved apart, and the field is\n"
   "                        the trivial connection with those cones (Crane et al. 2010); a cone of -1/4\n"
   "                        in a face with an angle of 120 degrees or more is moved into a neighbour\n"
+  "                        (closed meshes; with a boundary the field's own cones, moved apart by the\n"
+  "                        smoothest field's normalized flow)\n"
   "  --singularity FACE:K/4  a cone of index K/4 (K = 1 or -1) in FACE (repeatable): the field is the\n"
   "                        trivial connection with exactly these cones (they must sum to the Euler\n"
-  "                        characteristic)\n"
+  "                        characteristic; closed meshes only, for now)\n"
   "  --stiffening-rounds R rounds of local stiffening where the map folds (default 10, R in [0, 64])\n"
   "  --no-input-remeshing  fail where the input's own triangles do not give the quads (given cones\n"
   "                        go, on the remeshed input, to the faces nearest theirs)\n"
@@ -312,9 +317,8 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
   Mesh mesh = surface; // with the field as a property
   auto field = mesh.add_property_map<Mesh::Vertex_index, program::Vector>("v:cross_field").first;
   auto index = mesh.add_property_map<Mesh::Face_index, int>("f:cone", 0).first;
-  // a cross field (curvature-aligned or not) and its cones (`out_cones`: the count returned)
-  // along the boundary, if any: one of its directions normal to it, so that the boundary is a
-  // line of the quads
+  // a cross field (curvature-aligned or not) and its cones (`out_cones`: the count returned); on
+  // a mesh with a boundary, along it (then a line of the quads), its cones kept apart by the flow
   const bool closed = CGAL::is_closed(mesh);
   auto compute = [&mesh, closed](bool aligned, auto out, auto out_cones, auto solver) {
     SD::smoothest_direction_field(
@@ -450,7 +454,7 @@ Mesh isotropically_remeshed(const Mesh& input, double h)
                                                      CGAL::parameters::number_of_iterations(5));
   remeshed.collect_garbage();
   const long before = euler_characteristic(input), after = euler_characteristic(remeshed);
-  if(after != before || !CGAL::is_closed(remeshed))
+  if(after != before || CGAL::is_closed(remeshed) != CGAL::is_closed(input))
     throw std::runtime_error("the isotropic remeshing of the input changed its topology (Euler characteristic " +
                              std::to_string(before) + " -> " + std::to_string(after) + "); nothing written");
   return remeshed;

@@ -297,7 +297,23 @@ for args in "--method" "--method magic" "--target-faces 0" "--target-faces -5" "
   # shellcheck disable=SC2086
   refuse quad_remesh "$E" $args --output "$O/q.off"
 done
-refuse quad_remesh "$DATA/hemisphere.off" --method field --output "$O/q.off"
+# a boundary: its loops are lines of the quads (boundary vertices of valence 3, the cones the
+# irregular vertices inside); prescribed cones there are not supported yet
+refuse quad_remesh "$DATA/hemisphere.off" --method field --singularity 3:1/4 --output "$O/q.off"
+accept quad_remesh "$DATA/hemisphere.off" --method field --target-faces 600 --output "$O/disk.off"
+cones=$(sed -n 's/^field-aligned quads (h = [^)]*): \([0-9]*\) cones.*/\1/p' "$WORK/stdout")
+if ! grep -q "100.0% quads" "$WORK/stdout" || [ -z "$cones" ] || ! grep -q "^  $cones irregular vertices" "$WORK/stdout" ||
+   ! grep -q "1 boundary loops, 1 components (as the input's)" "$WORK/stdout"; then
+  echo "FAILED: quad_remesh hemisphere.off --method field: $(grep -E "cones|quads|irregular|boundary" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
+# corners: one quad at each of the L's five convex corners, three at its concave one
+accept quad_remesh "$DATA/saddle_l.off" --method field --target-faces 300 --output "$O/l.off"
+if ! grep -q "100.0% quads" "$WORK/stdout" || ! grep -q "^  6 irregular vertices" "$WORK/stdout" ||
+   ! grep -q "field-aligned quads (h = [^)]*): 0 cones" "$WORK/stdout"; then
+  echo "FAILED: quad_remesh saddle_l.off --method field: $(grep -E "cones|quads|irregular" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
 # pure quads whose irregular vertices are the field's cones (the program checks it too)
 accept quad_remesh "$E" --method field --target-faces 800 --output "$O/field.off"
 cones=$(sed -n 's/^field-aligned quads (h = [^)]*): \([0-9]*\) cones.*/\1/p' "$WORK/stdout")

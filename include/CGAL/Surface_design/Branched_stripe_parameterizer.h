@@ -701,6 +701,15 @@ public:
     add_isolines(builder, 9);
     return builder.polylines();
   }
+  /// With the boundary on level lines: the boundary vertices (indices) where the family normal to
+  /// the boundary switches (`internal::boundary_family_switches()`), where the level lines of
+  /// both families meet the boundary: the corners of the quads; empty otherwise.
+  std::vector<std::size_t> boundary_corners() const
+  {
+    if(!m_boundary_level)
+      return {};
+    return internal::boundary_family_switches(*m_idx, *m_topology, cover(), level_sheets(cover()));
+  }
   const internal::Mesh_indices<TriangleMesh>& indices() const { return *m_idx; }
   const internal::Topology& topology() const { return *m_topology; }
   const internal::Direction_field_cover& cover() const { require_field(); return m_solver->cover(); }

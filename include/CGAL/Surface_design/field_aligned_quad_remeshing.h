@@ -61,15 +61,20 @@ struct Field_aligned_quads_round
 /// The quad mesh of the level-0 lines of `bsp`'s two stripe families, added to `out`: the step
 /// of `field_aligned_quad_remeshing()` after the stripes are set up, for a caller that keeps the
 /// parameterizer and edits its field or spacing (the editor's live quad preview). `bsp` must be
-/// a cross field's (`symmetry_order(4)`) on a closed mesh, with its field set
-/// (`set_field(field, 1 / h)`: h is the spacing of the lines), lattice branch points
-/// (`set_lattice_branch_points(true)`) and no stripe singularity (a dislocation is a
-/// T-junction); it is solved first if it is not.
+/// a cross field's (`symmetry_order(4)`), with its field set (`set_field(field, 1 / h)`: h is
+/// the spacing of the lines), lattice branch points (`set_lattice_branch_points(true)`), no
+/// stripe singularity (a dislocation is a T-junction) and, on a mesh with a boundary, the
+/// boundary on level lines (`set_boundary_on_level_lines(true)`); it is solved first if it is
+/// not.
 ///
 /// The lines' crossings are the vertices, the cones the irregular vertices, the faces are traced
 /// from the order of the lines around every vertex, and the result is checked: only quads, every
 /// edge shared by two of them, a manifold mesh, the input's Euler characteristic, valence 4 - k
-/// at every cone of index k / 4 and 4 elsewhere, every quad facing the way of the surface. Where
+/// at every cone of index k / 4 and 4 elsewhere, every quad facing the way of the surface. A
+/// boundary loop is a line too: the lines of the other family end on it, each at a vertex of
+/// valence 3, and at its corners (`boundary_corners()`: where the family normal to it switches)
+/// the quads have a vertex of valence 2 (an angle below 180 degrees) or 4 (above); the polygons
+/// traced outside the loops must be the input's holes, one per loop. Where
 /// it is not so, the faces where the map folds (`folded_faces()`) are stiffened (`stiffen()`,
 /// times 4, and the faces around them times 2 when the input has 1.5 triangles per quad or more)
 /// and `bsp` solved and extracted again, up to `stiffening_rounds` times (Bommes et al.
@@ -99,10 +104,10 @@ struct Field_aligned_quads_round
 ///
 /// \throws Invalid_parameter (rounds out of range, more than 10^7 quads); Invalid_constraints
 ///         (not a cross field's stripes, no field, branch points off the lattice, a stripe
-///         singularity, or cones that no windings put on the lattice); Invalid_mesh for a mesh
-///         with a boundary (`Mesh_defect::not_closed`); Remeshing_failure when the lines do not
-///         form the field's quad mesh after the last round, or when the visitor stopped the
-///         rounds before. `out` is not modified when it throws.
+///         singularity, or cones that no windings put on the lattice, a boundary not on level
+///         lines); Remeshing_failure when the lines do not form the field's quad mesh after the
+///         last round, or when the visitor stopped the rounds before. `out` is not modified when
+///         it throws.
 template <class TriangleMesh, class VertexPointMap, class SolverTraits, class PolygonMesh,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 Field_aligned_quad_remeshing_result
@@ -133,7 +138,6 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
     throw Invalid_constraints("extract_field_aligned_quads(): the mesh has a boundary and it is not on level lines "
                               "(call set_boundary_on_level_lines(true)): the quads would not follow it");
   const auto& idx = bsp.indices();
-  internal::require_smooth_boundary(idx, bsp.vertex_point_map());
   for(auto f : faces(bsp.mesh()))
     for(int family = 0; family < 2; ++family)
       if(bsp.index(f, family) != 0)
@@ -170,6 +174,14 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
   // quad, needs 4 graded rounds instead of 9, fertility 5 instead of 7)
   const double ring_factor = double(num_faces(bsp.mesh())) * h * h >= 1.5 * surface.area ? 2. : 1.;
   const std::vector<internal::Stripe_isoline_polyline> boundary = internal::boundary_polylines(idx, bsp.vertex_point_map());
+  // the corners: one quad where the surface's angle is below 180 degrees, three above
+  std::vector<internal::Quad_extraction_corner> corners;
+  {
+    const std::vector<double> angle_sum =
+      internal::vertex_angle_sums(idx, internal::corner_angles(idx, bsp.vertex_point_map()));
+    for(std::size_t v : bsp.boundary_corners())
+      corners.push_back({internal::position(bsp.vertex_point_map(), idx.vertex(v)), angle_sum[v] < CGAL_PI ? 1 : 3});
+  }
   internal::Quad_extraction q;
   double extraction_seconds = 0.;
   for(;;)
@@ -180,7 +192,7 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
     result.folded_faces = folded.size();
     const auto extraction_start = Clock::now();
     q = internal::extract_quads(bsp.level_zero_polylines(), surface.normal, cones,
-                                1e-9 * std::sqrt(surface.area), 0., boundary);
+                                1e-9 * std::sqrt(surface.area), 0., boundary, corners);
     const std::string problem = internal::quad_extraction_problem(q, cone_index, chi, surface.normal, boundary_loops);
     extraction_seconds += seconds_since(extraction_start);
     bool go_on = true;
@@ -259,11 +271,20 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
 
 /// \ingroup PkgFieldAlignedParameterizationRef
 ///
-/// Remeshes the closed triangle mesh `tm` into a pure quad mesh aligned with the cross field
-/// `field` (one vector per vertex, any of its four directions: `smoothest_direction_field()`
-/// with `symmetry_order(4)`, or `Trivial_connection` with cones where the user wants them) and
-/// adds it to `out`. Its irregular vertices are the field's cones, one to one: valence 3 at a
+/// Remeshes the triangle mesh `tm` into a pure quad mesh aligned with the cross field `field`
+/// (one vector per vertex, any of its four directions: `smoothest_direction_field()` with
+/// `symmetry_order(4)`, or `Trivial_connection` with cones where the user wants them) and adds
+/// it to `out`. Its irregular vertices inside are the field's cones, one to one: valence 3 at a
 /// cone of index +1/4, 5 at -1/4.
+///
+/// **Boundaries.** On a mesh with a boundary the field should follow it
+/// (`smoothest_direction_field()` with `field_boundary_condition(Direction_field_boundary::tangent)`,
+/// and `unit_length_iterations()` to keep its cones apart): every boundary loop is then put on a
+/// level line of the family normal to it (`Branched_stripe_parameterizer::set_boundary_on_level_lines()`)
+/// and is a loop of edges of the quads, with vertices of valence 3 along it, 2 at a convex
+/// corner and 4 at a concave one (where the family normal to the boundary switches). Not
+/// supported yet (`Invalid_constraints`): a field without cones on a component with several
+/// boundary loops.
 ///
 /// **How.** The two stripe families of `Branched_stripe_parameterizer` with n = 4, spacing h, no
 /// stripe singularity (no T-junction) and every branch point on the lattice
@@ -271,7 +292,7 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
 /// lines meet at right angles and whose cones are lattice points. Its level-0 lines are the
 /// quad mesh of `extract_field_aligned_quads()`, checked, and stiffened where the map folds.
 ///
-/// \param tm a closed triangle mesh (model of `FaceListGraph`)
+/// \param tm a triangle mesh (model of `FaceListGraph`)
 /// \param field a readable vertex -> `Vector_3` map
 /// \param out a model of `MutableFaceGraph` receiving the quads
 /// \param np an optional sequence of named parameters among the ones listed below
@@ -303,10 +324,10 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \throws Invalid_mesh on bad input and for a mesh with a boundary (`Mesh_defect::not_closed`);
-///         Invalid_parameter (h not finite and positive, more than 10^7 quads, rounds out of
-///         range, a field vector not finite or normal to the surface); Invalid_constraints
-///         (cones that no quad mesh has: no windings put them all on the lattice);
+/// \throws Invalid_mesh on bad input; Invalid_parameter (h not finite and positive, more than
+///         10^7 quads, rounds out of range, a field vector not finite or normal to the surface);
+///         Invalid_constraints (cones that no quad mesh has: no windings put them all on the
+///         lattice; a field without cones on a component with several boundary loops);
 ///         Remeshing_failure when the lines do not form such a quad mesh (the map still folds:
 ///         another h often helps; the message names a cone of -1/4 in a face with an angle of
 ///         120 degrees or more, see `Trivial_connection::move_singularities_from_wide_faces()`).
@@ -338,10 +359,7 @@ Field_aligned_quad_remeshing_result field_aligned_quad_remeshing(const TriangleM
   for(const auto& c : bsp.topology().components.info)
     boundary = boundary || c.boundary_loops != 0;
   if(boundary)
-  {
-    internal::require_smooth_boundary(bsp.indices(), bsp.vertex_point_map());
     bsp.set_boundary_on_level_lines(true);
-  }
   bsp.set_field(field, 1. / h); // throws where the field runs along the boundary
   bsp.solve();
   // (the parameters it reads: the rounds and the visitor)

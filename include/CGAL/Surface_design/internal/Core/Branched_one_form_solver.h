@@ -518,6 +518,7 @@ private:
     const std::size_t nf = m_idx.number_of_faces(), nd = nf + loops.size();
     std::vector<std::size_t> parent_edge_of(nd, npos);
     std::vector<bool> reached(nd, false), in_forest(m_idx.number_of_edges(), false);
+    std::vector<bool> stokes_fixed(m_idx.number_of_edges(), false); // no free winding (below)
     std::vector<std::size_t> order;
     order.reserve(nd);
     auto dual_node = [&](std::size_t h) {
@@ -572,9 +573,7 @@ private:
             "its sheets are exchanged around a loop (a twisted field on a torus): stripes on such a field are not "
             "supported; give the field a pair of singularities");
         if(m_cover.d == 2 && m_level_component[c])
-          throw Invalid_constraints(
-            "connected component " + std::to_string(c) + ": a cross field without singularity whose boundary lies on "
-            "level lines is not supported yet (the two families' windings along the boundary loops are coupled)");
+          stokes_fixed[stokes_loop_edge(m_idx, m_topology, c)] = true; // (cover_constraints.h)
         m_stokes_component[c] = true;
         reached[f] = true;
         const std::size_t head = order.size();
@@ -618,7 +617,7 @@ private:
     std::vector<std::size_t> free_edges, last;
     std::vector<bool> component_has_last(m_topology.components.size(), false);
     for(std::size_t e = 0; e < in_forest.size(); ++e)
-      if(!t.edge_in_tree[e] && !in_forest[e])
+      if(!t.edge_in_tree[e] && !in_forest[e] && !stokes_fixed[e])
       {
         const std::size_t c = m_topology.components.vertex_component[m_ends[e].first];
         if(m_cover.n == 4 && m_cover.matching[e] % 2 == 1 && !component_has_last[c])

@@ -201,6 +201,64 @@ std::vector<std::uint8_t> boundary_normal_sheets(const Indices& idx, const Topol
   return mask;
 }
 
+/// The boundary vertices where the family normal to the boundary switches between the vertex's
+/// two boundary edges (`mask` from `boundary_normal_sheets()`, families: sheets modulo d): the
+/// corners, where the level lines of both families meet the boundary and alpha = 0 on both.
+template <class Indices>
+std::vector<std::size_t> boundary_family_switches(const Indices& idx, const Topology& topology,
+                                                  const Direction_field_cover& cover, const std::vector<std::uint8_t>& mask)
+{
+  // the families (bit mask) normal to boundary edge e, in the frame of its end v
+  auto families_at = [&](std::size_t e, std::size_t v) {
+    const auto oriented = idx.oriented_halfedge(e);
+    const int shift = idx.source_index(oriented) == v ? 0 : cover.matching[e];
+    unsigned bits = 0;
+    for(int a = 0; a < cover.d; ++a)
+      if((mask[e] >> a) & 1)
+        bits |= 1u << ((a + shift) % cover.n % cover.d);
+    return bits;
+  };
+  std::vector<std::size_t> corners;
+  for(const auto& loop : topology.boundary.loops)
+    for(std::size_t k = 0; k < loop.size(); ++k)
+    {
+      // border halfedges in next() order: the target of one is the source of the next
+      const auto h = idx.halfedge(loop[k]), g = idx.halfedge(loop[(k + 1) % loop.size()]);
+      const std::size_t v = idx.target_index(h);
+      if(families_at(idx.edge_index(h), v) != families_at(idx.edge_index(g), v))
+        corners.push_back(v);
+    }
+  return corners;
+}
+
+/// A cross field without branch face on component c, whose boundary loops all lie on level lines:
+/// the dual forest has no root there, and one face's closure must follow from the others'. By
+/// Stokes the curls of all faces sum to the sums of y along the loops, sheet by sheet (their
+/// transport is trivial: the component is not twisted). With one loop, all its edges in the tree
+/// but one, e_L, that sum is 2 pi m on e_L's sheet that is not on a level line: the closure holds
+/// when that winding is 0, so it is not free. Returns e_L.
+/// \throws Invalid_constraints with several loops (their windings are coupled: not supported yet)
+template <class Indices>
+std::size_t stokes_loop_edge(const Indices& idx, const Topology& topology, std::size_t c)
+{
+  const Boundary_loops& loops = topology.boundary;
+  std::size_t loops_here = 0, e_last = npos;
+  for(const auto& loop : loops.loops)
+    if(topology.components.vertex_component[idx.target_index(idx.halfedge(loop.front()))] == c)
+    {
+      ++loops_here;
+      for(std::size_t h : loop)
+        if(!topology.tree.edge_in_tree[idx.edge_index(idx.halfedge(h))])
+          e_last = idx.edge_index(idx.halfedge(h));
+    }
+  if(loops_here != 1 || e_last == npos)
+    throw Invalid_constraints("connected component " + std::to_string(c) +
+                              ": a cross field without singularity on a surface with " + std::to_string(loops_here) +
+                              " boundary loops on level lines is not supported yet (the two families' windings "
+                              "along the loops are coupled)");
+  return e_last;
+}
+
 /// Pins one value per free component of every piece of the graph of edges of non-zero weight
 /// whose transport is trivial: there the stripes are free up to a constant c transported along
 /// the piece (f_v = G_v^T c), but for the components of c that the values already fixed (on

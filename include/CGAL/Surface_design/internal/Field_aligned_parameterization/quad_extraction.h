@@ -8,7 +8,6 @@
 #ifndef CGAL_SURFACE_DESIGN_INTERNAL_FIELD_ALIGNED_PARAMETERIZATION_QUAD_EXTRACTION_H
 #define CGAL_SURFACE_DESIGN_INTERNAL_FIELD_ALIGNED_PARAMETERIZATION_QUAD_EXTRACTION_H
 
-#include <CGAL/Surface_design/exceptions.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>
 #include <CGAL/Surface_design/internal/Core/topology.h>
 #include <CGAL/Surface_design/internal/Field_aligned_parameterization/stripe_isolines.h>
@@ -41,39 +40,13 @@ struct Quad_extraction
   std::vector<std::vector<std::size_t>> faces;         ///< every traced polygon, counterclockwise
   std::vector<std::size_t> cone_vertex;                ///< per cone (input order), its vertex
   std::vector<bool> on_boundary;                       ///< per point: whether it lies on a boundary loop
+  std::vector<std::pair<std::size_t, int>> corner_vertex; ///< boundary corners: (vertex, the quads due there)
   std::size_t non_quads = 0;                           ///< faces with other than four sides
   std::size_t open_ends = 0;                           ///< lines ending elsewhere than at a cone or a boundary
   std::size_t closed_lines_without_crossing = 0;       ///< closed lines (boundary loops too) that meet no other line
   std::size_t holes = 0;                               ///< polygons traced outside a boundary loop (not in faces)
   std::size_t broken_holes = 0;                        ///< polygons running partly outside a boundary loop
 };
-
-/// Throws Invalid_constraints at the boundary vertex where the boundary turns the most if it turns
-/// by more than 45 degrees there (the angle between its two boundary edges' directions): a corner,
-/// where the quads would need a vertex of valence 2 or 4 on the boundary, which the extraction
-/// does not make yet.
-template <class Indices, class VertexPointMap>
-void require_smooth_boundary(const Indices& idx, const VertexPointMap& vpm)
-{
-  const auto& tm = idx.mesh();
-  double largest = 0.;
-  std::size_t at = 0;
-  for(std::size_t i = 0; i < idx.number_of_halfedges(); ++i)
-  {
-    const auto h = idx.halfedge(i);
-    if(!idx.is_border(h))
-      continue;
-    const Eigen::Vector3d a = position(vpm, source(h, tm)), b = position(vpm, target(h, tm)),
-                          c = position(vpm, target(next(h, tm), tm));
-    const double turn = std::atan2((b - a).cross(c - b).norm(), (b - a).dot(c - b));
-    if(turn > largest)
-      largest = turn, at = idx.index(target(h, tm));
-  }
-  if(largest > CGAL_PI / 4.)
-    throw Invalid_constraints("the boundary turns by " + std::to_string(int(std::lround(largest * 180. / CGAL_PI))) +
-                              " degrees at vertex " + std::to_string(at) + ": the quads follow boundaries that turn by "
-                              "at most 45 degrees at every vertex; corners are not supported yet");
-}
 
 /// The boundary loops of the input as closed polylines, the surface on their left (along the
 /// face's halfedges): points at the boundary vertices, faces[i] the face of the edge from points[i].
@@ -98,6 +71,14 @@ std::vector<Stripe_isoline_polyline> boundary_polylines(const Indices& idx, cons
   return result;
 }
 
+/// A corner of the boundary (a boundary vertex where the family normal to it switches): the
+/// point of the mesh vertex and the quads due there (1 at a convex corner, 3 at a concave one).
+struct Quad_extraction_corner
+{
+  Eigen::Vector3d point;
+  int quads;
+};
+
 /// One cone of the field: its branch face and the branch point (where its lines end).
 struct Quad_extraction_cone
 {
@@ -107,10 +88,12 @@ struct Quad_extraction_cone
 
 /// The quad layout of the lines of level `level` (0 or pi, both families; the other lines are
 /// ignored): level 0 where the cones are on the lattice; without cones either level works, and pi
-/// avoids the mesh vertex where the stripe angle is pinned to 0. `normal` gives each input face's unit normal (the orientation of the surface),
-/// `cones` the branch points where lines end (within `tolerance` of the point). `boundary`: the
-/// input's boundary loops (`boundary_polylines()`) where they lie on level lines: the lines that
-/// end on them make vertices there, and the polygons traced outside them are the holes.
+/// avoids the mesh vertex where the stripe angle is pinned to 0. `normal` gives each input face's
+/// unit normal (the orientation of the surface), `cones` the branch points where lines end
+/// (within `tolerance` of the point). `boundary`: the input's boundary loops
+/// (`boundary_polylines()`) where they lie on level lines: the lines that end on them make
+/// vertices there, and the polygons traced outside them are the holes; `corners` are vertices
+/// too, lines ending there or not.
 ///
 /// Vertices: every crossing of two pieces of line inside one input face (pieces are half-open at
 /// their ends, so that a crossing on an input edge is counted once), and every cone. Edges: the
@@ -121,7 +104,8 @@ inline Quad_extraction extract_quads(const std::vector<Stripe_isoline_polyline>&
                                      const std::vector<Eigen::Vector3d>& normal,
                                      const std::vector<Quad_extraction_cone>& cones, double tolerance,
                                      double level = 0.,
-                                     const std::vector<Stripe_isoline_polyline>& boundary = {})
+                                     const std::vector<Stripe_isoline_polyline>& boundary = {},
+                                     const std::vector<Quad_extraction_corner>& corners = {})
 {
   std::vector<const Stripe_isoline_polyline*> lines;
   for(const auto& line : all_lines)
@@ -229,6 +213,33 @@ inline Quad_extraction extract_quads(const std::vector<Stripe_isoline_polyline>&
         boundary_vertex.emplace(std::array<double, 3>{x.x(), x.y(), x.z()}, std::make_pair(l, i));
       }
     std::map<std::pair<std::size_t, std::size_t>, std::vector<std::pair<double, std::size_t>>> on_piece;
+    for(const auto& corner : corners)
+    {
+      const auto it = boundary_vertex.find({corner.point.x(), corner.point.y(), corner.point.z()});
+      if(it == boundary_vertex.end())
+        continue; // not a boundary vertex: the check finds its quads missing
+      const auto [b, i] = it->second;
+      const std::size_t v = add_point(corner.point, lines[b]->faces[i]);
+      out.on_boundary[v] = true;
+      out.corner_vertex.emplace_back(v, corner.quads);
+      on_piece[{b, i}].emplace_back(double(i), v);
+      on_line[b].emplace_back(double(i), v);
+      // the lines through the corner (at a concave one the two continuations of the boundary's
+      // lines into the surface, chained into one line there) or ending there
+      for(std::size_t l = 0; l < first_boundary_line; ++l)
+      {
+        const auto& line = *lines[l];
+        for(std::size_t k = 0; k < line.points.size(); ++k)
+          if((line.points[k] - corner.point).norm() < tolerance)
+          {
+            on_line[l].emplace_back(double(k), v);
+            if(!line.closed && k == 0)
+              end_used[2 * l] = true;
+            if(!line.closed && k + 1 == line.points.size())
+              end_used[2 * l + 1] = true;
+          }
+      }
+    }
     auto boundary_point = [&](const Eigen::Vector3d& x, std::size_t f) -> std::pair<std::size_t, double> {
       for(const auto& [l, s] : in_face[f])
       {
@@ -420,8 +431,8 @@ Eigen::Vector3d point_in_face(const Indices& idx, const VertexPointMap& vpm, std
 /// Checks that the extraction is a pure quad mesh with Euler characteristic `chi` and
 /// `boundary_loops` holes (every line ending at a cone or on a boundary loop, every edge in two
 /// quads, or in one along a boundary) whose vertex at cone i has valence 4 - cone_index[i], every
-/// boundary vertex valence 3 (in two quads: the boundary has no corner) and every other vertex
-/// valence 4, and whose quads face the way of the input (the normal of a quad, the cross product
+/// boundary vertex valence 3 (in two quads) but the corners (in the quads due there) and every
+/// other vertex valence 4, and whose quads face the way of the input (the normal of a quad, the cross product
 /// of its diagonals, against the unit normals `normal` of the input faces its corners lie in).
 /// Returns what is wrong, or an empty string.
 inline std::string quad_extraction_problem(const Quad_extraction& q, const std::vector<int>& cone_index, long chi,
@@ -462,10 +473,14 @@ inline std::string quad_extraction_problem(const Quad_extraction& q, const std::
   for(std::size_t i = 0; i < cone_index.size(); ++i)
     expected[q.cone_vertex[i]] = 4 - cone_index[i];
   for(std::size_t v = 0; v < q.points.size(); ++v)
-    if(q.on_boundary[v] ? valence[v] != 2 : valence[v] != expected[v])
-      return "vertex " + std::to_string(v) + (q.on_boundary[v] ? " on the boundary is in " : " has valence ") +
-             std::to_string(valence[v]) + (q.on_boundary[v] ? " quads where 2 are due" : " where " +
-             std::to_string(expected[v]) + " is due");
+    if(q.on_boundary[v])
+      expected[v] = 2;
+  for(const auto& [v, quads] : q.corner_vertex)
+    expected[v] = quads;
+  for(std::size_t v = 0; v < q.points.size(); ++v)
+    if(valence[v] != expected[v])
+      return "vertex " + std::to_string(v) + (q.on_boundary[v] ? " on the boundary is in " : " is in ") +
+             std::to_string(valence[v]) + " quads where " + std::to_string(expected[v]) + " are due";
   std::size_t flipped = 0;
   for(const auto& face : q.faces)
   {
