@@ -181,17 +181,14 @@ inline Quad_extraction extract_quads(const std::vector<Stripe_isoline_polyline>&
         on_line[l2].emplace_back(double(s2) + b, v);
       }
   }
-  // cones: the points of lines at their branch points (line ends, or points a line runs through)
+  // vertex v at point x on every line (not the boundary's) that ends there or runs through it
   std::vector<bool> end_used(2 * lines.size(), false);
-  for(const auto& cone : cones)
-  {
-    const std::size_t v = add_point(cone.point, cone.face);
-    out.cone_vertex.push_back(v);
-    for(std::size_t l = 0; l < lines.size(); ++l)
+  auto on_lines_at = [&](const Eigen::Vector3d& x, std::size_t v) {
+    for(std::size_t l = 0; l < first_boundary_line; ++l)
     {
       const auto& line = *lines[l];
       for(std::size_t i = 0; i < line.points.size(); ++i)
-        if((line.points[i] - cone.point).norm() < tolerance)
+        if((line.points[i] - x).norm() < tolerance)
         {
           on_line[l].emplace_back(double(i), v);
           if(!line.closed && i == 0)
@@ -200,6 +197,13 @@ inline Quad_extraction extract_quads(const std::vector<Stripe_isoline_polyline>&
             end_used[2 * l + 1] = true;
         }
     }
+  };
+  // cones: the points of lines at their branch points (line ends, or points a line runs through)
+  for(const auto& cone : cones)
+  {
+    const std::size_t v = add_point(cone.point, cone.face);
+    out.cone_vertex.push_back(v);
+    on_lines_at(cone.point, v);
   }
   // the ends on the boundary: a point of a boundary piece in the end's face (on the boundary
   // edge), or a boundary vertex; lines ending at the same point share its vertex
@@ -226,19 +230,7 @@ inline Quad_extraction extract_quads(const std::vector<Stripe_isoline_polyline>&
       on_line[b].emplace_back(double(i), v);
       // the lines through the corner (at a concave one the two continuations of the boundary's
       // lines into the surface, chained into one line there) or ending there
-      for(std::size_t l = 0; l < first_boundary_line; ++l)
-      {
-        const auto& line = *lines[l];
-        for(std::size_t k = 0; k < line.points.size(); ++k)
-          if((line.points[k] - corner.point).norm() < tolerance)
-          {
-            on_line[l].emplace_back(double(k), v);
-            if(!line.closed && k == 0)
-              end_used[2 * l] = true;
-            if(!line.closed && k + 1 == line.points.size())
-              end_used[2 * l + 1] = true;
-          }
-      }
+      on_lines_at(corner.point, v);
     }
     auto boundary_point = [&](const Eigen::Vector3d& x, std::size_t f) -> std::pair<std::size_t, double> {
       for(const auto& [l, s] : in_face[f])
