@@ -277,6 +277,17 @@ TEMPLATE_TEST_CASE("Field-aligned quads on a surface with a boundary: the bounda
     CHECK(r.cones == cones.size());
     CHECK(r.faces == num_faces(out));
     CHECK(std::abs(double(r.faces) / quads - 1.) < 0.25);
+    {
+      // the reading sees a boundary vertex moved off the input's boundary
+      Quad_mesh moved = out;
+      for(auto v : vertices(moved))
+        if(CGAL::is_border(v, moved))
+        {
+          moved.point(v) = CGAL::midpoint(moved.point(v), CGAL::ORIGIN + (moved.point(v) - CGAL::ORIGIN) * 0.9);
+          break;
+        }
+      CHECK(quad_mesh_problem(mesh, cones, moved) == "a boundary vertex off the input's boundary");
+    }
     const SD::Quad_mesh_quality q = SD::quad_mesh_quality(out, mesh);
     CHECK(q.same_topology);
     CHECK(q.boundary_loops == 1);

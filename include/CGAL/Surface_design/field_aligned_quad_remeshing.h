@@ -131,9 +131,7 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
   if(!bsp.lattice_branch_points())
     throw Invalid_constraints("extract_field_aligned_quads(): the branch points are not on the lattice (call "
                               "set_lattice_branch_points(true)): the cones would not be vertices of the quads");
-  std::size_t boundary_loops = 0;
-  for(const auto& c : bsp.topology().components.info)
-    boundary_loops += c.boundary_loops;
+  const std::size_t boundary_loops = bsp.topology().boundary.size();
   if(boundary_loops != 0 && !bsp.boundary_on_level_lines())
     throw Invalid_constraints("extract_field_aligned_quads(): the mesh has a boundary and it is not on level lines "
                               "(call set_boundary_on_level_lines(true)): the quads would not follow it");
@@ -355,10 +353,7 @@ Field_aligned_quad_remeshing_result field_aligned_quad_remeshing(const TriangleM
                                                     std::to_string(h));
   // (the switches first: set_field() then factors once)
   bsp.set_lattice_branch_points(true);
-  bool boundary = false;
-  for(const auto& c : bsp.topology().components.info)
-    boundary = boundary || c.boundary_loops != 0;
-  if(boundary)
+  if(bsp.topology().boundary.size() != 0)
     bsp.set_boundary_on_level_lines(true);
   bsp.set_field(field, 1. / h); // throws where the field runs along the boundary
   bsp.solve();
