@@ -13,6 +13,8 @@
 #include <CGAL/Surface_design/mesh_generators.h>
 #include <CGAL/Surface_design/Trivial_connection.h>
 
+#include <CGAL/boost/graph/copy_face_graph.h>
+
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
@@ -20,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <random>
 
 namespace SD = CGAL::Surface_design;
@@ -747,6 +750,173 @@ TEMPLATE_TEST_CASE("Trivial connections have exactly the prescribed singularitie
     SD_FOR_EACH_SOLVER(SD_RUN)
 #undef SD_RUN
   }
+}
+
+namespace {
+
+// Checks a trivial connection whose field follows the boundary: exactly the prescribed indices;
+// at every boundary vertex one of the n directions along the boundary edge leaving it (read back
+// from the 3D vectors); least norm given the boundary: d0^T x = 0 at every interior vertex, but
+// not at every boundary vertex (else the condition would be the free problem's).
+template <class Mesh, class Tc>
+void check_boundary_aligned(const Mesh& mesh, const Tc& tc, const std::map<Face<Mesh>, int>& prescribed)
+{
+  const int n = tc.symmetry_order();
+  const auto& idx = tc.indices();
+  REQUIRE(tc.largest_adjustment() < pi);
+  Vector_map<Mesh> field;
+  tc.field(boost::make_assoc_property_map(field));
+  check_unit_tangent(mesh, field);
+  const auto index = indices_of(mesh, field, n);
+  for(auto f : faces(mesh))
+  {
+    const auto it = prescribed.find(f);
+    REQUIRE(index.at(f) == double(it == prescribed.end() ? 0 : it->second) / n);
+  }
+  const auto& frames = tc.connection().frames;
+  const SDI::Mesh_indices<Mesh> own(mesh);
+  const auto normal = SDI::vertex_normals(own, get(CGAL::vertex_point, mesh));
+  for(auto h : halfedges(mesh))
+    if(is_border(opposite(h, mesh), mesh))
+    {
+      const std::size_t v = idx.index(source(h, mesh));
+      const Eigen::Vector3d x = to_eigen(field.at(source(h, mesh)));
+      // the field's angle in the frame, where the boundary edge leaving v has angle 0
+      const double a = n * frames.to_angle(v, x);
+      REQUIRE(std::abs(SDI::wrap_angle(a)) < 1e-9);
+      // and in 3D: x at a multiple of 2 pi / n from the edge projected to the tangent plane
+      const auto& p = get(CGAL::vertex_point, mesh, source(h, mesh));
+      const auto& q = get(CGAL::vertex_point, mesh, target(h, mesh));
+      Eigen::Vector3d t(q.x() - p.x(), q.y() - p.y(), q.z() - p.z());
+      const Eigen::Vector3d nv = normal[own.index(source(h, mesh))];
+      t = (t - t.dot(nv) * nv).normalized();
+      const double turn = std::atan2(nv.dot(t.cross(x)), t.dot(x));
+      REQUIRE(std::abs(SDI::wrap_angle(n * turn)) < 1e-6);
+    }
+  const std::vector<double> x = tc.adjustment();
+  const Eigen::VectorXd xe = Eigen::Map<const Eigen::VectorXd>(x.data(), Eigen::Index(x.size()));
+  const Eigen::VectorXd div = SDI::Sparse_matrix(SDI::d0(idx).transpose()) * xe;
+  double largest_at_boundary = 0.;
+  for(auto v : vertices(mesh))
+    if(CGAL::is_border(v, mesh))
+      largest_at_boundary = (std::max)(largest_at_boundary, std::abs(div[Eigen::Index(idx.index(v))]));
+    else
+      REQUIRE(std::abs(div[Eigen::Index(idx.index(v))]) < 1e-9);
+  REQUIRE(largest_at_boundary > 1e-3);
+}
+
+} // namespace
+
+TEMPLATE_TEST_CASE("Trivial connections along the boundary: the field follows it, the sum is Poincaré-Hopf's "
+                   "with the boundary's turning, the rest of least norm", "[direction_fields][boundary]",
+                   SD_MESH_TYPES)
+{
+  struct Case
+  {
+    std::string mesh;
+    int n;
+    long required; // Poincaré-Hopf: n chi less the boundary's turning (n-fold, in units of 2 pi)
+    std::vector<std::pair<std::size_t, int>> singularities;
+  };
+  // the square: its corners turn by 90 degrees, a full turn for n = 4 (no cone needed) and a
+  // quarter for n = 1 (one +1 inside); the grid with two square holes, chi = -1: a constant
+  // cross field follows all three loops; the hemisphere's equator is a geodesic: 4 chi = 4
+  const std::vector<Case> cases = {
+    {"disk", 4, 0, {{40, 1}, {200, -1}}},
+    {"disk", 1, 1, {{140, 1}}},
+    {"grid with holes", 4, 0, {{200, 1}, {250, -1}}},
+    {"hemisphere.off", 4, 4, {{275, 1}, {128, 1}, {2759, 1}, {3511, 1}, {2586, 1}, {1840, -1}}},
+  };
+  for(const Case& k : cases)
+  {
+    const TestType mesh = make_case<TestType>(k.mesh);
+#define SD_RUN(Solver, label)                                                                      \
+    {                                                                                              \
+      INFO(k.mesh << ", n = " << k.n << ", solver " << label);                                     \
+      SD::Trivial_connection<TestType, Vpm<TestType>, Solver> tc(                                    \
+        mesh, SD::parameters::symmetry_order(k.n, SD::parameters::field_boundary_condition(          \
+                SD::Direction_field_boundary::tangent, SD::parameters::sparse_linear_solver(Solver())))); \
+      REQUIRE(tc.required_index_sum(0) == std::optional<long>(k.required));                        \
+      const SDI::Mesh_indices<TestType>& idx = tc.indices();                                       \
+      std::map<Face<TestType>, int> prescribed;                                                    \
+      for(const auto& [f, i] : k.singularities)                                                    \
+      {                                                                                            \
+        tc.set_index(f, i);                                                                        \
+        prescribed[idx.face(f)] = i;                                                               \
+      }                                                                                            \
+      tc.solve();                                                                                  \
+      check_boundary_aligned(mesh, tc, prescribed);                                                \
+      /* the free connection with the same cones: its norm is the smaller one (fewer constraints) */ \
+      SD::Trivial_connection<TestType, Vpm<TestType>, Solver> free(                                  \
+        mesh, SD::parameters::symmetry_order(k.n, SD::parameters::sparse_linear_solver(Solver()))); \
+      for(const auto& [f, i] : k.singularities)                                                    \
+        free.set_index(f, i);                                                                      \
+      free.solve();                                                                                \
+      REQUIRE(free.required_index_sum(0) == std::nullopt);                                         \
+      REQUIRE(free.adjustment_norm2() < tc.adjustment_norm2());                                    \
+    }
+    SD_FOR_EACH_SOLVER(SD_RUN)
+#undef SD_RUN
+  }
+}
+
+TEMPLATE_TEST_CASE("Trivial connections along the boundary: the inward normal, rotations, several components, "
+                   "bad sums and values", "[direction_fields][boundary]", SD_MESH_TYPES)
+{
+  // the normal condition: the same connection, the field a quarter turn away (n = 1)
+  const TestType disk = make_case<TestType>("disk");
+  SD::Trivial_connection<TestType> tangent(
+    disk, SD::parameters::field_boundary_condition(SD::Direction_field_boundary::tangent));
+  SD::Trivial_connection<TestType> normal(
+    disk, SD::parameters::field_boundary_condition(SD::Direction_field_boundary::normal));
+  tangent.set_index(std::size_t(140), 1);
+  normal.set_index(std::size_t(140), 1);
+  tangent.solve();
+  normal.solve();
+  normal.set_rotation(1.); // not applied: the component has a boundary
+  for(auto v : vertices(disk))
+    REQUIRE(std::abs(SDI::wrap_angle(normal.angle(v) - tangent.angle(v) - pi / 2.)) < 1e-9);
+  REQUIRE(normal.boundary_condition() == SD::Direction_field_boundary::normal);
+
+  // a sphere and a disk in one mesh: the sphere's field rotates, the disk's stays along its boundary
+  TestType two = make_case<TestType>("small sphere");
+  const std::size_t sphere_faces = num_faces(two);
+  CGAL::copy_face_graph(disk, two);
+  SD::Trivial_connection<TestType> tc(two, SD::parameters::field_boundary_condition(SD::Direction_field_boundary::tangent));
+  const auto& topology = tc.topology();
+  REQUIRE(topology.components.size() == 2);
+  const std::size_t sphere = topology.components.face_component[0];
+  REQUIRE(tc.required_index_sum(sphere) == std::optional<long>(2));
+  REQUIRE(tc.required_index_sum(1 - sphere) == std::optional<long>(1));
+  CHECK_THROWS_AS(tc.required_index_sum(2), SD::Invalid_parameter);
+  tc.set_index(std::size_t(0), 1);
+  tc.set_index(std::size_t(7), 1);
+  tc.set_index(sphere_faces + 140, 1);
+  tc.solve();
+  std::vector<double> before;
+  for(auto v : vertices(two))
+    before.push_back(tc.angle(v));
+  tc.set_rotation(0.5);
+  std::size_t i = 0;
+  for(auto v : vertices(two))
+  {
+    const bool on_sphere = topology.components.vertex_component[tc.indices().index(v)] == sphere;
+    REQUIRE(std::abs(SDI::wrap_angle(tc.angle(v) - before[i++] - (on_sphere ? 0.5 : 0.))) < 1e-12);
+  }
+
+  // the indices must sum to what the boundary allows: a clear message
+  SD::Trivial_connection<TestType> cross(
+    disk, SD::parameters::symmetry_order(4, SD::parameters::field_boundary_condition(SD::Direction_field_boundary::tangent)));
+  cross.set_index(std::size_t(40), 1);
+  REQUIRE_THROWS_WITH(cross.solve(), Catch::Contains("sum to 1/4 but must sum to 0/4 for a field along the boundary"));
+  REQUIRE(!cross.is_solved());
+  // without the condition any sum is allowed on a disk
+  SD::Trivial_connection<TestType> loose(disk, SD::parameters::symmetry_order(4));
+  loose.set_index(std::size_t(40), 1);
+  REQUIRE_NOTHROW(loose.solve());
+  REQUIRE_THROWS_AS(SD::Trivial_connection<TestType>(
+                      disk, SD::parameters::field_boundary_condition(static_cast<SD::Direction_field_boundary>(7))),
+                    SD::Invalid_parameter);
 }
 
 TEMPLATE_TEST_CASE("Trivial connections move negative singularities out of wide faces", "[direction_fields]",

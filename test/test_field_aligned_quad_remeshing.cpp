@@ -24,6 +24,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <memory>
 #include <set>
 #include <string>
@@ -386,6 +387,37 @@ TEMPLATE_TEST_CASE("Field-aligned quads with prescribed cones: valence 3 at +1/4
                                                   SD::parameters::target_edge_length(std::sqrt(surface_area(mesh) / 800.)));
   CHECK(quad_mesh_problem(mesh, cones, out) == "");
   CHECK(r.irregular_vertices == 4);
+}
+
+TEMPLATE_TEST_CASE("Field-aligned quads on a surface with a boundary, with prescribed cones: the trivial connection "
+                   "along the boundary", "[field_aligned_quads][boundary]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  const Mesh mesh = make_case<Mesh>("hemisphere.off");
+  // five +1/4 and one -1/4 where asked (4 chi: the equator is a geodesic), none where the smoothest
+  // field has its four
+  SD::Trivial_connection<Mesh> tc(mesh, SD::parameters::symmetry_order(4, SD::parameters::field_boundary_condition(
+                                                                              SD::Direction_field_boundary::tangent)));
+  REQUIRE(tc.required_index_sum(0) == std::optional<long>(4));
+  const auto& idx = tc.indices();
+  std::map<typename boost::graph_traits<Mesh>::face_descriptor, int> cones;
+  for(const auto& [f, k] : {std::pair<std::size_t, int>{275, 1}, {128, 1}, {2759, 1}, {3511, 1}, {2586, 1}, {1840, -1}})
+  {
+    tc.set_index(f, k);
+    cones[idx.face(f)] = k;
+  }
+  tc.solve();
+  Field<Mesh> field{&mesh, {}};
+  tc.field(field.map());
+  REQUIRE(cones_of(mesh, field) == cones);
+  Quad_mesh out;
+  const auto r = SD::field_aligned_quad_remeshing(mesh, field.map(), out,
+                                                  SD::parameters::target_edge_length(std::sqrt(surface_area(mesh) / 800.)));
+  CHECK(quad_mesh_problem(mesh, cones, out) == "");
+  CHECK(r.irregular_vertices == 6);
+  const SD::Quad_mesh_quality q = SD::quad_mesh_quality(out, mesh);
+  CHECK(q.same_topology);
+  CHECK(q.relative_hausdorff_distance < 0.01);
 }
 
 TEMPLATE_TEST_CASE("Field-aligned quads from a kept parameterizer: the remesher's mesh, then the quads of a moved "

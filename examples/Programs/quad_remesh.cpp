@@ -63,11 +63,11 @@ const char* usage =
   "                        pairs of opposite index are removed, others moved apart, and the field is\n"
   "                        the trivial connection with those cones (Crane et al. 2010); a cone of -1/4\n"
   "                        in a face with an angle of 120 degrees or more is moved into a neighbour\n"
-  "                        (closed meshes; with a boundary the field's own cones, moved apart by the\n"
-  "                        smoothest field's normalized flow)\n"
+  "                        (with a boundary, the trivial connection follows it too)\n"
   "  --singularity FACE:K/4  a cone of index K/4 (K = 1 or -1) in FACE (repeatable): the field is the\n"
   "                        trivial connection with exactly these cones (they must sum to the Euler\n"
-  "                        characteristic; closed meshes only, for now)\n"
+  "                        characteristic; with a boundary, less its turning: the message says how\n"
+  "                        much; not in a face with an edge on the boundary)\n"
   "  --stiffening-rounds R rounds of local stiffening where the map folds (default 10, R in [0, 64])\n"
   "  --no-input-remeshing  fail where the input's own triangles do not give the quads (given cones\n"
   "                        go, on the remeshed input, to the faces nearest theirs)\n"
@@ -339,7 +339,11 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
     principal_raw = std::async(std::launch::async, [&, solver = program::independent_solver(traits)] {
       return compute(true, principal, principal_index, solver);
     });
-  SD::Trivial_connection tc(mesh, P::symmetry_order(4, CGAL::parameters::sparse_linear_solver(traits)));
+  // with a boundary, the field of the cones (given or separated) follows it too
+  SD::Trivial_connection tc(
+    mesh, P::symmetry_order(4, P::field_boundary_condition(closed ? SD::Direction_field_boundary::free
+                                                                  : SD::Direction_field_boundary::tangent,
+                                                           CGAL::parameters::sparse_linear_solver(traits))));
   if(!given_cones.empty())
   {
     for(const auto& [f, k] : given_cones)
@@ -358,11 +362,6 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
                   aligned ? "smoothest aligned with the principal curvature directions" : "smoothest", cones);
       if(o.cone_distance <= 0.)
         return cones;
-      if(!closed)
-      {
-        std::printf("  cones where the field has them (the separation does not keep the field along the boundary yet)\n");
-        return cones;
-      }
       tc.set_indices(cone_map);
       try
       {
@@ -499,9 +498,6 @@ int run_field(const Options& o, Traits traits)
 {
   program::Stopwatch clock;
   const Mesh input = read_input(o);
-  if(!CGAL::is_closed(input) && !o.cones.empty())
-    throw program::Usage_error("--singularity on a mesh with a boundary: not supported yet (the prescribed cones' "
-                               "field does not follow the boundary); without it the field's own cones are used");
   double h = edge_length(input, o);
   if(!(h > 0.))
   {
@@ -510,9 +506,17 @@ int run_field(const Options& o, Traits traits)
     h = edge_length(input, with_default);
   }
   for(const auto& [f, k] : o.cones)
+  {
     if(std::size_t(f) >= num_faces(input))
       throw program::Usage_error("--singularity " + std::to_string(f) + ":" + std::to_string(k) + "/4: the mesh has " +
                                  std::to_string(num_faces(input)) + " faces");
+    // the boundary is a line of the quads: a cone next to it would be one of its vertices
+    for(auto hd : halfedges_around_face(halfedge(Mesh::Face_index(Mesh::size_type(f)), input), input))
+      if(CGAL::is_border(opposite(hd, input), input))
+        throw program::Usage_error("--singularity " + std::to_string(f) + ":" + std::to_string(k) +
+                                   "/4: the face has an edge on the boundary, which is a line of the quads; choose a "
+                                   "face inside");
+  }
 
   Mesh quads;
   try

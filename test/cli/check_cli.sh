@@ -298,8 +298,22 @@ for args in "--method" "--method magic" "--target-faces 0" "--target-faces -5" "
   refuse quad_remesh "$E" $args --output "$O/q.off"
 done
 # a boundary: its loops are lines of the quads (boundary vertices of valence 3, the cones the
-# irregular vertices inside); prescribed cones there are not supported yet
-refuse quad_remesh "$DATA/hemisphere.off" --method field --singularity 3:1/4 --output "$O/q.off"
+# irregular vertices inside); prescribed cones must sum to what the boundary allows (4/4 on the
+# hemisphere, whose boundary is a geodesic), not in a face with an edge on the boundary
+refuse quad_remesh "$DATA/hemisphere.off" --method field --singularity 275:1/4 --output "$O/q.off"
+if ! grep -q "must sum to 4/4 for a field along the boundary" "$WORK/stderr"; then
+  echo "FAILED: quad_remesh hemisphere.off with one cone: $(cat "$WORK/stderr")"
+  failures=$((failures + 1))
+fi
+refuse quad_remesh "$DATA/hemisphere.off" --method field --singularity 1048:1/4 --output "$O/q.off"
+accept quad_remesh "$DATA/hemisphere.off" --method field --target-faces 1000 --singularity 275:1/4 \
+       --singularity 128:1/4 --singularity 2759:1/4 --singularity 3511:1/4 --singularity 2586:1/4 \
+       --singularity 1840:-1/4 --output "$O/disk_cones.off"
+if ! grep -q "100.0% quads" "$WORK/stdout" || ! grep -q "^  6 irregular vertices" "$WORK/stdout" ||
+   ! grep -q "1 boundary loops, 1 components (as the input's)" "$WORK/stdout"; then
+  echo "FAILED: quad_remesh hemisphere.off --singularity x6: $(grep -E "cones|quads|irregular|boundary" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
 accept quad_remesh "$DATA/hemisphere.off" --method field --target-faces 600 --output "$O/disk.off"
 cones=$(sed -n 's/^field-aligned quads (h = [^)]*): \([0-9]*\) cones.*/\1/p' "$WORK/stdout")
 if ! grep -q "100.0% quads" "$WORK/stdout" || [ -z "$cones" ] || ! grep -q "^  $cones irregular vertices" "$WORK/stdout" ||

@@ -17,6 +17,7 @@
 #include <CGAL/Surface_design/internal/Core/named_parameters.h>
 #include <CGAL/Surface_design/internal/Core/Periodic_one_form_solver.h>
 #include <CGAL/Surface_design/internal/Core/validation.h>
+#include <CGAL/Surface_design/internal/Direction_fields/boundary_alignment.h>
 #include <CGAL/Surface_design/internal/Direction_fields/direction_field_operators.h>
 #include <CGAL/Surface_design/internal/Direction_fields/edge_rotation_bound.h>
 #include <CGAL/Surface_design/internal/Direction_fields/singularity_separation.h>
@@ -77,10 +78,24 @@ namespace Surface_design {
 /// with these singularities exists on this mesh, and `solve()` throws `Invalid_constraints`
 /// naming the path.
 ///
+/// **Along the boundary.** With `field_boundary_condition(Direction_field_boundary::tangent)` (or
+/// `normal`), the field follows the boundary: at every boundary vertex one of its n directions is
+/// the boundary's direction there (that of the boundary edge leaving it, the surface on its left),
+/// or the inward normal. The field's rescaled angle is then the same constant at every boundary
+/// vertex, so its one-form y is 0 on the boundary edges (x_e = -omega_e there: the field turns
+/// with the boundary) and every boundary loop's winding is 0; the rest of the adjustment is of
+/// least norm (`internal::Boundary_aligned_one_form`: a Dirichlet problem, its Laplacian factored
+/// once more). The windings around handles are still chosen for the problem without the boundary
+/// condition.
+///
 /// **Consistency.** On a closed component the indices must sum to its Euler characteristic
 /// (Poincaré-Hopf); on a component with boundary any sum is allowed (the boundary holonomies
-/// absorb it). A face holds an index of at most 1/n in magnitude: along each of its three edges
-/// a vertex-based field turns by less than pi relative to the transport.
+/// absorb it), except with the field along the boundary: then they must sum to the Euler
+/// characteristic less the boundary's turning (the geodesic curvature of the loops, n-fold
+/// rescaled, in units of 2 pi / n, counted edge by edge: `required_index_sum()`), e.g. 1 on a
+/// disk with a smooth boundary, 0 on a square whose corners take the turns. A face holds an
+/// index of at most 1/n in magnitude: along each of its three edges a vertex-based field turns by
+/// less than pi relative to the transport.
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
 /// \tparam VertexPointMap a readable property map from vertices to `Point_3` (default: the mesh's)
@@ -130,6 +145,14 @@ public:
   ///     \cgalParamDefault{`1` (vector field)}
   ///     \cgalParamExtra{throws `Invalid_parameter` if n < 1}
   ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{field_boundary_condition}
+  ///     \cgalParamDescription{`Direction_field_boundary::free` (the loops' holonomies are free),
+  ///                           `tangent` or `normal` (the field follows the boundary, see "Along the
+  ///                           boundary")}
+  ///     \cgalParamType{`Direction_field_boundary`}
+  ///     \cgalParamDefault{`Direction_field_boundary::free`}
+  ///     \cgalParamExtra{throws `Invalid_parameter` for another value}
+  ///   \cgalParamNEnd
   ///   \cgalParamNBegin{vertex_index_map}
   ///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in
   ///                           `[0, num_vertices(tm))`: the numbering of the elements (faces addressed by
@@ -176,9 +199,11 @@ public:
   ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
   ///
-  /// \throws Invalid_mesh on bad input, Invalid_parameter if n < 1, Linear_solver_failure
+  /// \throws Invalid_mesh on bad input, Invalid_parameter if n < 1 or the boundary condition is
+  ///         not an enumerator, Linear_solver_failure
   ///
-  /// Complexity: O(|E|) plus one sparse factorization of size |V|.
+  /// Complexity: O(|E|) plus one sparse factorization of size |V| (two with the field along a
+  /// boundary).
   template <class NamedParameters = CGAL::parameters::Default_named_parameters>
   explicit Trivial_connection(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
     : m_n(checked_symmetry_order(np)), m_solver(make_solver(tm, np)),
@@ -199,6 +224,16 @@ public:
       m_offset[f] = int(std::lround(curl / internal::two_pi));
     }
     m_index.assign(idx.number_of_faces(), 0);
+    m_boundary = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, internal_np::field_boundary_condition), Direction_field_boundary::free);
+    if(m_boundary != Direction_field_boundary::free && m_boundary != Direction_field_boundary::tangent &&
+       m_boundary != Direction_field_boundary::normal)
+      throw Invalid_parameter("field_boundary_condition", "not a Direction_field_boundary enumerator");
+    if(m_boundary != Direction_field_boundary::free && m_solver.number_of_boundary_loops() > 0)
+    {
+      SolverTraits traits = internal::class_solver_traits<SolverTraits>(np);
+      m_aligned.emplace(idx, m_solver.topology(), m_solver.weights(), internal::new_solver_like(traits));
+    }
     const auto vpm = internal::class_vertex_point_map<VertexPointMap>(tm, np);
     m_centre.resize(idx.number_of_faces());
     for(std::size_t f = 0; f < m_centre.size(); ++f)
@@ -344,14 +379,16 @@ public:
   }
 
   /// Rotates the whole field by `angle` (radians, in the rescaled angles of the frames); the
-  /// field is otherwise determined up to this rotation per connected component.
+  /// field is otherwise determined up to this rotation per connected component. With the field
+  /// along the boundary, the components with a boundary are not rotated.
   /// \throws Invalid_parameter if `angle` is not finite
   void set_rotation(double angle) { m_rotation = internal::require_finite("rotation", angle); }
 
   /// Computes the connection and the field. O(|E|) plus one back-substitution (plus a local
   /// correction where an adjustment would reach pi, see "Exactness of the field").
   /// \throws Invalid_constraints if the indices of a closed component do not sum to its Euler
-  /// characteristic, or if no vertex-based field has these singularities on this mesh
+  /// characteristic (or, with the field along the boundary, those of a component with boundary
+  /// to `required_index_sum()`), or if no vertex-based field has these singularities on this mesh
   void solve()
   {
     for(std::size_t f = 0; f < m_index.size(); ++f)
@@ -376,13 +413,49 @@ public:
           << " but must sum to " << chi << " (Poincaré-Hopf)";
         throw Invalid_constraints(s.str());
       }
+      const std::optional<long> required = required_index_sum(c);
+      if(!info.is_closed() && required && sum[c] != *required)
+      {
+        std::ostringstream s;
+        s << "on connected component " << c << " (" << info.faces << " faces, " << info.boundary_loops
+          << " boundary loops, Euler characteristic " << chi << ") the singularity indices sum to " << index_text(sum[c])
+          << " but must sum to " << index_text(*required) << " for a field along the boundary (Poincaré-Hopf: the "
+          << "Euler characteristic less the boundary's turning, edge by edge)";
+        throw Invalid_constraints(s.str());
+      }
     }
     std::vector<int> k(m_index.size());
     for(std::size_t f = 0; f < k.size(); ++f)
       k[f] = m_index[f] + m_offset[f];
-    typename Solver::Solution s = m_solver.solve(m_omega, k, std::vector<std::optional<int>>(m_solver.number_of_loops()));
+    // along the boundary: every boundary loop's winding is 0 (see "Along the boundary")
+    std::vector<std::optional<int>> windings(m_solver.number_of_loops());
+    if(m_aligned)
+      for(std::size_t l = m_solver.number_of_generator_loops(); l < windings.size(); ++l)
+        windings[l] = 0;
+    typename Solver::Solution s = m_solver.solve(m_omega, k, windings);
+    if(m_aligned)
+    {
+      m_aligned->correct(m_solver.indices(), topo, s.y, m_omega, m_solver.integrate(s.y));
+      s.energy = m_solver.energy(s.y, m_omega);
+    }
     bound_adjustment(s);
     std::vector<double> alpha = m_solver.integrate(s.y);
+    if(m_aligned) // the constant of the boundary condition at the first boundary vertex of each component
+    {
+      const double value = m_boundary == Direction_field_boundary::normal ? m_n * internal::pi / 2. : 0.;
+      std::vector<double> shift(topo.components.size(), 0.);
+      std::vector<bool> done(topo.components.size(), false);
+      for(const auto& loop : topo.boundary.loops)
+      {
+        const std::size_t v = m_solver.indices().source_index(m_solver.indices().halfedge(loop.front()));
+        const std::size_t c = topo.components.vertex_component[v];
+        if(!done[c])
+          shift[c] = value - alpha[v];
+        done[c] = true;
+      }
+      for(std::size_t v = 0; v < alpha.size(); ++v)
+        alpha[v] += shift[topo.components.vertex_component[v]];
+    }
     for(double& a : alpha)
       a = internal::wrap_angle(a);
     m_solution = std::move(s);
@@ -392,11 +465,36 @@ public:
 
   bool is_solved() const { return m_solved; }
 
+  /// The sum of the index numerators (units of 1/n) that component `c` must have: n times its
+  /// Euler characteristic if it is closed; with the field along the boundary, n times its Euler
+  /// characteristic less the boundary's turning, -sum_f (d1 omega - n K)_f / 2 pi over its faces
+  /// (see "Consistency"); `std::nullopt` on a component with boundary otherwise (any sum).
+  /// \throws Invalid_parameter if `c` is not a component index
+  std::optional<long> required_index_sum(std::size_t c) const
+  {
+    const auto& topo = m_solver.topology();
+    if(c >= topo.components.size())
+      throw Invalid_parameter("component", std::to_string(c) + " is not a component index (the mesh has " +
+                                             std::to_string(topo.components.size()) + ")");
+    if(!topo.components.info[c].is_closed() && !m_aligned)
+      return std::nullopt;
+    long sum = 0;
+    for(std::size_t f = 0; f < m_offset.size(); ++f)
+      if(topo.components.face_component[f] == c)
+        sum -= m_offset[f];
+    return sum;
+  }
+
+  /// The boundary condition given to the constructor.
+  Direction_field_boundary boundary_condition() const { return m_boundary; }
+
   /// Angle of the field at vertex `v` (one of its n directions) in the rescaled vertex frame.
   double angle(vertex_descriptor v) const
   {
     require_solved();
-    return (m_alpha[m_solver.indices().index(v)] + m_rotation) / m_n;
+    const std::size_t i = m_solver.indices().index(v);
+    const bool fixed = m_aligned && !m_solver.topology().components.info[m_solver.topology().components.vertex_component[i]].is_closed();
+    return (m_alpha[i] + (fixed ? 0. : m_rotation)) / m_n;
   }
 
   /// Writes one of the field's n directions per vertex, as a unit tangent vector.
@@ -484,9 +582,31 @@ private:
     }
     if(within)
       return;
-    const internal::Edge_rotation_bound r = internal::bound_edge_rotations(idx, x, bound);
+    internal::Edge_rotation_bound r = internal::bound_edge_rotations(idx, x, bound);
     if(!r.cycle.empty())
       throw Invalid_constraints(obstruction(r.cycle, x, bound));
+    if(m_aligned && moves_boundary(r.u))
+    {
+      // the shifts found are the largest ones <= 0; the smallest >= 0 (of -x, negated) may leave
+      // the boundary vertices where they are
+      std::vector<double> minus_x(x.size());
+      for(std::size_t e = 0; e < x.size(); ++e)
+        minus_x[e] = -x[e];
+      r = internal::bound_edge_rotations(idx, minus_x, bound);
+      for(double& u : r.u)
+        u = -u;
+      if(!r.cycle.empty() || moves_boundary(r.u))
+      {
+        std::size_t v = 0;
+        while(v < r.u.size() && !(m_aligned->on_boundary(v) && r.u[v] != 0.))
+          ++v;
+        throw Invalid_constraints(
+          "no vertex-based field along the boundary has these singularities on this mesh: along every edge a field "
+          "on the vertices turns by less than pi relative to the transport, and next to the boundary (vertex " +
+          std::to_string(v < r.u.size() ? v : 0) + ") no field that keeps to the boundary does; choose other "
+          "singularities (farther from the boundary) or refine the mesh there");
+      }
+    }
     const std::vector<double>& w = m_solver.weights();
     s.energy = 0.;
     for(std::size_t e = 0; e < x.size(); ++e)
@@ -592,6 +712,14 @@ private:
     if(!m_solved)
       throw Invalid_constraints("solve() has not been called");
   }
+  bool moves_boundary(const std::vector<double>& u) const
+  {
+    for(std::size_t v = 0; v < u.size(); ++v)
+      if(u[v] != 0. && m_aligned->on_boundary(v))
+        return true;
+    return false;
+  }
+
   std::string index_text(long k) const
   {
     return m_n == 1 ? std::to_string(k) : std::to_string(k) + "/" + std::to_string(m_n);
@@ -605,6 +733,9 @@ private:
   std::vector<Eigen::Vector3d> m_centre; // of every face
   std::vector<double> m_largest_angle;   // of every face, radians
   double m_rotation = 0.;
+  Direction_field_boundary m_boundary = Direction_field_boundary::free;
+  // with the field along the boundary, on a mesh with one
+  std::optional<internal::Boundary_aligned_one_form<Indices, SolverTraits>> m_aligned;
   bool m_solved = false;
   typename Solver::Solution m_solution;
   std::vector<double> m_alpha; // n times the field angle, in [-pi, pi)
