@@ -39,7 +39,10 @@ const char* usage =
   "                            is -1 or 1; on a closed surface the indices sum to N times the Euler\n"
   "                            characteristic)\n"
   "  --curvature-weight W      smoothest: align with the principal curvature directions (N even)\n"
-  "  --boundary free|tangent|normal   smoothest: boundary condition (default free)\n"
+  "  --boundary free|tangent|normal   boundary condition (default free): the field follows the\n"
+  "                            boundary (tangent) or its inward normal; trivial: then the indices\n"
+  "                            sum to the Euler characteristic less the boundary's turning (the\n"
+  "                            message says how much)\n"
   "  --solver S                sparse solver: default (simplicial LDLT below 20k\n"
   "                            unknowns, supernodal Cholesky above), ldlt, supernodal, cholmod\n"
   "  --output OUT.ply          mesh with vertex field_x, field_y, field_z and face field_index (k/N)\n"
@@ -88,8 +91,8 @@ Options parse(int argc, char** argv)
     throw program::Usage_error("--output OUT.ply is required");
   if(o.method == "smoothest" && !o.singularities.empty())
     throw program::Usage_error("--singularity needs --method trivial (smoothest fields place their own)");
-  if(o.method == "trivial" && (o.curvature_weight != 0. || o.boundary != "free"))
-    throw program::Usage_error("--curvature-weight and --boundary apply to --method smoothest");
+  if(o.method == "trivial" && o.curvature_weight != 0.)
+    throw program::Usage_error("--curvature-weight applies to --method smoothest");
   program::check_paths_and_picture({{"INPUT", o.input}, {"--output", o.output}}, o.picture, p.given("--up"));
   return o;
 }
@@ -199,11 +202,11 @@ int run(const Options& o, const Solver& solver)
             << " faces (" << clock.lap() << " ms)\n";
   std::vector<Vector> field(num_vertices(mesh));
   auto field_map = CGAL::make_property_map(field);
+  if(o.boundary != "free" && std::none_of(halfedges(mesh).begin(), halfedges(mesh).end(),
+                                          [&mesh](auto h) { return is_border(h, mesh); }))
+    std::cout << "note: --boundary " << o.boundary << " has no effect: the mesh has no boundary\n";
   if(o.method == "smoothest")
   {
-    if(o.boundary != "free" && std::none_of(halfedges(mesh).begin(), halfedges(mesh).end(),
-                                            [&mesh](auto h) { return is_border(h, mesh); }))
-      std::cout << "note: --boundary " << o.boundary << " has no effect: the mesh has no boundary\n";
     const auto info = SD::smoothest_direction_field(
       mesh, field_map,
       SD::parameters::symmetry_order(
@@ -222,7 +225,9 @@ int run(const Options& o, const Solver& solver)
   }
   else
   {
-    SD::Trivial_connection tc(mesh, SD::parameters::symmetry_order(o.n, SD::parameters::sparse_linear_solver(solver)));
+    SD::Trivial_connection tc(
+      mesh, SD::parameters::symmetry_order(o.n, SD::parameters::field_boundary_condition(
+                                                  boundary_condition(o.boundary), SD::parameters::sparse_linear_solver(solver))));
     std::cout << "trivial connection set-up and factorization: " << clock.lap() << " ms\n";
     for(const auto& [f, k] : o.singularities)
       tc.set_index(f, k);
