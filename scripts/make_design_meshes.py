@@ -11,6 +11,8 @@
   the lighter input of the developability example under the sanitizers.
 - torus_1k.off, noisy_sheet.off: a noisy torus and a noisy half cylinder (below).
 - saddle_l.off: an L-shaped saddle (corners for the field-aligned quads).
+- holed_plate.off, noisy_pipe.off: a bent plate with two holes and an open tube (several
+  boundary loops for the field-aligned quads).
 
 Usage: python3 scripts/make_design_meshes.py [OUTPUT_FOLDER]   (default: data/)
 """
@@ -129,6 +131,56 @@ def saddle_l(n, jitter, seed):
     return points, faces
 
 
+def holed_plate(n, jitter, seed):
+    """The n x n grid of [0, 1]^2 without two rectangular blocks of cells (three boundary loops:
+    four convex corners, eight concave ones), the vertices inside it moved by up to `jitter` cells
+    at random, bent onto z = 0.3 (x - 0.5)^2 (field-aligned quads: several loops, no cone)."""
+    rng = random.Random(seed)
+    hole = lambda i, j: (n * 3 // 16 <= i < n * 6 // 16 and n * 3 // 16 <= j < n * 7 // 16) or \
+        (n * 9 // 16 <= i < n * 13 // 16 and n * 10 // 16 <= j < n * 12 // 16)
+    cells = [(i, j) for j in range(n) for i in range(n) if not hole(i, j)]
+    in_plate = set(cells)
+    index, points = {}, []
+    for j in range(n + 1):
+        for i in range(n + 1):
+            around = sum(1 for c in [(i - 1, j - 1), (i, j - 1), (i - 1, j), (i, j)] if c in in_plate)
+            if around == 0:
+                continue
+            x, y = i / n, j / n
+            if around == 4:
+                x += rng.uniform(-jitter, jitter) / n
+                y += rng.uniform(-jitter, jitter) / n
+            index[(i, j)] = len(points)
+            points.append((x, y, 0.3 * (x - 0.5) ** 2))
+    faces = []
+    for i, j in cells:
+        a, b, c, d = index[(i, j)], index[(i + 1, j)], index[(i, j + 1)], index[(i + 1, j + 1)]
+        faces += [(a, b, d), (a, d, c)] if (i + j) % 2 == 0 else [(a, b, c), (b, d, c)]
+    return points, faces
+
+
+def noisy_pipe(around, along, noise, seed):
+    """An open cylinder (radius 0.5, length 2, two boundary loops), its rings staggered by half a
+    step and its interior vertices moved off it by up to `noise` radially and along the axis."""
+    rng = random.Random(seed)
+    points = []
+    for j in range(along + 1):
+        for i in range(around):
+            a = 2.0 * math.pi * (i + 0.5 * (j % 2)) / around
+            r, z = 0.5, 2.0 * j / along
+            if 0 < j < along:
+                r *= 1.0 + rng.uniform(-noise, noise)
+                z += rng.uniform(-noise, noise)
+            points.append((r * math.cos(a), r * math.sin(a), z))
+    faces = []
+    for j in range(along):
+        for i in range(around):
+            a, b = j * around + i, j * around + (i + 1) % around
+            c, d = (j + 1) * around + i, (j + 1) * around + (i + 1) % around
+            faces += [(a, b, c), (b, d, c)] if j % 2 == 0 else [(a, d, c), (a, b, d)]
+    return points, faces
+
+
 def write_off(path, points, faces, comment):
     with open(path, "w") as f:
         f.write("OFF\n# %s\n%d %d 0\n" % (comment, len(points), len(faces)))
@@ -158,6 +210,14 @@ def main():
     write_off(os.path.join(out, "saddle_l.off"), points, faces,
               "L of the 24 x 24 grid of the unit square, inner vertices moved by up to 0.2 cells (seed 11), "
               "on z = 0.4 ((x - 0.5)^2 - (y - 0.5)^2)")
+    points, faces = holed_plate(32, 0.2, 13)
+    write_off(os.path.join(out, "holed_plate.off"), points, faces,
+              "32 x 32 grid of the unit square without two blocks of cells, inner vertices moved by up to 0.2 "
+              "cells (seed 13), on z = 0.3 (x - 0.5)^2")
+    points, faces = noisy_pipe(40, 24, 0.02, 17)
+    write_off(os.path.join(out, "noisy_pipe.off"), points, faces,
+              "open cylinder 40 x 24 (radius 0.5, length 2), staggered rings, interior vertices moved by up to "
+              "0.02 (seed 17)")
 
 
 if __name__ == "__main__":

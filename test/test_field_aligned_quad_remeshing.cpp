@@ -19,13 +19,14 @@
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
-#include <optional>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -39,6 +40,8 @@ using Quad_mesh = test::Surface_mesh;
 
 template <class Mesh>
 using Vector_of = typename CGAL::Kernel_traits<typename boost::property_traits<test::Vpm<Mesh>>::value_type>::Kernel::Vector_3;
+template <class Mesh>
+using Point_of = typename boost::property_traits<test::Vpm<Mesh>>::value_type;
 
 template <class Mesh>
 Mesh make_case(const std::string& name)
@@ -301,12 +304,18 @@ TEMPLATE_TEST_CASE("Field-aligned quads on a boundary with corners: one quad at 
                    "concave one", "[field_aligned_quads][boundary]", SD_MESH_TYPES)
 {
   using Mesh = TestType;
-  // a jittered square (four convex corners, no cone) and an L (five convex corners, one concave)
-  for(const std::string name : {"square", "L"})
+  // a jittered square (four convex corners, no cone), an L (five convex corners, one concave) and
+  // a square with two rectangular holes (three loops: four convex corners, eight concave ones; no
+  // cone, so the windings of the loops are coupled by Stokes' theorem)
+  for(const std::string name : {"square", "L", "holes"})
   {
     CAPTURE(name);
     Mesh mesh;
-    SD::make_grid(mesh, 16, 16, 0.15, [&name](std::size_t i, std::size_t j) { return name == "L" && i >= 8 && j >= 8; });
+    SD::make_grid(mesh, 16, 16, 0.15, [&name](std::size_t i, std::size_t j) {
+      if(name == "holes")
+        return (i >= 3 && i < 6 && j >= 3 && j < 7) || (i >= 9 && i < 13 && j >= 10 && j < 12);
+      return name == "L" && i >= 8 && j >= 8;
+    });
     const auto field = boundary_cross_field(mesh);
     const auto cones = cones_of(mesh, field);
     CHECK(cones.empty());
@@ -322,9 +331,9 @@ TEMPLATE_TEST_CASE("Field-aligned quads on a boundary with corners: one quad at 
         ++boundary_valences[int(degree(v, out))];
       else
         CHECK(degree(v, out) == 4);
-    CHECK(boundary_valences.size() == (name == "L" ? 3u : 2u));
+    CHECK(boundary_valences.size() == (name == "square" ? 2u : 3u));
     CHECK(boundary_valences[2] == (name == "L" ? 5 : 4));
-    CHECK(boundary_valences.count(4) == (name == "L" ? 1u : 0u));
+    CHECK(boundary_valences[4] == (name == "L" ? 1 : name == "holes" ? 8 : 0));
     CHECK(boundary_valences[3] > 0);
     CHECK(r.faces == num_faces(out));
     CHECK(std::abs(double(r.faces) / quads - 1.) < 0.25);
@@ -340,6 +349,7 @@ TEMPLATE_TEST_CASE("Field-aligned quads on a boundary with corners: one quad at 
       }
     const SD::Quad_mesh_quality q = SD::quad_mesh_quality(out, mesh);
     CHECK(q.same_topology);
+    CHECK(q.boundary_loops == (name == "holes" ? 3u : 1u));
     // the L's inner sides zigzag (their vertices were inside the jittered grid), which the quads'
     // edges cut across (0.28% of the diagonal measured)
     CHECK(q.relative_hausdorff_distance < 0.01);
@@ -359,6 +369,76 @@ TEMPLATE_TEST_CASE("Field-aligned quads on a boundary with corners: one quad at 
       CHECK(std::abs(area - 1.) < 1e-9);
     }
     CHECK(q.angle_deviation_mean < 5.);
+  }
+}
+
+TEMPLATE_TEST_CASE("Field-aligned quads on an open tube: two boundary loops, no cone, the loops' windings coupled",
+                   "[field_aligned_quads][boundary]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  // an open cylinder of radius 1 and height 2, its rings staggered by half a step (nearly
+  // equilateral triangles) and jittered along the axis: chi = 0, two loops, and a boundary-aligned
+  // cross field without cone
+  std::vector<Point_of<Mesh>> points;
+  std::vector<std::vector<std::size_t>> triangles;
+  const std::size_t around = 36, rings = 13;
+  for(std::size_t j = 0; j < rings; ++j)
+    for(std::size_t i = 0; i < around; ++i)
+    {
+      const double a = 2. * CGAL_PI * (double(i) + 0.5 * double(j % 2)) / double(around);
+      const double z = 2. * double(j) / double(rings - 1) + (j > 0 && j + 1 < rings ? 0.03 * std::sin(7. * a) : 0.);
+      points.emplace_back(std::cos(a), std::sin(a), z);
+    }
+  for(std::size_t j = 0; j + 1 < rings; ++j)
+    for(std::size_t i = 0; i < around; ++i)
+    {
+      const std::size_t a = j * around + i, b = j * around + (i + 1) % around;
+      const std::size_t c = (j + 1) * around + i, d = (j + 1) * around + (i + 1) % around;
+      if(j % 2 == 0)
+      {
+        triangles.push_back({a, b, c});
+        triangles.push_back({b, d, c});
+      }
+      else
+      {
+        triangles.push_back({a, d, c});
+        triangles.push_back({a, b, d});
+      }
+    }
+  Mesh tube;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, tube);
+  const auto field = boundary_cross_field(tube);
+  const auto cones = cones_of(tube, field);
+  REQUIRE(cones.empty());
+  for(const double quads : {300., 700.})
+  {
+    CAPTURE(quads);
+    Quad_mesh out;
+    const auto r = SD::field_aligned_quad_remeshing(
+      tube, field.map(), out, SD::parameters::target_edge_length(std::sqrt(surface_area(tube) / quads)));
+    CHECK(quad_mesh_problem(tube, cones, out) == "");
+    CHECK(r.irregular_vertices == 0);
+    CHECK(std::abs(double(r.faces) / quads - 1.) < 0.25);
+    // the lines across the tube end on both loops: as many quad edges on one loop as on the other
+    std::vector<std::size_t> loop_lengths;
+    std::set<typename boost::graph_traits<Quad_mesh>::halfedge_descriptor> seen;
+    for(auto h : halfedges(out))
+      if(is_border(h, out) && !seen.count(h))
+      {
+        std::size_t length = 0;
+        for(auto g : halfedges_around_face(h, out))
+        {
+          seen.insert(g);
+          ++length;
+        }
+        loop_lengths.push_back(length);
+      }
+    REQUIRE(loop_lengths.size() == 2);
+    CHECK(loop_lengths[0] == loop_lengths[1]);
+    const SD::Quad_mesh_quality q = SD::quad_mesh_quality(out, tube);
+    CHECK(q.same_topology);
+    CHECK(q.boundary_loops == 2);
+    CHECK(q.relative_hausdorff_distance < 0.01);
   }
 }
 
@@ -909,14 +989,6 @@ TEMPLATE_TEST_CASE("Bad input to the field-aligned remesher is refused and chang
   zero.values.begin()->second = Vector_of<Mesh>(0., 0., 0.);
   CHECK_THROWS_AS(SD::field_aligned_quad_remeshing(torus, zero.map(), out, SD::parameters::target_edge_length(h)),
                   SD::Invalid_parameter);
-  // a field without cones on a surface with several boundary loops: not yet (their windings are
-  // coupled), said so
-  Mesh holed;
-  SD::make_grid(holed, 10, 10, 0.1, [](std::size_t i, std::size_t j) { return i >= 4 && i < 6 && j >= 4 && j < 6; });
-  const auto holed_field = boundary_cross_field(holed);
-  REQUIRE(cones_of(holed, holed_field).empty());
-  CHECK_THROWS_WITH(SD::field_aligned_quad_remeshing(holed, holed_field.map(), out),
-                    Catch::Matchers::Contains("2 boundary loops") && Catch::Matchers::Contains("not supported yet"));
   // the stripes of a surface with a boundary whose boundary is not on level lines
   const Mesh disk = saddle_disk<Mesh>(12, 0.);
   const auto disk_field = boundary_cross_field(disk);

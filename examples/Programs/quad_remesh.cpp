@@ -24,6 +24,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -47,8 +48,7 @@ const char* usage =
   "  lattice: pure quads whose irregular vertices are exactly the field's cones (valence 3 at +1/4,\n"
   "  5 at -1/4). On a mesh with a boundary the field follows it and every boundary loop is a line of\n"
   "  the quads (valence 3 along it; 2 at a convex corner, 4 at a concave one); a boundary that\n"
-  "  zigzags at the scale of h fails, and so does a field without cones on a surface with several\n"
-  "  boundary loops (not supported yet). Where the lines do not form such a mesh, h is tried 5%\n"
+  "  zigzags at the scale of h fails. Where the lines do not form such a mesh, h is tried 5%\n"
   "  smaller and 5% larger, then the input is remeshed isotropically at edge length h (its triangles'\n"
   "  shapes can fold the map: decimated meshes) and the whole tried again, before the program fails.\n"
   "options of both methods:\n"
@@ -393,9 +393,18 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
       // none on a torus or a knotted tube, where the smoothest field has dozens, and many more
       // than it on a scan (bunny_60k: 182 against 36)
       const std::size_t smoothest_raw = compute(false, field, index, traits);
-      const std::size_t principal_count = principal_raw.get();
+      std::optional<std::size_t> principal_count;
+      try
+      {
+        principal_count = principal_raw.get();
+      }
+      catch(const SD::Invalid_parameter& e) // no principal directions (a planar surface)
+      {
+        std::printf("cross field: no principal one (%s)\n", e.what());
+      }
       const std::size_t smoothest_cones = separate(false, smoothest_raw, field, index);
-      const std::size_t principal_cones = separate(true, principal_count, principal, principal_index);
+      const std::size_t principal_cones =
+        principal_count ? separate(true, *principal_count, principal, principal_index) : smoothest_cones;
       if(principal_cones < smoothest_cones)
         for(auto v : vertices(mesh))
           put(field, v, get(principal, v));

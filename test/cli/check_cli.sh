@@ -126,7 +126,7 @@ accept stripes "$B1K" --field smoothest:4 --lattice-cones --output "$O/cross_lat
 check_direction_field() {
 for args in "--method smoothest --n 0" "--method smoothest --n 2.5" "--method smoothest --n 99999999999999999999" \
             "--method magic" "--method smoothest --method trivial" "--method smoothest --singularity 5:1" \
-            "--method trivial --boundary tangent" "--method smoothest --curvature-weight -1" \
+            "--method trivial --curvature-weight 1" "--method smoothest --curvature-weight -1" \
             "--method smoothest --curvature-weight nan" "--method smoothest --curvature-weight 1" \
             "--method smoothest --boundary sideways" "--method trivial --singularity 5:1 --singularity 5:1" \
             "--method trivial --singularity 5:1" "--method smoothest --up +Z" "--method smoothest --solver x" \
@@ -137,6 +137,19 @@ done
 refuse direction_field "$B1K" --method smoothest
 refuse direction_field "$B1K" --method trivial --singularity 5:1 --singularity 400:1 --output "$WORK/input.off"
 accept direction_field "$B1K" --method trivial --singularity 5:1 --singularity 400:1 --output "$O/ok.ply"
+# a trivial connection along the boundary: the hemisphere's cross field needs 4/4 in all
+refuse direction_field "$DATA/hemisphere.off" --method trivial --n 4 --boundary tangent --singularity 275:1 \
+       --output "$O/f.ply"
+if ! grep -q "must sum to 4/4 for a field along the boundary" "$WORK/stderr"; then
+  echo "FAILED: direction_field hemisphere.off --boundary tangent, one cone: $(cat "$WORK/stderr")"
+  failures=$((failures + 1))
+fi
+accept direction_field "$DATA/hemisphere.off" --method trivial --n 4 --boundary tangent --singularity 275:1 \
+       --singularity 128:1 --singularity 2759:1 --singularity 3511:1 --output "$O/along.ply"
+if ! grep -q "^singularities (4): 128:1/4 275:1/4 2759:1/4 3511:1/4$" "$WORK/stdout"; then
+  echo "FAILED: direction_field hemisphere.off --boundary tangent: $(grep "singularities" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
 
 }
 
@@ -326,6 +339,21 @@ accept quad_remesh "$DATA/saddle_l.off" --method field --target-faces 300 --outp
 if ! grep -q "100.0% quads" "$WORK/stdout" || ! grep -q "^  6 irregular vertices" "$WORK/stdout" ||
    ! grep -q "field-aligned quads (h = [^)]*): 0 cones" "$WORK/stdout"; then
   echo "FAILED: quad_remesh saddle_l.off --method field: $(grep -E "cones|quads|irregular" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
+# several loops and no cone: the loops' windings chosen together; the plate's four convex
+# corners (valence 2) and eight concave ones (valence 4) are its only irregular vertices, the
+# pipe has none
+accept quad_remesh "$DATA/holed_plate.off" --method field --target-faces 600 --output "$O/plate.off"
+if ! grep -q "100.0% quads" "$WORK/stdout" || ! grep -q "^  12 irregular vertices" "$WORK/stdout" ||
+   ! grep -q "3 boundary loops, 1 components (as the input's)" "$WORK/stdout"; then
+  echo "FAILED: quad_remesh holed_plate.off --method field: $(grep -E "cones|quads|irregular|boundary" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
+accept quad_remesh "$DATA/noisy_pipe.off" --method field --target-faces 500 --output "$O/pipe.off"
+if ! grep -q "100.0% quads" "$WORK/stdout" || ! grep -q "^  0 irregular vertices" "$WORK/stdout" ||
+   ! grep -q "2 boundary loops, 1 components (as the input's)" "$WORK/stdout"; then
+  echo "FAILED: quad_remesh noisy_pipe.off --method field: $(grep -E "cones|quads|irregular|boundary" "$WORK/stdout")"
   failures=$((failures + 1))
 fi
 # pure quads whose irregular vertices are the field's cones (the program checks it too)

@@ -280,9 +280,9 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
 /// and `unit_length_iterations()` to keep its cones apart): every boundary loop is then put on a
 /// level line of the family normal to it (`Branched_stripe_parameterizer::set_boundary_on_level_lines()`)
 /// and is a loop of edges of the quads, with vertices of valence 3 along it, 2 at a convex
-/// corner and 4 at a concave one (where the family normal to the boundary switches). Not
-/// supported yet (`Invalid_constraints`): a field without cones on a component with several
-/// boundary loops.
+/// corner and 4 at a concave one (where the family normal to the boundary switches). With
+/// several loops and no cone (a tube, an annulus, a plate with holes) the loops' windings are
+/// coupled by Stokes' theorem, and chosen together.
 ///
 /// **How.** The two stripe families of `Branched_stripe_parameterizer` with n = 4, spacing h, no
 /// stripe singularity (no T-junction) and every branch point on the lattice
@@ -325,7 +325,7 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
 /// \throws Invalid_mesh on bad input; Invalid_parameter (h not finite and positive, more than
 ///         10^7 quads, rounds out of range, a field vector not finite or normal to the surface);
 ///         Invalid_constraints (cones that no quad mesh has: no windings put them all on the
-///         lattice; a field without cones on a component with several boundary loops);
+///         lattice);
 ///         Remeshing_failure when the lines do not form such a quad mesh (the map still folds:
 ///         another h often helps; the message names a cone of -1/4 in a face with an angle of
 ///         120 degrees or more, see `Trivial_connection::move_singularities_from_wide_faces()`).

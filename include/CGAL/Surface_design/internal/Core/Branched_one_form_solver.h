@@ -172,7 +172,7 @@ public:
   ///         not sum to 0 (Stokes' theorem)
   Solution solve(const std::vector<Value>& omega, const std::vector<Face_index>& k)
   {
-    check_stokes(k);
+    check_stokes_sums(m_topology.components, m_cover.regular, m_stokes_component, m_cover.d, k); // cover_constraints.h
     Solution s;
     std::vector<Value> ystar = particular_solution(k);
     s.y = optimal_one_form(ystar, omega, &s.alpha);
@@ -518,7 +518,8 @@ private:
     const std::size_t nf = m_idx.number_of_faces(), nd = nf + loops.size();
     std::vector<std::size_t> parent_edge_of(nd, npos);
     std::vector<bool> reached(nd, false), in_forest(m_idx.number_of_edges(), false);
-    std::vector<bool> stokes_fixed(m_idx.number_of_edges(), false); // no free winding (below)
+    std::vector<bool> stokes_fixed(m_idx.number_of_edges(), false); // no free winding alone (below)
+    std::vector<std::pair<std::size_t, std::size_t>> stokes_loops; // (root face, loop edge)
     std::vector<std::size_t> order;
     order.reserve(nd);
     auto dual_node = [&](std::size_t h) {
@@ -573,7 +574,11 @@ private:
             "its sheets are exchanged around a loop (a twisted field on a torus): stripes on such a field are not "
             "supported; give the field a pair of singularities");
         if(m_cover.d == 2 && m_level_component[c])
-          stokes_fixed[stokes_loop_edge(m_idx, m_topology, c)] = true; // (cover_constraints.h)
+          for(std::size_t e : stokes_loop_edges(m_idx, m_topology, c)) // (cover_constraints.h)
+          {
+            stokes_fixed[e] = true;
+            stokes_loops.emplace_back(f, e);
+          }
         m_stokes_component[c] = true;
         reached[f] = true;
         const std::size_t head = order.size();
@@ -629,10 +634,19 @@ private:
           free_edges.push_back(e);
       }
     free_edges.insert(free_edges.end(), last.begin(), last.end());
+    auto free_sheet = [&](std::size_t e, int a) { return m_level_sheets.empty() || !((m_level_sheets[e] >> a) & 1); };
     for(std::size_t e : free_edges)
       for(int a = 0; a < m_cover.d; ++a)
-        if(m_level_sheets.empty() || !((m_level_sheets[e] >> a) & 1)) // a level sheet stays 0
+        if(free_sheet(e, a)) // a level sheet stays 0
           m_free.push_back({e, a});
+    // the loops of a component whose root face closes by Stokes: their windings free in pairs
+    // that keep the root's curl (cover_constraints.h)
+    for(const auto& x : stokes_loop_directions(stokes_loops, m_cover.d, free_sheet, [&](std::size_t f, std::size_t e, int a) {
+          std::vector<Value> y(m_idx.number_of_edges(), Value::Zero());
+          y[e][a] = two_pi;
+          return Eigen::Vector2d(curl(peel(std::move(y), nullptr), f));
+        }))
+      m_free.push_back({x.edge, x.sheet, x.partner, x.partner_sheet, x.sign});
   }
 
   // L = d_P^T W d_P on d values per vertex. Its kernel is the f with P_e f_j = f_i on every edge of
@@ -702,25 +716,6 @@ private:
     L.setFromTriplets(entries.begin(), entries.end());
     L.makeCompressed();
     m_system.factor(std::move(L));
-  }
-
-  void check_stokes(const std::vector<Face_index>& k) const
-  {
-    std::vector<Face_index> sum(m_topology.components.size(), Face_index::Zero());
-    for(std::size_t f = 0; f < k.size(); ++f)
-      if(m_cover.regular[f])
-        sum[m_topology.components.face_component[f]] += k[f];
-    for(std::size_t c = 0; c < sum.size(); ++c)
-      if(m_stokes_component[c] && !sum[c].head(m_cover.d).isZero())
-      {
-        std::ostringstream s;
-        s << "on connected component " << c << " (its field without singularity or twist, no free boundary) the stripe indices"
-          << (m_cover.d == 2 ? " of each of the two stripe families" : "") << " must sum to 0 (Stokes' theorem), got "
-          << sum[c][0];
-        if(m_cover.d == 2)
-          s << " and " << sum[c][1];
-        throw Invalid_constraints(s.str());
-      }
   }
 
   // y* = 2 pi m*: the free edges at `free_values` (zero elsewhere off the forest), the forest
@@ -837,6 +832,8 @@ private:
       if(j < m_free.size())
       {
         y[m_free[j].edge][m_free[j].sheet] = two_pi;
+        if(m_free[j].partner != npos) // a loop's winding and its Stokes partner's
+          y[m_free[j].partner][m_free[j].partner_sheet] = m_free[j].partner_sign * two_pi;
         y = peel(std::move(y), nullptr);
       }
       else // exact: no face to meet
@@ -925,6 +922,9 @@ private:
   {
     std::size_t edge;
     int sheet;
+    std::size_t partner = npos; // with partner_sign times 2 pi on (partner, partner_sheet) too
+    int partner_sheet = 0;
+    double partner_sign = 0.;
   };
   // y(eta_j, 0) per edge and its potential per vertex (d values each), for a kept direction j
   struct Response

@@ -21,6 +21,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -234,29 +235,91 @@ std::vector<std::size_t> boundary_family_switches(const Indices& idx, const Topo
 /// A cross field without branch face on component c, whose boundary loops all lie on level lines:
 /// the dual forest has no root there, and one face's closure must follow from the others'. By
 /// Stokes the curls of all faces sum to the sums of y along the loops, sheet by sheet (their
-/// transport is trivial: the component is not twisted). With one loop, all its edges in the tree
-/// but one, e_L, that sum is 2 pi m on e_L's sheet that is not on a level line: the closure holds
-/// when that winding is 0, so it is not free. Returns e_L.
-/// \throws Invalid_constraints with several loops (their windings are coupled: not supported yet)
+/// transport is trivial: the component is not twisted). Each loop has all its edges in the tree
+/// but one, e_L, and that sum is 2 pi m_L on e_L's sheet that is not on a level line: the root's
+/// closure holds when the windings m_L of the loops whose free sheet is the same (as seen from the
+/// root) cancel. Returns the e_L of the component's loops (see `stokes_loop_pairing()`).
 template <class Indices>
-std::size_t stokes_loop_edge(const Indices& idx, const Topology& topology, std::size_t c)
+std::vector<std::size_t> stokes_loop_edges(const Indices& idx, const Topology& topology, std::size_t c)
 {
-  const Boundary_loops& loops = topology.boundary;
-  std::size_t loops_here = 0, e_last = npos;
-  for(const auto& loop : loops.loops)
+  std::vector<std::size_t> edges;
+  for(const auto& loop : topology.boundary.loops)
     if(topology.components.vertex_component[idx.target_index(idx.halfedge(loop.front()))] == c)
-    {
-      ++loops_here;
       for(std::size_t h : loop)
         if(!topology.tree.edge_in_tree[idx.edge_index(idx.halfedge(h))])
-          e_last = idx.edge_index(idx.halfedge(h));
+          edges.push_back(idx.edge_index(idx.halfedge(h)));
+  return edges;
+}
+
+/// The free directions of the windings of `stokes_loop_edges()` (pairs (root face, loop edge)):
+/// `root_curl(f, e, a)` is the root face f's curl left by 2 pi on sheet a of e alone, after the
+/// peeling: a signed unit vector times 2 pi, or 0. Of the candidates (e, a) with `free_sheet(e,
+/// a)` that move the same sheet of their root, the first is fixed (its winding follows from the
+/// others', 0 if alone) and each other is free together with it, at `sign` times its winding, so
+/// that the root's closure holds; a candidate that leaves the root's curl as it is is free alone
+/// (`partner` npos).
+/// \throws Invalid_constraints if a candidate moves both sheets of its root
+struct Stokes_loop_direction
+{
+  std::size_t edge;
+  int sheet;
+  std::size_t partner = npos;
+  int partner_sheet = 0;
+  double sign = 0.;
+};
+template <class FreeSheet, class RootCurl>
+std::vector<Stokes_loop_direction> stokes_loop_directions(const std::vector<std::pair<std::size_t, std::size_t>>& loops,
+                                                          int d, const FreeSheet& free_sheet, const RootCurl& root_curl)
+{
+  std::vector<Stokes_loop_direction> out;
+  std::map<std::pair<std::size_t, int>, std::pair<Stokes_loop_direction, double>> first; // (root, sheet) ->
+  for(const auto& [f, e] : loops)
+    for(int a = 0; a < d; ++a)
+    {
+      if(!free_sheet(e, a))
+        continue;
+      const Eigen::Vector2d c = root_curl(f, e, a);
+      const bool moves0 = std::abs(c[0]) > 1e-6, moves1 = std::abs(c[1]) > 1e-6;
+      if(moves0 && moves1)
+        throw Invalid_constraints("the windings of the boundary loops on level lines move both stripe families at "
+                                  "once: not supported");
+      if(!moves0 && !moves1)
+      {
+        out.push_back({e, a});
+        continue;
+      }
+      const int b = moves0 ? 0 : 1;
+      const auto it = first.find({f, b});
+      if(it == first.end())
+        first[{f, b}] = {Stokes_loop_direction{e, a}, c[b]};
+      else
+        out.push_back({e, a, it->second.first.edge, it->second.first.sheet, -c[b] / it->second.second});
     }
-  if(loops_here != 1 || e_last == npos)
-    throw Invalid_constraints("connected component " + std::to_string(c) +
-                              ": a cross field without singularity on a surface with " + std::to_string(loops_here) +
-                              " boundary loops on level lines is not supported yet (the two families' windings "
-                              "along the loops are coupled)");
-  return e_last;
+  return out;
+}
+
+/// Stokes' theorem on the components without singularity, twist or free boundary
+/// (`stokes_component`): the stripe indices k of their regular faces must sum to 0, family by
+/// family (`d` of them). \throws Invalid_constraints otherwise
+inline void check_stokes_sums(const Components& components, const std::vector<bool>& regular,
+                              const std::vector<bool>& stokes_component, int d,
+                              const std::vector<Eigen::Vector2i>& k)
+{
+  std::vector<Eigen::Vector2i> sum(components.size(), Eigen::Vector2i::Zero());
+  for(std::size_t f = 0; f < k.size(); ++f)
+    if(regular[f])
+      sum[components.face_component[f]] += k[f];
+  for(std::size_t c = 0; c < sum.size(); ++c)
+    if(stokes_component[c] && !sum[c].head(d).isZero())
+    {
+      std::string s = "on connected component " + std::to_string(c) +
+                      " (its field without singularity or twist, no free boundary) the stripe indices" +
+                      (d == 2 ? " of each of the two stripe families" : "") +
+                      " must sum to 0 (Stokes' theorem), got " + std::to_string(sum[c][0]);
+      if(d == 2)
+        s += " and " + std::to_string(sum[c][1]);
+      throw Invalid_constraints(s);
+    }
 }
 
 /// Pins one value per free component of every piece of the graph of edges of non-zero weight
