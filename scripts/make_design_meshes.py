@@ -105,17 +105,17 @@ def noisy_sheet(around, along, noise, seed):
     return points, faces
 
 
-def saddle_l(n, jitter, seed):
-    """The n x n grid of [0, 1]^2 without its cells i, j >= n / 2: an L (five convex corners, one
-    concave), the vertices inside it moved by up to `jitter` cells in the plane at random, lifted
-    to the saddle z = 0.4 ((x - 0.5)^2 - (y - 0.5)^2) (the field-aligned quads with corners)."""
+def grid_cells(n, keep, jitter, seed, lift):
+    """The cells (i, j) of the n x n grid of [0, 1]^2 with keep(i, j), two triangles each, the
+    vertices inside the kept region moved by up to `jitter` cells in the plane at random, lifted to
+    the height lift(x, y)."""
     rng = random.Random(seed)
-    cells = [(i, j) for j in range(n) for i in range(n) if not (i >= n // 2 and j >= n // 2)]
-    in_l = set(cells)
+    cells = [(i, j) for j in range(n) for i in range(n) if keep(i, j)]
+    kept = set(cells)
     index, points = {}, []
     for j in range(n + 1):
         for i in range(n + 1):
-            around = sum(1 for c in [(i - 1, j - 1), (i, j - 1), (i - 1, j), (i, j)] if c in in_l)
+            around = sum(1 for c in [(i - 1, j - 1), (i, j - 1), (i - 1, j), (i, j)] if c in kept)
             if around == 0:
                 continue
             x, y = i / n, j / n
@@ -123,40 +123,30 @@ def saddle_l(n, jitter, seed):
                 x += rng.uniform(-jitter, jitter) / n
                 y += rng.uniform(-jitter, jitter) / n
             index[(i, j)] = len(points)
-            points.append((x, y, 0.4 * ((x - 0.5) ** 2 - (y - 0.5) ** 2)))
+            points.append((x, y, lift(x, y)))
     faces = []
     for i, j in cells:
         a, b, c, d = index[(i, j)], index[(i + 1, j)], index[(i, j + 1)], index[(i + 1, j + 1)]
         faces += [(a, b, d), (a, d, c)] if (i + j) % 2 == 0 else [(a, b, c), (b, d, c)]
     return points, faces
+
+
+def saddle_l(n, jitter, seed):
+    """The n x n grid of [0, 1]^2 without its cells i, j >= n / 2: an L (five convex corners, one
+    concave), the vertices inside it moved by up to `jitter` cells in the plane at random, lifted
+    to the saddle z = 0.4 ((x - 0.5)^2 - (y - 0.5)^2) (the field-aligned quads with corners)."""
+    return grid_cells(n, lambda i, j: not (i >= n // 2 and j >= n // 2), jitter, seed,
+                      lambda x, y: 0.4 * ((x - 0.5) ** 2 - (y - 0.5) ** 2))
 
 
 def holed_plate(n, jitter, seed):
     """The n x n grid of [0, 1]^2 without two rectangular blocks of cells (three boundary loops:
     four convex corners, eight concave ones), the vertices inside it moved by up to `jitter` cells
     at random, bent onto z = 0.3 (x - 0.5)^2 (field-aligned quads: several loops, no cone)."""
-    rng = random.Random(seed)
-    hole = lambda i, j: (n * 3 // 16 <= i < n * 6 // 16 and n * 3 // 16 <= j < n * 7 // 16) or \
-        (n * 9 // 16 <= i < n * 13 // 16 and n * 10 // 16 <= j < n * 12 // 16)
-    cells = [(i, j) for j in range(n) for i in range(n) if not hole(i, j)]
-    in_plate = set(cells)
-    index, points = {}, []
-    for j in range(n + 1):
-        for i in range(n + 1):
-            around = sum(1 for c in [(i - 1, j - 1), (i, j - 1), (i - 1, j), (i, j)] if c in in_plate)
-            if around == 0:
-                continue
-            x, y = i / n, j / n
-            if around == 4:
-                x += rng.uniform(-jitter, jitter) / n
-                y += rng.uniform(-jitter, jitter) / n
-            index[(i, j)] = len(points)
-            points.append((x, y, 0.3 * (x - 0.5) ** 2))
-    faces = []
-    for i, j in cells:
-        a, b, c, d = index[(i, j)], index[(i + 1, j)], index[(i, j + 1)], index[(i + 1, j + 1)]
-        faces += [(a, b, d), (a, d, c)] if (i + j) % 2 == 0 else [(a, b, c), (b, d, c)]
-    return points, faces
+    def hole(i, j):
+        return (n * 3 // 16 <= i < n * 6 // 16 and n * 3 // 16 <= j < n * 7 // 16) or \
+            (n * 9 // 16 <= i < n * 13 // 16 and n * 10 // 16 <= j < n * 12 // 16)
+    return grid_cells(n, lambda i, j: not hole(i, j), jitter, seed, lambda x, y: 0.3 * (x - 0.5) ** 2)
 
 
 def noisy_pipe(around, along, noise, seed):

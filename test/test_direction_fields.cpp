@@ -679,6 +679,37 @@ TEMPLATE_TEST_CASE("Curvature-aligned cross fields follow the principal directio
 
 namespace {
 
+// Sets the indices (face index, numerator) of a trivial connection; returns them by face.
+template <class Tc>
+auto prescribe(Tc& tc, const std::vector<std::pair<std::size_t, int>>& singularities)
+{
+  std::map<typename Tc::face_descriptor, int> prescribed;
+  for(const auto& [f, i] : singularities)
+  {
+    tc.set_index(f, i);
+    prescribed[tc.indices().face(f)] = i;
+  }
+  return prescribed;
+}
+
+// The field of a solved trivial connection, checked: every |x_e| below pi, unit tangent vectors,
+// exactly the prescribed indices read back from them.
+template <class Mesh, class Tc>
+Vector_map<Mesh> checked_field(const Mesh& mesh, const Tc& tc, const std::map<Face<Mesh>, int>& prescribed)
+{
+  REQUIRE(tc.largest_adjustment() < pi);
+  Vector_map<Mesh> field;
+  tc.field(boost::make_assoc_property_map(field));
+  check_unit_tangent(mesh, field);
+  const auto index = indices_of(mesh, field, tc.symmetry_order());
+  for(auto f : faces(mesh))
+  {
+    const auto it = prescribed.find(f);
+    REQUIRE(index.at(f) == double(it == prescribed.end() ? 0 : it->second) / tc.symmetry_order());
+  }
+  return field;
+}
+
 // Checks a solved trivial connection: exactly the prescribed indices, zero holonomy elsewhere,
 // least-norm optimality (the adjustment is co-closed: d0^T x = 0).
 template <class Mesh, class Tc>
@@ -686,18 +717,13 @@ void check_trivial_connection(const Mesh& mesh, const Tc& tc, const std::map<Fac
 {
   const int n = tc.symmetry_order();
   const auto& idx = tc.indices();
-  REQUIRE(tc.largest_adjustment() < pi);
-  Vector_map<Mesh> field;
-  tc.field(boost::make_assoc_property_map(field));
-  check_unit_tangent(mesh, field);
-  const auto index = indices_of(mesh, field, n);
+  checked_field(mesh, tc, prescribed);
   const std::vector<double> x = tc.adjustment();
   const auto& c = tc.connection();
   for(auto f : faces(mesh))
   {
     const auto it = prescribed.find(f);
     const int k = it == prescribed.end() ? 0 : it->second;
-    REQUIRE(index.at(f) == double(k) / n);
     double holonomy = n * c.curvature[idx.index(f)];
     for(auto h : halfedges_around_face(halfedge(f, mesh), mesh))
       holonomy += idx.orientation_sign(h) * x[idx.edge_index(h)];
@@ -737,13 +763,7 @@ TEMPLATE_TEST_CASE("Trivial connections have exactly the prescribed singularitie
       INFO(k.mesh << ", n = " << k.n << ", solver " << label);                                     \
       SD::Trivial_connection<TestType, Vpm<TestType>, Solver> tc(                                    \
         mesh, SD::parameters::symmetry_order(k.n, SD::parameters::sparse_linear_solver(Solver())));  \
-      const SDI::Mesh_indices<TestType>& idx = tc.indices();                                       \
-      std::map<Face<TestType>, int> prescribed;                                                    \
-      for(const auto& [f, i] : k.singularities)                                                    \
-      {                                                                                            \
-        tc.set_index(f, i);                                                                        \
-        prescribed[idx.face(f)] = i;                                                               \
-      }                                                                                            \
+      const std::map<Face<TestType>, int> prescribed = prescribe(tc, k.singularities);              \
       tc.solve();                                                                                  \
       check_trivial_connection(mesh, tc, prescribed);                                              \
     }
@@ -763,16 +783,7 @@ void check_boundary_aligned(const Mesh& mesh, const Tc& tc, const std::map<Face<
 {
   const int n = tc.symmetry_order();
   const auto& idx = tc.indices();
-  REQUIRE(tc.largest_adjustment() < pi);
-  Vector_map<Mesh> field;
-  tc.field(boost::make_assoc_property_map(field));
-  check_unit_tangent(mesh, field);
-  const auto index = indices_of(mesh, field, n);
-  for(auto f : faces(mesh))
-  {
-    const auto it = prescribed.find(f);
-    REQUIRE(index.at(f) == double(it == prescribed.end() ? 0 : it->second) / n);
-  }
+  const Vector_map<Mesh> field = checked_field(mesh, tc, prescribed);
   const auto& frames = tc.connection().frames;
   const SDI::Mesh_indices<Mesh> own(mesh);
   const auto normal = SDI::vertex_normals(own, get(CGAL::vertex_point, mesh));
@@ -837,20 +848,13 @@ TEMPLATE_TEST_CASE("Trivial connections along the boundary: the field follows it
         mesh, SD::parameters::symmetry_order(k.n, SD::parameters::field_boundary_condition(          \
                 SD::Direction_field_boundary::tangent, SD::parameters::sparse_linear_solver(Solver())))); \
       REQUIRE(tc.required_index_sum(0) == std::optional<long>(k.required));                        \
-      const SDI::Mesh_indices<TestType>& idx = tc.indices();                                       \
-      std::map<Face<TestType>, int> prescribed;                                                    \
-      for(const auto& [f, i] : k.singularities)                                                    \
-      {                                                                                            \
-        tc.set_index(f, i);                                                                        \
-        prescribed[idx.face(f)] = i;                                                               \
-      }                                                                                            \
+      const std::map<Face<TestType>, int> prescribed = prescribe(tc, k.singularities);              \
       tc.solve();                                                                                  \
       check_boundary_aligned(mesh, tc, prescribed);                                                \
       /* the free connection with the same cones: its norm is the smaller one (fewer constraints) */ \
       SD::Trivial_connection<TestType, Vpm<TestType>, Solver> free(                                  \
         mesh, SD::parameters::symmetry_order(k.n, SD::parameters::sparse_linear_solver(Solver()))); \
-      for(const auto& [f, i] : k.singularities)                                                    \
-        free.set_index(f, i);                                                                      \
+      prescribe(free, k.singularities);                                                            \
       free.solve();                                                                                \
       REQUIRE(free.required_index_sum(0) == std::nullopt);                                         \
       REQUIRE(free.adjustment_norm2() < tc.adjustment_norm2());                                    \
