@@ -819,14 +819,14 @@ void check_boundary_aligned(const Mesh& mesh, const Tc& tc, const std::map<Face<
 } // namespace
 
 TEMPLATE_TEST_CASE("Trivial connections along the boundary: the field follows it, the sum is Poincaré-Hopf's "
-                   "with the boundary's turning, the rest of least norm", "[direction_fields][boundary]",
+                   "with the boundary's corners, the rest of least norm", "[direction_fields][boundary]",
                    SD_MESH_TYPES)
 {
   struct Case
   {
     std::string mesh;
     int n;
-    long required; // Poincaré-Hopf: n chi less the boundary's turning (n-fold, in units of 2 pi)
+    long required; // Poincaré-Hopf: n chi less the corners the field turns with (see the class)
     std::vector<std::pair<std::size_t, int>> singularities;
   };
   // the square: its corners turn by 90 degrees, a full turn for n = 4 (no cone needed) and a

@@ -66,7 +66,7 @@ const char* usage =
   "                        (with a boundary, the trivial connection follows it too)\n"
   "  --singularity FACE:K/4  a cone of index K/4 (K = 1 or -1) in FACE (repeatable): the field is the\n"
   "                        trivial connection with exactly these cones (they must sum to the Euler\n"
-  "                        characteristic; with a boundary, less its turning: the message says how\n"
+  "                        characteristic; with a boundary, less its corners: the message says how\n"
   "                        much; not in a face with an edge on the boundary)\n"
   "  --stiffening-rounds R rounds of local stiffening where the map folds (default 10, R in [0, 64])\n"
   "  --no-input-remeshing  fail where the input's own triangles do not give the quads (given cones\n"

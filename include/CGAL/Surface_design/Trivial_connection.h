@@ -91,9 +91,12 @@ namespace Surface_design {
 /// **Consistency.** On a closed component the indices must sum to its Euler characteristic
 /// (Poincaré-Hopf); on a component with boundary any sum is allowed (the boundary holonomies
 /// absorb it), except with the field along the boundary: then they must sum to the Euler
-/// characteristic less the boundary's turning (the geodesic curvature of the loops, n-fold
-/// rescaled, in units of 2 pi / n, counted edge by edge: `required_index_sum()`), e.g. 1 on a
-/// disk with a smooth boundary, 0 on a square whose corners take the turns. A face holds an
+/// characteristic less 1/n for every convex corner of the boundary that the field turns with in
+/// one step, plus 1/n for every concave one (where the boundary turns by 2 pi / n, the n-fold
+/// turning 2 pi is read as 0 edge by edge; `required_index_sum()`): 1 on a disk with a smooth
+/// boundary, 0 for a cross field on a square (four right-angle corners) or an L (five convex and
+/// one concave). By Gauss-Bonnet the sum is n times the total curvature plus the boundary's n-fold
+/// turning counted edge by edge, in units of 2 pi. A face holds an
 /// index of at most 1/n in magnitude: along each of its three edges a vertex-based field turns by
 /// less than pi relative to the transport.
 ///
@@ -420,7 +423,7 @@ public:
         s << "on connected component " << c << " (" << info.faces << " faces, " << info.boundary_loops
           << " boundary loops, Euler characteristic " << chi << ") the singularity indices sum to " << index_text(sum[c])
           << " but must sum to " << index_text(*required) << " for a field along the boundary (Poincaré-Hopf: the "
-          << "Euler characteristic less the boundary's turning, edge by edge)";
+          << "Euler characteristic, less the boundary's corners that the field turns with in one step)";
         throw Invalid_constraints(s.str());
       }
     }
@@ -466,9 +469,9 @@ public:
   bool is_solved() const { return m_solved; }
 
   /// The sum of the index numerators (units of 1/n) that component `c` must have: n times its
-  /// Euler characteristic if it is closed; with the field along the boundary, n times its Euler
-  /// characteristic less the boundary's turning, -sum_f (d1 omega - n K)_f / 2 pi over its faces
-  /// (see "Consistency"); `std::nullopt` on a component with boundary otherwise (any sum).
+  /// Euler characteristic if it is closed; with the field along the boundary,
+  /// -sum_f (d1 omega - n K)_f / 2 pi over its faces (see "Consistency"); `std::nullopt` on a
+  /// component with boundary otherwise (any sum).
   /// \throws Invalid_parameter if `c` is not a component index
   std::optional<long> required_index_sum(std::size_t c) const
   {
