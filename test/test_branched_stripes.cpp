@@ -1497,7 +1497,7 @@ TEMPLATE_TEST_CASE("Boundary loops on level lines: the angle is 0 on the boundar
     }
 }
 
-TEMPLATE_TEST_CASE("Boundary loops on level lines: refused where the field runs along the boundary; a cross field "
+TEMPLATE_TEST_CASE("Boundary loops on level lines: refused where the field runs along the boundary, and a cross field "
                    "without cones and two loops",
                    "[branched_stripes]", SD_MESH_TYPES)
 {

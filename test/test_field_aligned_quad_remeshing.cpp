@@ -442,7 +442,7 @@ TEMPLATE_TEST_CASE("Field-aligned quads on an open tube: two boundary loops, no 
   }
 }
 
-TEMPLATE_TEST_CASE("Field-aligned quads with prescribed cones: valence 3 at +1/4, 5 at -1/4, where asked; on a "
+TEMPLATE_TEST_CASE("Field-aligned quads with prescribed cones: valence 3 at +1/4, 5 at -1/4, where asked, on a "
                    "surface with a boundary too (the trivial connection along it)", "[field_aligned_quads][boundary]",
                    SD_MESH_TYPES)
 {
