@@ -914,6 +914,10 @@ TEMPLATE_TEST_CASE("Trivial connections along the boundary: the inward normal, r
   cross.set_index(std::size_t(40), 1);
   REQUIRE_THROWS_WITH(cross.solve(), Catch::Contains("sum to 1/4 but must sum to 0/4 for a field along the boundary"));
   REQUIRE(!cross.is_solved());
+  // a line field cannot follow the square's right angles (half-way between its two directions)
+  SD::Trivial_connection<TestType> line(
+    disk, SD::parameters::symmetry_order(2, SD::parameters::field_boundary_condition(SD::Direction_field_boundary::tangent)));
+  REQUIRE_THROWS_WITH(line.solve(), Catch::Contains("the boundary turns by about 90 degrees at its edge"));
   // without the condition any sum is allowed on a disk
   SD::Trivial_connection<TestType> loose(disk, SD::parameters::symmetry_order(4));
   loose.set_index(std::size_t(40), 1);

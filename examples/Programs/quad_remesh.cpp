@@ -405,8 +405,9 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
       const std::size_t smoothest_cones = separate(false, smoothest_raw, field, index);
       // the separation removes at most 38% of a field's cones on the shared meshes (blobby_3cc's
       // principal field, 52 -> 32; the kitten's 102 -> 76): a principal field with twice the
-      // smoothest one's cones or more is not separated, it would not win (the kitten: 80 ms less)
-      const bool hopeless = principal_count && *principal_count >= 2 * smoothest_cones && smoothest_cones > 0;
+      // smoothest one's cones or more is not separated, it would not win (the kitten: 80 ms less);
+      // not with few cones, where close pairs can be most of them
+      const bool hopeless = principal_count && smoothest_cones >= 16 && *principal_count >= 2 * smoothest_cones;
       if(hopeless)
         std::printf("cross field: smoothest aligned with the principal curvature directions, %zu cones (not "
                     "separated: twice the smoothest field's or more)\n", *principal_count);

@@ -388,10 +388,14 @@ public:
   void set_rotation(double angle) { m_rotation = internal::require_finite("rotation", angle); }
 
   /// Computes the connection and the field. O(|E|) plus one back-substitution (plus a local
-  /// correction where an adjustment would reach pi, see "Exactness of the field").
+  /// correction where an adjustment would reach pi, see "Exactness of the field"); with the field
+  /// along the boundary two more, and O(|E|) per boundary loop beyond the first of a component.
   /// \throws Invalid_constraints if the indices of a closed component do not sum to its Euler
   /// characteristic (or, with the field along the boundary, those of a component with boundary
   /// to `required_index_sum()`), or if no vertex-based field has these singularities on this mesh
+  /// (with the field along the boundary: also where the boundary turns half-way between two of
+  /// the field's directions along one edge, e.g. a right angle for n = 2, which no such field
+  /// follows; and the search for shifts that keep the boundary still is local, not exhaustive)
   void solve()
   {
     for(std::size_t f = 0; f < m_index.size(); ++f)
@@ -400,6 +404,16 @@ public:
           "face " + std::to_string(f) + " has index " + index_text(m_index[f]) + ", but a triangle can hold at most " +
           index_text(1) + " in magnitude: the field turns by less than pi along each of its three edges; "
           "spread a larger index over several faces");
+    // (before the sums: at such a corner the sum the boundary asks is not defined)
+    if(m_aligned)
+      if(const std::size_t e = m_aligned->sharp_turn(m_omega, internal::pi - rotation_margin); e != internal::npos)
+      {
+        const auto [a, b] = m_solver.indices().edge_vertices(e);
+        throw Invalid_constraints("the boundary turns by about " + std::to_string(int(std::lround(180. / m_n))) +
+                                  " degrees at its edge " + std::to_string(e) + " (vertices " + std::to_string(a) +
+                                  " and " + std::to_string(b) + "), half-way between two directions of the field: a "
+                                  "field of symmetry order " + std::to_string(m_n) + " cannot follow the boundary there");
+      }
     const auto& topo = m_solver.topology();
     std::vector<long> sum(topo.components.size(), 0);
     for(std::size_t f = 0; f < m_index.size(); ++f)
@@ -589,27 +603,7 @@ private:
     if(!r.cycle.empty())
       throw Invalid_constraints(obstruction(r.cycle, x, bound));
     if(m_aligned && moves_boundary(r.u))
-    {
-      // the shifts found are the largest ones <= 0; the smallest >= 0 (of -x, negated) may leave
-      // the boundary vertices where they are
-      std::vector<double> minus_x(x.size());
-      for(std::size_t e = 0; e < x.size(); ++e)
-        minus_x[e] = -x[e];
-      r = internal::bound_edge_rotations(idx, minus_x, bound);
-      for(double& u : r.u)
-        u = -u;
-      if(!r.cycle.empty() || moves_boundary(r.u))
-      {
-        std::size_t v = 0;
-        while(v < r.u.size() && !(m_aligned->on_boundary(v) && r.u[v] != 0.))
-          ++v;
-        throw Invalid_constraints(
-          "no vertex-based field along the boundary has these singularities on this mesh: along every edge a field "
-          "on the vertices turns by less than pi relative to the transport, and next to the boundary (vertex " +
-          std::to_string(v < r.u.size() ? v : 0) + ") no field that keeps to the boundary does; choose other "
-          "singularities (farther from the boundary) or refine the mesh there");
-      }
-    }
+      r.u = boundary_keeping_shifts(x, bound, std::move(r.u));
     const std::vector<double>& w = m_solver.weights();
     s.energy = 0.;
     for(std::size_t e = 0; e < x.size(); ++e)
@@ -715,6 +709,67 @@ private:
     if(!m_solved)
       throw Invalid_constraints("solve() has not been called");
   }
+  // Shifts that bound the rotations and keep the boundary vertices in place, from `down` (the
+  // largest shifts <= 0, which move some boundary vertex) and the smallest >= 0 (of -x, negated):
+  // both are 0 but around the edges past the bound, so on each connected piece of the vertices
+  // that either moves, the one that keeps the piece's boundary vertices still is taken, and the
+  // combination checked edge by edge. \throws Invalid_constraints where none is found
+  std::vector<double> boundary_keeping_shifts(const std::vector<double>& x, double bound, std::vector<double> down) const
+  {
+    const auto& idx = m_solver.indices();
+    const std::size_t nv = idx.number_of_vertices(), ne = x.size();
+    std::vector<double> minus_x(ne);
+    for(std::size_t e = 0; e < ne; ++e)
+      minus_x[e] = -x[e];
+    internal::Edge_rotation_bound up = internal::bound_edge_rotations(idx, minus_x, bound);
+    for(double& u : up.u)
+      u = -u;
+    std::size_t blocked = internal::npos; // a boundary vertex that no choice keeps still
+    std::vector<double> u(nv, 0.);
+    if(up.cycle.empty())
+    {
+      // the pieces: vertices that move in either, joined along edges
+      internal::Union_find pieces(nv);
+      for(std::size_t e = 0; e < ne; ++e)
+      {
+        const auto [i, j] = idx.edge_vertices(e);
+        const bool mi = down[i] != 0. || up.u[i] != 0., mj = down[j] != 0. || up.u[j] != 0.;
+        if(mi && mj)
+          pieces.unite(i, j);
+      }
+      std::vector<bool> down_moves(nv, false), up_moves(nv, false);
+      for(std::size_t v = 0; v < nv; ++v)
+        if(m_aligned->on_boundary(v))
+        {
+          down_moves[pieces.find(v)] = down_moves[pieces.find(v)] || down[v] != 0.;
+          up_moves[pieces.find(v)] = up_moves[pieces.find(v)] || up.u[v] != 0.;
+        }
+      for(std::size_t v = 0; v < nv && blocked == internal::npos; ++v)
+      {
+        const std::size_t p = pieces.find(v);
+        if(!down_moves[p])
+          u[v] = down[v];
+        else if(!up_moves[p])
+          u[v] = up.u[v];
+        else if(m_aligned->on_boundary(v))
+          blocked = v;
+      }
+    }
+    for(std::size_t e = 0; e < ne && blocked == internal::npos; ++e)
+    {
+      const auto [i, j] = idx.edge_vertices(e);
+      if(!(std::abs(x[e] + u[j] - u[i]) <= bound))
+        blocked = i;
+    }
+    if(blocked == internal::npos)
+      return u;
+    throw Invalid_constraints(
+      "no vertex-based field along the boundary has these singularities on this mesh: along every edge a field "
+      "on the vertices turns by less than pi relative to the transport, and next to the boundary (near vertex " +
+      std::to_string(blocked == internal::npos ? 0 : blocked) + ") no field that keeps to the boundary does; choose "
+      "other singularities (farther from the boundary) or refine the mesh there");
+  }
+
   bool moves_boundary(const std::vector<double>& u) const
   {
     for(std::size_t v = 0; v < u.size(); ++v)

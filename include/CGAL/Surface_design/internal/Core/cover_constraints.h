@@ -238,7 +238,7 @@ std::vector<std::size_t> boundary_family_switches(const Indices& idx, const Topo
 /// transport is trivial: the component is not twisted). Each loop has all its edges in the tree
 /// but one, e_L, and that sum is 2 pi m_L on e_L's sheet that is not on a level line: the root's
 /// closure holds when the windings m_L of the loops whose free sheet is the same (as seen from the
-/// root) cancel. Returns the e_L of the component's loops (see `stokes_loop_pairing()`).
+/// root) cancel. Returns the e_L of the component's loops (see `stokes_loop_directions()`).
 template <class Indices>
 std::vector<std::size_t> stokes_loop_edges(const Indices& idx, const Topology& topology, std::size_t c)
 {

@@ -73,12 +73,12 @@ public:
       if(m_aligned[topology.components.vertex_component[v]] && m_loop_of_vertex[v] == npos)
         m_node[v] = nodes++;
     m_nodes = nodes;
-    std::vector<bool> border(ne, false);
+    m_border_edge.assign(ne, false);
     for(const auto& loop : topology.boundary.loops)
       for(std::size_t h : loop)
-        border[idx.edge_index(idx.halfedge(h))] = true;
+        m_border_edge[idx.edge_index(idx.halfedge(h))] = true;
     for(std::size_t e = 0; e < ne; ++e)
-      m_free_edge[e] = !border[e] && m_aligned[topology.components.vertex_component[idx.edge_vertices(e).first]];
+      m_free_edge[e] = !m_border_edge[e] && m_aligned[topology.components.vertex_component[idx.edge_vertices(e).first]];
     if(nodes > 0)
     {
       std::vector<Eigen::Triplet<double>> t;
@@ -137,6 +137,17 @@ public:
 
   /// Whether vertex v lies on the boundary.
   bool on_boundary(std::size_t v) const { return m_loop_of_vertex[v] != npos; }
+
+  /// A boundary edge along which the transport turns an n-direction by more than `bound` (|omega_e|
+  /// > bound: the boundary turns by about pi / n there, half-way between two of the field's
+  /// directions), which a field along the boundary cannot follow; npos if there is none.
+  std::size_t sharp_turn(const std::vector<double>& omega, double bound) const
+  {
+    for(std::size_t e = 0; e < omega.size(); ++e)
+      if(m_border_edge[e] && !(std::abs(omega[e]) <= bound))
+        return e;
+    return npos;
+  }
 
   /// y (feasible, winding 0 on every boundary loop) -> the minimizer that is 0 on the boundary
   /// edges, as above. `alpha` is y integrated along a spanning tree of each component (any
@@ -232,7 +243,7 @@ private:
   std::vector<double> m_weight;
   mutable Factored_system<SolverTraits> m_system;
   std::vector<std::size_t> m_node, m_loop_of_vertex, m_loop_unknown, m_reference_loop;
-  std::vector<bool> m_aligned, m_free_edge;
+  std::vector<bool> m_aligned, m_free_edge, m_border_edge;
   std::size_t m_nodes = 0, m_loops = 0;
   std::vector<std::vector<double>> m_difference; // per loop unknown, per edge
   Eigen::MatrixXd m_gram;
