@@ -719,6 +719,26 @@ TEMPLATE_TEST_CASE("Field-aligned quads: a folded map is repaired by stiffening,
     const double kept = bsp.energy();
     bsp.solve();
     CHECK(kept >= bsp.energy() * (1. - 1e-9));
+    // stiffen() factors the new weights in the old solver (its forest and directions kept);
+    // switching the lattice off and on builds a new one with the same weights: the same map
+    {
+      const double reweighted = bsp.energy();
+      std::vector<std::array<double, 3>> u, v;
+      for(auto f : faces(mesh))
+        u.push_back(bsp.corner_values(f, 0)), v.push_back(bsp.corner_values(f, 1));
+      bsp.set_lattice_branch_points(false);
+      bsp.set_lattice_branch_points(true);
+      bsp.solve();
+      CHECK(std::abs(bsp.energy() - reweighted) <= 1e-9 * reweighted);
+      std::size_t f_i = 0;
+      for(auto f : faces(mesh))
+      {
+        const auto u2 = bsp.corner_values(f, 0), v2 = bsp.corner_values(f, 1);
+        for(std::size_t i = 0; i < 3; ++i)
+          CHECK((std::abs(u2[i] - u[f_i][i]) < 1e-8 && std::abs(v2[i] - v[f_i][i]) < 1e-8));
+        ++f_i;
+      }
+    }
     // the windings of another field or other singularities do not apply
     std::vector<typename boost::graph_traits<Mesh>::face_descriptor> free_faces;
     for(auto f : faces(mesh))

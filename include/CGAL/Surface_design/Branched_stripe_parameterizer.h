@@ -540,13 +540,18 @@ public:
     std::swap(scaled, m_stiffness);
     try
     {
-      refactor();
+      // the same field and constraints: the solver keeps its forest and directions
+      const internal::Direction_field_cover& cover = m_solver->cover();
+      m_solver->set_weights(weights(cover), spoke_weights(cover));
     }
     catch(...)
     {
       std::swap(scaled, m_stiffness);
       throw;
     }
+    ++m_factorizations;
+    m_relaxation.reset();
+    m_solved = false; // the windings stay valid: the same field and indices, other weights
   }
   /// The sparse factorizations done so far: one per `set_field()`, one per relaxation of
   /// `place_automatic_singularities()`. Edits of the singularities and the frequency add none.
@@ -789,7 +794,7 @@ private:
 
   double stiffness(std::size_t f) const { return m_stiffness.empty() ? 1. : m_stiffness[f]; }
 
-  // A new factorization of the same field's system, after a change of the weights.
+  // A new solver for the current field, after a change of its constraints (the lattice, the boundary).
   void refactor()
   {
     const internal::Direction_field_cover cover = m_solver->cover();

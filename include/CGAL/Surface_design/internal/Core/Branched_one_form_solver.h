@@ -8,6 +8,7 @@
 #define CGAL_SURFACE_DESIGN_INTERNAL_CORE_BRANCHED_ONE_FORM_SOLVER_H
 
 #include <CGAL/Surface_design/exceptions.h>
+#include <CGAL/assertions.h>
 #include <CGAL/Surface_design/internal/Core/angles.h>
 #include <CGAL/Surface_design/internal/Core/cover_constraints.h>
 #include <CGAL/Surface_design/internal/Core/direction_field_cover.h>
@@ -127,13 +128,41 @@ public:
       m_P[e] = sheet_transition(m_cover.n, m_cover.matching[e]);
       m_ends[e] = m_idx.edge_vertices(e);
     }
-    find_twisted_components();
+    m_twisted = twisted_components(m_idx, m_topology, m_P, m_ends); // cover_constraints.h
     collect_branch_faces(spoke_weight);
     collect_level_constraints();
     build_forest();
     factor();
   }
 
+  /// New weights, as in the constructor (the spokes' given if and only if they were): factors
+  /// again and keeps the rest (the forest, the free directions and the constraints do not depend
+  /// on the weights); the windings of earlier solutions stay valid for `solve_with_windings()`.
+  /// \throws Linear_solver_failure if the factorization fails; the old weights are then kept
+  ///         (and factored again)
+  void set_weights(std::vector<double> weight, const std::vector<std::array<double, 3>>& spoke_weight)
+  {
+    CGAL_precondition(weight.size() == m_weight.size() && spoke_weight.empty() != m_spokes);
+    auto swap_weights = [&](std::vector<double>& w, std::vector<std::array<double, 3>>& spokes) {
+      std::swap(w, m_weight);
+      for(std::size_t b = 0; m_spokes && b < m_branch.size(); ++b)
+        std::swap(spokes[m_branch[b].face], m_branch[b].spoke_weight);
+    };
+    std::vector<std::array<double, 3>> spokes = spoke_weight;
+    swap_weights(weight, spokes);
+    m_basis_ready = m_lattice_ready = false;
+    m_potential_basis.resize(0, 0);
+    try
+    {
+      factor();
+    }
+    catch(...)
+    {
+      swap_weights(weight, spokes);
+      factor();
+      throw;
+    }
+  }
   int values_per_vertex() const { return m_cover.d; }
   const Direction_field_cover& cover() const { return m_cover; }
   const std::vector<double>& weights() const { return m_weight; }
@@ -196,25 +225,18 @@ public:
           for(const auto& [e, v] : m_eta[m_kept[j]])
             ystar[e] += double(c[Eigen::Index(j)]) * v;
         }
-      if(changed && !m_response.empty())
+      if(changed && m_potential_basis.cols() > 0)
       {
-        // y and the potential are affine in ystar: add the stored responses of the moved
-        // directions instead of a second back-substitution (most solves move nearly every
-        // winding off the forest's particular solution; measured, median edit times: line fields
-        // at 60k faces 8.3 -> 5.4 ms, cross fields at 60k 31.9 -> 26.5 ms, on bunny_8k 6.1 ->
-        // 6.9 ms, the one loss)
-        const std::size_t d = std::size_t(m_cover.d), ne = s.y.size();
-        for(std::size_t j = 0; j < m; ++j)
-          if(const double cj = double(c[Eigen::Index(j)]); cj != 0.)
-          {
-            const Response& r = m_response[j];
-            for(std::size_t e = 0; e < ne; ++e)
-              for(std::size_t a = 0; a < d; ++a)
-                s.y[e][Eigen::Index(a)] += cj * r.y[e * d + a];
-            for(std::size_t v = 0; v < s.alpha.size(); ++v)
-              for(std::size_t a = 0; a < d; ++a)
-                s.alpha[v][Eigen::Index(a)] += cj * r.potential[v * d + a];
-          }
+        // the potential is affine in ystar: add those of the moved directions instead of a second
+        // back-substitution (most solves move nearly every winding off the forest's particular
+        // solution; measured, median edit times: line fields at 60k faces 8.3 -> 5.4 ms, cross
+        // fields at 60k 31.9 -> 26.5 ms)
+        const std::size_t d = std::size_t(m_cover.d);
+        Eigen::VectorXd f = m_potential_basis * c.cast<double>();
+        for(std::size_t v = 0; v < s.alpha.size(); ++v)
+          for(std::size_t a = 0; a < d; ++a)
+            f[Eigen::Index(v * d + a)] += s.alpha[v][Eigen::Index(a)];
+        s.y = one_form_of_potential(ystar, f, &s.alpha);
       }
       else if(changed)
         s.y = optimal_one_form(ystar, omega, &s.alpha);
@@ -482,31 +504,6 @@ private:
     m_chain_eta = std::move(l.chain_eta);
   }
 
-  // --- topology of the cover
-
-  // A component is twisted when the transport of the sheets around some cycle is not the
-  // identity. With the accumulated transition G_v along the tree, the cycle of a non-tree edge
-  // e = (i -> j) transports by G_i P_e G_j^T.
-  void find_twisted_components()
-  {
-    const Tree_cotree& t = m_topology.tree;
-    std::vector<Eigen::Matrix2d> G(m_idx.number_of_vertices(), Eigen::Matrix2d::Identity());
-    for(std::size_t v : t.vertex_order)
-      if(t.parent_halfedge[v] != npos)
-      {
-        const std::size_t h = t.parent_halfedge[v];
-        G[v] = G[m_idx.source_index(m_idx.halfedge(h))] * transition_along(h);
-      }
-    m_twisted.assign(m_topology.components.size(), false);
-    for(std::size_t e = 0; e < m_P.size(); ++e)
-    {
-      const auto [i, j] = m_ends[e];
-      const Eigen::Matrix2d hol = G[i] * m_P[e] * G[j].transpose();
-      if(!(hol - Eigen::Matrix2d::Identity()).isZero(1e-12))
-        m_twisted[m_topology.components.vertex_component[i]] = true;
-    }
-  }
-
   // The dual forest: roots are the branch faces and the boundary loops (no closure to meet), and
   // one face on each closed component without branch faces (its closure follows from the others
   // by Stokes' theorem when the component is not twisted).
@@ -712,10 +709,7 @@ private:
       if(m_fixed[i])
         entries.emplace_back(Eigen::Index(i), Eigen::Index(i), 1.);
     const Eigen::Index size = Eigen::Index(nv * std::size_t(d));
-    Sparse_matrix L(size, size);
-    L.setFromTriplets(entries.begin(), entries.end());
-    L.makeCompressed();
-    m_system.factor(std::move(L));
+    m_system.factor(m_assembler.assemble(entries, size, size)); // set_weights(): the pattern again
   }
 
   // y* = 2 pi m*: the free edges at `free_values` (zero elsewhere off the forest), the forest
@@ -823,7 +817,7 @@ private:
     if(m_basis_ready)
       return;
     // built in locals and committed at the end: a failing back-substitution leaves no half basis
-    // Every direction and every response is independent of the others: concurrent tasks (TBB).
+    // Every direction and every potential is independent of the others: concurrent tasks (TBB).
     const std::size_t m = number_of_directions(), ne = m_idx.number_of_edges();
     std::vector<Sparse_form> eta(m);
     std::vector<std::vector<Face_index>> curls(m);
@@ -844,11 +838,11 @@ private:
           eta[j].emplace_back(e, y[e]);
     });
     Eigen::MatrixXd full = Eigen::MatrixXd::Zero(Eigen::Index(m), Eigen::Index(m));
-    // the responses y(eta_k, 0) and their potentials, kept (for the kept directions) when they
-    // fit in the memory budget: a solve whose windings move adds them instead of solving again
+    // the potentials of the directions (the responses to them), kept for the kept directions when
+    // they fit in the memory budget: a solve whose windings move adds them instead of solving again
     const std::size_t d = std::size_t(m_cover.d), nv = m_idx.number_of_vertices();
-    const bool keep_responses = m * (ne + nv) * d <= response_budget;
-    std::vector<Response> response(keep_responses ? m : 0);
+    const bool keep_potentials = m * nv * d <= potential_budget;
+    Eigen::MatrixXd all_potentials(keep_potentials ? Eigen::Index(nv * d) : 0, keep_potentials ? Eigen::Index(m) : 0);
     // the potentials of the directions solved by blocks of right-hand sides (a supernodal
     // factorization reads its factor once per block)
     Eigen::MatrixXd rhs, potentials;
@@ -860,47 +854,19 @@ private:
         rhs.col(Eigen::Index(c)) = potential_rhs(dense_form(eta[k0 + c], ne), nullptr);
       });
       m_system.solve_many(rhs, potentials);
+      if(keep_potentials)
+        all_potentials.middleCols(Eigen::Index(k0), Eigen::Index(width)) = potentials;
       for_each_index(width, true, [&](std::size_t c) {
         const std::size_t k = k0 + c;
-        std::vector<Value> potential;
-        const std::vector<Value> xi = one_form_of_potential(dense_form(eta[k], ne), potentials.col(Eigen::Index(c)),
-                                                            keep_responses ? &potential : nullptr);
+        const std::vector<Value> xi = one_form_of_potential(dense_form(eta[k], ne), potentials.col(Eigen::Index(c)), nullptr);
         const std::vector<Value> w_xi = weighted_residual(xi, nullptr);
         for(std::size_t j = 0; j < m; ++j)
           full(Eigen::Index(j), Eigen::Index(k)) = sparse_dot(eta[j], w_xi);
-        if(keep_responses)
-        {
-          response[k].y.resize(ne * d);
-          for(std::size_t e = 0; e < ne; ++e)
-            for(std::size_t a = 0; a < d; ++a)
-              response[k].y[e * d + a] = xi[e][Eigen::Index(a)];
-          response[k].potential.resize(nv * d);
-          for(std::size_t v = 0; v < nv; ++v)
-            for(std::size_t a = 0; a < d; ++a)
-              response[k].potential[v * d + a] = potential[v][Eigen::Index(a)];
-        }
       });
     }
     full = 0.5 * (full + full.transpose()).eval();
     // keep j when its harmonic part is not (numerically) in the span of the kept ones
-    Eigen::MatrixXd chol = Eigen::MatrixXd::Zero(Eigen::Index(m), Eigen::Index(m));
-    std::vector<std::size_t> kept;
-    for(std::size_t j = 0; j < m; ++j)
-    {
-      const Eigen::Index r = Eigen::Index(kept.size());
-      Eigen::VectorXd q = Eigen::VectorXd::Zero(r);
-      for(Eigen::Index i = 0; i < r; ++i)
-        q[i] = full(Eigen::Index(kept[std::size_t(i)]), Eigen::Index(j));
-      const Eigen::VectorXd z =
-        r > 0 ? Eigen::VectorXd(chol.topLeftCorner(r, r).triangularView<Eigen::Lower>().solve(q)) : q;
-      const double diag = full(Eigen::Index(j), Eigen::Index(j));
-      const double rest = diag - z.squaredNorm();
-      if(!(diag > 0.) || !(rest > 1e-9 * diag))
-        continue;
-      chol.row(r).head(r) = z.transpose();
-      chol(r, r) = std::sqrt(rest);
-      kept.push_back(j);
-    }
+    std::vector<std::size_t> kept = independent_gram_columns(full);
     const Eigen::Index mk = Eigen::Index(kept.size());
     Eigen::MatrixXd Q(mk, mk);
     for(Eigen::Index i = 0; i < mk; ++i)
@@ -910,10 +876,9 @@ private:
     m_Q = std::move(Q);
     m_eta = std::move(eta);
     m_direction_curl = std::move(curls);
-    m_response.clear();
-    if(keep_responses)
-      for(std::size_t j : kept)
-        m_response.push_back(std::move(response[j]));
+    m_potential_basis.resize(keep_potentials ? all_potentials.rows() : 0, keep_potentials ? Eigen::Index(kept.size()) : 0);
+    for(std::size_t j = 0; keep_potentials && j < kept.size(); ++j)
+      m_potential_basis.col(Eigen::Index(j)) = all_potentials.col(Eigen::Index(kept[j]));
     m_kept = std::move(kept);
     m_basis_ready = true;
   }
@@ -926,12 +891,7 @@ private:
     int partner_sheet = 0;
     double partner_sign = 0.;
   };
-  // y(eta_j, 0) per edge and its potential per vertex (d values each), for a kept direction j
-  struct Response
-  {
-    std::vector<double> y, potential;
-  };
-  static constexpr std::size_t response_budget = std::size_t(1) << 24; // doubles (128 MB)
+  static constexpr std::size_t potential_budget = std::size_t(1) << 24; // doubles (128 MB)
   static constexpr std::size_t solve_block = 32;                        // right-hand sides per solve
   struct Peel_other
   {
@@ -966,10 +926,11 @@ private:
   std::vector<Peel_step> m_peel;
   std::vector<Peel_other> m_peel_others;
   std::vector<Free_direction> m_free;
+  Triplet_assembler m_assembler;
   bool m_basis_ready = false;
   std::vector<Sparse_form> m_eta;
   std::vector<std::size_t> m_kept;
-  std::vector<Response> m_response; // per kept direction, or empty
+  Eigen::MatrixXd m_potential_basis; // per kept direction, its potential (a column), or empty
   Eigen::MatrixXd m_Q;
   Reduced_integer_quadratic m_reduced;
   // branch points on the lattice

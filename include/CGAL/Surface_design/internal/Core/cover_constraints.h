@@ -42,6 +42,32 @@ struct Boundary_level_lines
   std::vector<std::vector<std::pair<std::size_t, Eigen::Vector2d>>> chain_eta;
 };
 
+/// Per connected component, whether it is twisted: the transport of the sheets around some cycle
+/// is not the identity. With the accumulated transition G_v along the primal tree, the cycle of a
+/// non-tree edge e = (i -> j) transports by G_i P_e G_j^T.
+template <class Indices>
+std::vector<bool> twisted_components(const Indices& idx, const Topology& topology, const std::vector<Eigen::Matrix2d>& P,
+                                     const std::vector<std::pair<std::size_t, std::size_t>>& ends)
+{
+  const Tree_cotree& t = topology.tree;
+  std::vector<Eigen::Matrix2d> G(idx.number_of_vertices(), Eigen::Matrix2d::Identity());
+  for(std::size_t v : t.vertex_order)
+    if(t.parent_halfedge[v] != npos)
+    {
+      const auto hd = idx.halfedge(t.parent_halfedge[v]);
+      const Eigen::Matrix2d& Pe = P[idx.edge_index(hd)];
+      G[v] = G[idx.source_index(hd)] * (idx.orientation_sign(hd) > 0 ? Pe : Eigen::Matrix2d(Pe.transpose()));
+    }
+  std::vector<bool> twisted(topology.components.size(), false);
+  for(std::size_t e = 0; e < P.size(); ++e)
+  {
+    const auto [i, j] = ends[e];
+    if(!(G[i] * P[e] * G[j].transpose() - Eigen::Matrix2d::Identity()).isZero(1e-12))
+      twisted[topology.components.vertex_component[i]] = true;
+  }
+  return twisted;
+}
+
 /// `level_sheets`: per edge, empty or the bit mask of its sheets (in the frame of its source,
 /// `ends[e].first`) on a level line; P the sheet transitions, d the values per vertex.
 /// \throws Invalid_constraints for a loop with some but not all edges on level lines, or whose

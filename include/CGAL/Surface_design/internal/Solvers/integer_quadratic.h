@@ -20,6 +20,31 @@ namespace CGAL {
 namespace Surface_design {
 namespace internal {
 
+/// The columns of the Gram matrix `gram` (symmetric positive semi-definite) whose vectors are not
+/// numerically in the span of the earlier kept ones (an incremental Cholesky factorization: a
+/// column stays when its residual square norm is above `relative` times its square norm).
+inline std::vector<std::size_t> independent_gram_columns(const Eigen::MatrixXd& gram, double relative = 1e-9)
+{
+  const Eigen::Index m = gram.rows();
+  Eigen::MatrixXd chol = Eigen::MatrixXd::Zero(m, m);
+  std::vector<std::size_t> kept;
+  for(Eigen::Index j = 0; j < m; ++j)
+  {
+    const Eigen::Index r = Eigen::Index(kept.size());
+    Eigen::VectorXd q(r);
+    for(Eigen::Index i = 0; i < r; ++i)
+      q[i] = gram(Eigen::Index(kept[std::size_t(i)]), j);
+    const Eigen::VectorXd z = r > 0 ? Eigen::VectorXd(chol.topLeftCorner(r, r).triangularView<Eigen::Lower>().solve(q)) : q;
+    const double diag = gram(j, j), rest = diag - z.squaredNorm();
+    if(!(diag > 0.) || !(rest > relative * diag))
+      continue;
+    chol.row(r).head(r) = z.transpose();
+    chol(r, r) = std::sqrt(rest);
+    kept.push_back(std::size_t(j));
+  }
+  return kept;
+}
+
 /// Integer c minimizing 2 g^T c + c^T Q c (Q symmetric positive definite): the best floor/ceil
 /// rounding of the relaxed optimum (exhaustive for up to 12 unknowns, plain rounding otherwise),
 /// then +-1 coordinate steps until none improves. Exact for one unknown; a local optimum in the
