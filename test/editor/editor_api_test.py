@@ -473,6 +473,7 @@ def run(server, data, nv, nf):
     check("trivial connection on the torus: no singularity needed", status == 200 and state["field_singularities"] == [], state)
 
     quad_preview(server)
+    quad_preview_with_boundary(server)
 
 
 def read_quad_off(text):
@@ -638,6 +639,109 @@ def quad_preview(server):
           state)
     status, state, _ = server.edit({"op": "field", "kind": "smoothest", "order": 2})
     expect_refused(server, {"op": "quads", "on": True}, ["cross field"], "quads on a line field")
+
+
+def quad_mesh_with_boundary_reading(points, faces):
+    """An independent reading of a quad mesh with a boundary: (only quads, every directed edge once
+    and every edge in at most two faces, Euler characteristic, number of boundary loops, valence
+    per vertex, whether each vertex is on the boundary)."""
+    directed = {}
+    for face in faces:
+        for i in range(len(face)):
+            key = (face[i], face[(i + 1) % len(face)])
+            directed[key] = directed.get(key, 0) + 1
+    quads = all(len(face) == 4 for face in faces)
+    manifold = all(n == 1 for n in directed.values())
+    undirected = {tuple(sorted(k)) for k in directed}
+    border = {(a, b) for (a, b) in directed if (b, a) not in directed}  # the face is on the left
+    nxt = {}
+    for a, b in border:
+        manifold = manifold and b not in nxt  # one boundary edge into each boundary vertex
+        nxt[b] = a
+    loops, seen = 0, set()
+    for start in nxt:
+        if start in seen:
+            continue
+        loops += 1
+        v = start
+        while v not in seen:
+            seen.add(v)
+            v = nxt[v]
+    valence = [0] * len(points)
+    for a, b in undirected:
+        valence[a] += 1
+        valence[b] += 1
+    on_boundary = [v in nxt for v in range(len(points))]
+    return quads, manifold, len(points) - len(undirected) + len(faces), loops, valence, on_boundary
+
+
+def quad_preview_with_boundary(server):
+    """The quad preview on a mesh with a boundary: a plate with two square holes (3 loops, Euler
+    characteristic -1, 4 convex and 8 concave corners). The quads follow every loop when the cross
+    field follows the boundary; otherwise the preview is refused, saying how to get such a field."""
+    status, state, _ = server.edit({"op": "load", "name": "holed_plate.off"})
+    check("quads with a boundary: the plate loaded", status == 200, state)
+    status, state, _ = server.edit({"op": "field", "kind": "trivial", "order": 4, "cones": "smoothest"})
+    check("quads with a boundary: a trivial cross field, free along the boundary", status == 200 and
+          "boundary" not in state["field"], state)
+    expect_refused(server, {"op": "quads", "on": True}, ["boundary", "tangent"],
+                   "quads on a mesh with a boundary that the field does not follow")
+    expect_refused(server, {"op": "field", "kind": "trivial", "order": 4, "boundary": "tangent"}, ["cones", "smoothest"],
+                   "a trivial field along the boundary with spread cones")
+    expect_refused(server, {"op": "field", "kind": "axis", "axis": [0, 1, 0], "boundary": "tangent"}, ["tangent", "axis"],
+                   "an axis field along the boundary")
+    expect_refused(server, {"op": "field", "kind": "smoothest", "order": 4, "boundary": "normal"}, ["free", "tangent"],
+                   "an unknown boundary condition")
+    status, state, _ = server.edit({"op": "field", "kind": "trivial", "order": 4, "cones": "smoothest",
+                                    "boundary": "tangent"})
+    check("quads with a boundary: the cross field along the boundary, its cones summing to 0 here "
+          "(4 chi, less the 4 convex corners, plus the 8 concave ones)", status == 200 and
+          state["field"].get("boundary") == "tangent" and sum(k for _, k in state["field_singularities"]) == 0, state)
+    cones = len(state["field_singularities"]) if status == 200 else 0
+    status, state, _ = server.edit({"op": "frequency", "stripes": 12})
+    status, state, _ = server.edit({"op": "quads", "on": True})
+    check("quads with a boundary: the preview follows the 3 loops", status == 200 and state["quads"]["valid"] and
+          state["quads"].get("boundary_loops") == 3 and state["quads"]["irregular_vertices"] == cones, state)
+    status, _, body = server.request("GET", "api/export_quads.off")
+    if status == 200:
+        points, faces = read_quad_off(body.decode())
+        quads, manifold, chi, loops, valence, on_boundary = quad_mesh_with_boundary_reading(points, faces)
+        inner = sorted(valence[v] for v in range(len(points)) if not on_boundary[v] and valence[v] != 4)
+        corners = sorted(valence[v] for v in range(len(points)) if on_boundary[v] and valence[v] != 3)
+        check("quads with a boundary: the OFF read alone: quads, manifold, Euler characteristic -1, 3 loops, "
+              "the corners (valence 2 at the 4 convex ones, 4 at the 8 concave ones), regular inside but at cones",
+              quads and manifold and chi == -1 and loops == 3 and corners == [2] * 4 + [4] * 8 and len(inner) == cones,
+              (quads, manifold, chi, loops, corners, inner))
+    else:
+        check("quads with a boundary: exported", False, (status, body[:200]))
+    # a field singularity in a face on the boundary is refused (the field's direction is fixed
+    # there); a pair inside is accepted and the preview follows (or says why not)
+    mesh = server.json("api/mesh")
+    T, nf = mesh["triangles"], mesh["faces"]
+    border = state.get("boundary_faces") or []
+    count = {}
+    for f in range(nf):
+        for i in range(3):
+            e = tuple(sorted((T[3 * f + i], T[3 * f + (i + 1) % 3])))
+            count[e] = count.get(e, 0) + 1
+    on_border = [any(count[tuple(sorted((T[3 * f + i], T[3 * f + (i + 1) % 3])))] == 1 for i in range(3))
+                 for f in range(nf)]
+    outer = next(f for f in range(nf) if on_border[f])
+    inside = [f for f in range(nf) if not on_border[f]]
+    expect_refused(server, {"op": "add_field_pair", "plus": outer, "minus": inside[len(inside) // 2]},
+                   ["boundary", str(outer)], "a field singularity in a face on the boundary")
+    status, state, _ = server.edit({"op": "add_field_pair", "plus": inside[len(inside) // 3],
+                                    "minus": inside[2 * len(inside) // 3]})
+    check("quads with a boundary: a cone pair inside, the preview updated",
+          status == 200 and state["quads"]["on"] and len(state["field_singularities"]) == cones + 2 and
+          (state["quads"]["valid"] and state["quads"]["irregular_vertices"] == cones + 2 or
+           "quad mesh" in state["quads"].get("problem", "")), state)
+    # with the preview on, a field that does not follow the boundary is refused; switched off, it is not
+    expect_refused(server, {"op": "field", "kind": "smoothest", "order": 4}, ["boundary", "off"],
+                   "a free cross field while the preview follows the boundary")
+    status, state, _ = server.edit({"op": "quads", "on": False})
+    status, state, _ = server.edit({"op": "field", "kind": "smoothest", "order": 4})
+    check("quads with a boundary: off, then any field", status == 200 and state["quads"] == {"on": False}, state)
 
 
 if __name__ == "__main__":

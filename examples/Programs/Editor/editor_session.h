@@ -41,6 +41,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -609,9 +610,25 @@ private:
     if(kind != "axis" && kind != "smoothest" && kind != "heat" && kind != "trivial" && kind != "principal")
       throw Request_error("unknown field kind '" + kind + "' (axis, smoothest, principal, heat, trivial)");
     const int order = order_arg(request, kind);
+    // "boundary": "tangent": the field follows the boundary (one of its directions along every
+    // boundary edge), as the quad preview of a mesh with a boundary needs; "free" (default) not
+    const std::string boundary = request.contains("boundary") ? text_arg(request, "boundary") : "free";
+    if(boundary != "free" && boundary != "tangent")
+      throw Request_error("\"boundary\" = '" + boundary + "': choose \"free\" or \"tangent\"");
+    const bool tangent = boundary == "tangent";
+    if(tangent && kind != "smoothest" && kind != "trivial")
+      throw Request_error("\"boundary\": \"tangent\" takes the smoothest field or a trivial connection, not " + kind);
+    if(tangent && kind == "trivial" && (!request.contains("cones") || text_arg(request, "cones") != "smoothest"))
+      throw Request_error("\"boundary\": \"tangent\" with a trivial connection takes \"cones\": \"smoothest\" (the "
+                          "smoothest field's along the boundary: their sum is the one such a field needs)");
+    if(m_quads && order == 4 && !tangent && m_closed_euler.size() != m_components) // (another order: quads off)
+      throw Request_error("field: the quad preview of " + m_name + " (it has a boundary) needs a field along it "
+                          "(\"boundary\": \"tangent\"): switch the quad preview off first");
     const auto start = Clock::now();
     std::vector<Vector> field;
     Json spec{{"kind", kind}, {"order", order}};
+    if(tangent)
+      spec["boundary"] = boundary;
     std::map<std::size_t, int> field_singularities;
     std::unique_ptr<Connection> connection;
     if(kind == "axis")
@@ -629,7 +646,7 @@ private:
       spec["axis"] = {x, y, z};
     }
     else if(kind == "smoothest" || kind == "principal")
-      field = smoothest_field(kind, order);
+      field = smoothest_field(kind, order, tangent);
     else if(kind == "heat")
     {
       const std::size_t v = std::size_t(integer_arg(request, "vertex", 0, long(num_vertices(*m_mesh)) - 1));
@@ -651,12 +668,15 @@ private:
       if(cones != "spread" && cones != "smoothest")
         throw Request_error("\"cones\" = '" + cones + "': choose \"spread\" or \"smoothest\"");
       connection = std::make_unique<Connection>(
-        *m_mesh, SD::parameters::symmetry_order(order).sparse_linear_solver(m_field_solver));
+        *m_mesh, SD::parameters::symmetry_order(
+                   order, SD::parameters::field_boundary_condition(
+                            tangent ? SD::Direction_field_boundary::tangent : SD::Direction_field_boundary::free,
+                            CGAL::parameters::sparse_linear_solver(m_field_solver))));
       if(cones == "spread")
         field_singularities = default_field_singularities(order);
       else
       {
-        const std::vector<Vector> smoothest = smoothest_field("smoothest", order);
+        const std::vector<Vector> smoothest = smoothest_field("smoothest", order, tangent);
         std::vector<int> index(num_faces(*m_mesh), 0);
         wrap_library([&] {
           SD::direction_field_singularities(*m_mesh, CGAL::make_property_map(smoothest), CGAL::make_property_map(index),
@@ -783,20 +803,24 @@ private:
     if(on && m_order != 4)
       throw Request_error("quads: the quad preview needs a cross field (order 4: \"cross field: trivial\" places "
                           "the cones, \"cross field: smoothest\" chooses them)");
-    if(on && m_closed_euler.size() != m_components)
-      throw Request_error("quads: " + m_name + " has a boundary, and the field-aligned quads take closed surfaces only");
+    const bool open = m_closed_euler.size() != m_components;
+    if(on && open && m_field_spec.value("boundary", "free") != "tangent")
+      throw Request_error("quads: " + m_name + " has a boundary, and the quads follow it: the cross field must follow "
+                          "it too (\"boundary\": \"tangent\"; in the page, \"cross field: trivial, the smoothest "
+                          "field's cones, along the boundary\")");
     if(on && !stripe_indices().empty())
       throw Request_error("quads: remove the stripe singularities first (a dislocation is a T-junction, not a quad)");
     const bool was = m_quads;
     const int was_rounds = m_quad_rounds;
     // the stripes' system without the stiffening of earlier extractions, its branch points on
     // the lattice or not
-    auto apply = [this](bool quads, int r) {
+    auto apply = [this, open](bool quads, int r) {
       m_quads = quads;
       m_quad_rounds = r;
       clear_quads();
       if(m_order != 4)
         return;
+      m_bsp->set_boundary_on_level_lines(quads && open); // every boundary loop a line of the quads
       m_bsp->set_field(CGAL::make_property_map(m_field), m_stripes / m_diagonal);
       m_bsp->set_lattice_branch_points(quads);
       solve();
@@ -837,6 +861,16 @@ private:
                          {"edge_length", r.edge_length},
                          {"stiffening_rounds", r.stiffening_rounds},
                          {"rounds", m_quad_rounds}};
+      std::size_t loops = 0; // the boundary loops of the quads: the input's, followed
+      std::set<Mesh::Halfedge_index> seen;
+      for(auto h : halfedges(m_quad_mesh))
+        if(is_border(h, m_quad_mesh) && seen.insert(h).second)
+        {
+          ++loops;
+          for(auto g : halfedges_around_face(h, m_quad_mesh))
+            seen.insert(g);
+        }
+      m_quad_info["boundary_loops"] = loops;
       for(auto e : edges(m_quad_mesh))
         for(auto v : {source(halfedge(e, m_quad_mesh), m_quad_mesh), target(halfedge(e, m_quad_mesh), m_quad_mesh)})
           for(int i = 0; i < 3; ++i)
@@ -852,9 +886,10 @@ private:
 
   // the smoothest field of `order` (kind "smoothest"), or the principal curvature line field
   // (kind "principal"), computed once per mesh
-  const std::vector<Vector>& smoothest_field(const std::string& kind, int order)
+  const std::vector<Vector>& smoothest_field(const std::string& kind, int order, bool along_boundary = false)
   {
-    const int key = kind == "principal" ? 0 : order; // the cache: 0 holds the principal field
+    // the cache: 0 holds the principal field, -order the smoothest field along the boundary
+    const int key = kind == "principal" ? 0 : along_boundary ? -order : order;
     auto it = m_fields.find(key);
     if(it == m_fields.end())
     {
@@ -865,6 +900,13 @@ private:
                                         SD::parameters::symmetry_order(
                                           2, SD::parameters::curvature_alignment_weight(
                                                0.1, SD::parameters::sparse_linear_solver(m_field_solver))));
+        else if(along_boundary) // its cones kept apart by the flow, as quad_remesh does
+          SD::smoothest_direction_field(
+            *m_mesh, CGAL::make_property_map(computed),
+            SD::parameters::symmetry_order(
+              order, SD::parameters::field_boundary_condition(
+                       SD::Direction_field_boundary::tangent,
+                       SD::parameters::unit_length_iterations(30, CGAL::parameters::sparse_linear_solver(m_field_solver)))));
         else
           SD::smoothest_direction_field(*m_mesh, CGAL::make_property_map(computed),
                                         SD::parameters::symmetry_order(order).sparse_linear_solver(m_field_solver));
@@ -887,6 +929,11 @@ private:
   void edit_field_singularities(const std::map<std::size_t, int>& changes, const std::string& what)
   {
     Connection& tc = connection(what.c_str());
+    if(tc.boundary_condition() != SD::Direction_field_boundary::free)
+      for(const auto& [f, k] : changes)
+        if(k != 0 && m_fap->has_boundary_edge(descriptor(f)))
+          throw Request_error(what + ": face " + std::to_string(f) + " has an edge on the boundary, which the field "
+                              "follows (its direction is fixed there): choose a face inside");
     std::map<std::size_t, int> before;
     for(const auto& [f, k] : changes)
       before[f] = tc.index(descriptor(f));

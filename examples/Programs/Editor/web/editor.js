@@ -285,7 +285,7 @@ function showState() {
   const f = state.field;
   const value = f.kind === 'axis' ? `axis:${f.axis.map((x) => Math.round(x * 1e6) / 1e6).join(',')}`
     : f.kind === 'heat' ? `heat:${Math.round(f.degrees)}` : f.kind + (f.order > 1 && f.kind !== 'principal' ? `@${f.order}` : '') +
-      (f.cones ? `+${f.cones}` : '');
+      (f.cones ? `+${f.cones}` : '') + (f.boundary ? `+${f.boundary}` : '');
   ui.family.hidden = state.families < 2;
   ui.automatic.disabled = state.order < 2;
   ui.quads.disabled = state.order !== 4;
@@ -293,6 +293,7 @@ function showState() {
   ui.exportQuads.disabled = !(state.quads.on && state.quads.valid);
   ui.quadStatus.textContent = !state.quads.on ? (state.order === 4 ? 'off' : 'off (a cross field only)')
     : state.quads.valid ? `${state.quads.faces} quads, ${state.quads.irregular_vertices} irregular vertices (the cones)` +
+      (state.quads.boundary_loops ? `, ${state.quads.boundary_loops} boundary loops followed` : '') +
       (state.quads.stiffening_rounds ? `, ${state.quads.stiffening_rounds} rounds of stiffening` : '')
     : `not a quad mesh: ${state.quads.problem}`;
   if ([...ui.field.options].some((o) => o.value === value)) ui.field.value = value;
@@ -528,9 +529,10 @@ function setField(t0 = performance.now()) {
   else if (value.startsWith('heat:')) request = { op: 'field', kind: 'heat', vertex: heatSource, degrees: Number(value.slice(5)) };
   else {
     const [kind, rest] = value.split('@');
-    const [order, cones] = (rest || '').split('+');
+    const [order, cones, boundary] = (rest || '').split('+');
     request = { op: 'field', kind, order: Number(order || (kind === 'principal' ? 2 : 1)) };
     if (cones) request.cones = cones;
+    if (boundary) request.boundary = boundary;
   }
   return edit(request, t0, `field ${value}`);
 }
