@@ -104,12 +104,11 @@ void editor_workload(const Mesh& mesh, const std::string&, Run& run)
               std::abs(double(bytes.size()) - double(4 + length + 12 * num_faces(mesh))), 0.5);
     run.check("|singularities after the drag - 2|", std::abs(double(state["singularities"].size()) - 2.), 0.5);
   }
-  if(!CGAL::is_closed(mesh))
-    return; // the quad preview takes closed meshes
-
-  // the quad preview of a cross field: the trivial connection's cones, about 2000 quads, then a
+  // the quad preview of a cross field: the trivial connection's cones (on a mesh with a boundary,
+  // the smoothest field's along it, and the connection along it too), about 2000 quads, then a
   // cone dragged across 10 faces, each step a new field, a factorization, the stripes, the
   // extraction (and its stiffening rounds where the map folds)
+  const bool closed = CGAL::is_closed(mesh);
   auto state_of = [](const std::string& b) {
     const std::uint32_t length = std::uint32_t((unsigned char)b[0]) | std::uint32_t((unsigned char)b[1]) << 8 |
                                  std::uint32_t((unsigned char)b[2]) << 16 | std::uint32_t((unsigned char)b[3]) << 24;
@@ -119,7 +118,8 @@ void editor_workload(const Mesh& mesh, const std::string&, Run& run)
   try
   {
     const auto start = Clock::now();
-    bytes = request(R"({"op":"field","kind":"trivial","order":4})");
+    bytes = request(closed ? R"({"op":"field","kind":"trivial","order":4})"
+                           : R"({"op":"field","kind":"trivial","order":4,"cones":"smoothest","boundary":"tangent"})");
     run.record("cross field", std::chrono::duration<double, std::milli>(Clock::now() - start).count());
   }
   catch(const editor::Request_error&)
