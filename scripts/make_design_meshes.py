@@ -13,6 +13,8 @@
 - saddle_l.off: an L-shaped saddle (corners for the field-aligned quads).
 - holed_plate.off, noisy_pipe.off: a bent plate with two holes and an open tube (several
   boundary loops for the field-aligned quads).
+- creased_slab.off: a box with a rectangular hole through it (genus 1, creases of 90 degrees:
+  fields that follow creases).
 
 Usage: python3 scripts/make_design_meshes.py [OUTPUT_FOLDER]   (default: data/)
 """
@@ -171,6 +173,45 @@ def noisy_pipe(around, along, noise, seed):
     return points, faces
 
 
+def creased_slab(nx, ny, hole, rows, cell, thickness):
+    """A closed box of nx x ny cells (side `cell`) and `thickness`, with the block of cells `hole`
+    = (i0, i1, j0, j1) cut through it: the top and bottom grids, and walls of `rows` rows of quads
+    along the outer and the inner loop, every quad split in two triangles. Every edge of the box
+    is a crease of 90 degrees; the hole's vertical edges are concave (saddle-like corners)."""
+    i0, i1, j0, j1 = hole
+
+    def kept(i, j):
+        return 0 <= i < nx and 0 <= j < ny and not (i0 <= i < i1 and j0 <= j < j1)
+
+    index, points, faces = {}, [], []
+
+    def vertex(i, j, r):  # r = 0: top, rows: bottom, between: the walls' rows
+        key = (i, j, r)
+        if key not in index:
+            index[key] = len(points)
+            points.append((i * cell, j * cell, thickness * (1.0 - r / rows)))
+        return index[key]
+
+    def quad(a, b, c, d):
+        faces.extend([(a, b, c), (a, c, d)])
+
+    for j in range(ny):
+        for i in range(nx):
+            if not kept(i, j):
+                continue
+            quad(vertex(i, j, 0), vertex(i + 1, j, 0), vertex(i + 1, j + 1, 0), vertex(i, j + 1, 0))
+            quad(vertex(i, j + 1, rows), vertex(i + 1, j + 1, rows), vertex(i + 1, j, rows), vertex(i, j, rows))
+            # the cell's edges on the loops, with the cell on their left (seen from the top)
+            for (a, b), out in ((((i, j), (i + 1, j)), (i, j - 1)), (((i + 1, j), (i + 1, j + 1)), (i + 1, j)),
+                                (((i + 1, j + 1), (i, j + 1)), (i, j + 1)), (((i, j + 1), (i, j)), (i - 1, j))):
+                if kept(*out):
+                    continue
+                for r in range(rows):
+                    quad(vertex(b[0], b[1], r), vertex(a[0], a[1], r), vertex(a[0], a[1], r + 1),
+                         vertex(b[0], b[1], r + 1))
+    return points, faces
+
+
 def write_off(path, points, faces, comment):
     with open(path, "w") as f:
         f.write("OFF\n# %s\n%d %d 0\n" % (comment, len(points), len(faces)))
@@ -208,6 +249,10 @@ def main():
     write_off(os.path.join(out, "noisy_pipe.off"), points, faces,
               "open cylinder 40 x 24 (radius 0.5, length 2), staggered rings, interior vertices moved by up to "
               "0.02 (seed 17)")
+    points, faces = creased_slab(24, 16, (9, 15, 6, 10), 3, 1.0 / 16, 3.0 / 16)
+    write_off(os.path.join(out, "creased_slab.off"), points, faces,
+              "box of 24 x 16 cells of side 1/16 and thickness 3/16, the block of cells [9, 15) x [6, 10) cut "
+              "through it; walls of 3 rows")
 
 
 if __name__ == "__main__":

@@ -540,6 +540,114 @@ TEMPLATE_TEST_CASE("Boundary-aligned smoothest fields", "[direction_fields]", SD
     }
 }
 
+// A slab with a square hole (genus 1): its creases (interior edges whose faces' normals differ by
+// more than 30 degrees, read here from the geometry) are straight lines of 90 degrees meeting at
+// the box's corners.
+TEMPLATE_TEST_CASE("Crease-aligned smoothest fields: one direction along every straight crease", "[direction_fields]",
+                   SD_MESH_TYPES)
+{
+  using Edge = typename boost::graph_traits<TestType>::edge_descriptor;
+  TestType mesh;
+  SD::make_slab(mesh, 12, 8, 0.3, [](std::size_t i, std::size_t j) { return i >= 4 && i <= 6 && j >= 3 && j <= 4; });
+  const SDI::Mesh_indices<TestType> idx(mesh);
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  auto point = [&](auto v) {
+    const auto& p = get(vpm, v);
+    return Eigen::Vector3d(p.x(), p.y(), p.z());
+  };
+  auto face_normal = [&](auto h) {
+    const Eigen::Vector3d a = point(source(h, mesh)), b = point(target(h, mesh)),
+                          c = point(target(next(h, mesh), mesh));
+    return Eigen::Vector3d((b - a).cross(c - a).normalized());
+  };
+  std::map<Edge, bool> crease;
+  std::map<Vertex<TestType>, std::vector<Eigen::Vector3d>> along; // per vertex, its creases' directions
+  for(auto e : edges(mesh))
+  {
+    const auto h = halfedge(e, mesh);
+    const bool sharp = !is_border_edge(h, mesh) && face_normal(h).dot(face_normal(opposite(h, mesh))) < std::cos(pi / 6.);
+    crease[e] = sharp;
+    if(sharp)
+    {
+      const Eigen::Vector3d d = (point(target(h, mesh)) - point(source(h, mesh))).normalized();
+      along[source(h, mesh)].push_back(d);
+      along[target(h, mesh)].push_back(-d);
+    }
+  }
+  REQUIRE(along.size() > 50);
+  // the vertices inside a straight crease line: two opposite crease directions
+  std::vector<Vertex<TestType>> straight;
+  for(const auto& [v, d] : along)
+    if(d.size() == 2 && d[0].dot(d[1]) < -1. + 1e-12)
+      straight.push_back(v);
+  REQUIRE(straight.size() > 40);
+  const auto normal = SDI::vertex_normals(idx, vpm);
+  // how far the cross at v is from the crease: min(|x . t|, |x . (n x t)|) (0: one of its four
+  // directions along it)
+  auto misalignment = [&](const Vector_map<TestType>& field) {
+    double worst = 0.;
+    for(auto v : straight)
+    {
+      const Eigen::Vector3d n = normal[idx.index(v)];
+      Eigen::Vector3d t = along.at(v)[0];
+      t = (t - t.dot(n) * n).normalized();
+      const Eigen::Vector3d x = to_eigen(field.at(v)).normalized();
+      worst = (std::max)(worst, (std::min)(std::abs(x.dot(t)), std::abs(x.dot(n.cross(t)))));
+    }
+    return worst;
+  };
+  const auto creases = boost::make_assoc_property_map(crease);
+  Vector_map<TestType> aligned, free_field, none;
+  const auto info = SD::smoothest_direction_field(
+    mesh, boost::make_assoc_property_map(aligned),
+    SD::parameters::symmetry_order(4, CGAL::parameters::edge_is_constrained_map(creases)));
+  check_unit_tangent(mesh, aligned);
+  REQUIRE(info.iterations == 0); // fixed vertices: one linear solve
+  CHECK(misalignment(aligned) < 1e-9);
+  // exactly the vertices inside the crease lines are fixed: the corners (three creases) stay free
+  CHECK(info.feature_vertices == straight.size());
+  CHECK(straight.size() + 16 == along.size()); // the box's 8 corners and the hole's 8
+  // the control: the free smoothest field is not along the creases (the oracle sees it), and a map
+  // without a crease is no map
+  SD::smoothest_direction_field(mesh, boost::make_assoc_property_map(free_field), SD::parameters::symmetry_order(4));
+  CHECK(misalignment(free_field) > 0.05);
+  std::map<Edge, bool> nothing;
+  for(auto e : edges(mesh))
+    nothing[e] = false;
+  const auto info_none = SD::smoothest_direction_field(
+    mesh, boost::make_assoc_property_map(none),
+    SD::parameters::symmetry_order(4, CGAL::parameters::edge_is_constrained_map(boost::make_assoc_property_map(nothing))));
+  CHECK(info_none.feature_vertices == 0);
+  for(auto v : vertices(mesh))
+    CHECK((to_eigen(none.at(v)) - to_eigen(free_field.at(v))).norm() < 1e-12);
+  // a line field (n = 2) follows the creases too; with the normalized flow the fixed vertices stay
+  Vector_map<TestType> line;
+  SD::smoothest_direction_field(mesh, boost::make_assoc_property_map(line),
+                                SD::parameters::symmetry_order(
+                                  2, SD::parameters::unit_length_iterations(
+                                       10, CGAL::parameters::edge_is_constrained_map(creases))));
+  double worst_line = 0.;
+  for(auto v : straight)
+  {
+    const Eigen::Vector3d n = normal[idx.index(v)];
+    Eigen::Vector3d t = along.at(v)[0];
+    t = (t - t.dot(n) * n).normalized();
+    worst_line = (std::max)(worst_line, std::abs(to_eigen(line.at(v)).normalized().cross(t).norm()));
+  }
+  CHECK(worst_line < 1e-9);
+#if defined(CGAL_SURFACE_DESIGN_HAS_CHOLMOD)
+  Vector_map<TestType> other;
+  SD::smoothest_direction_field(mesh, boost::make_assoc_property_map(other),
+                                SD::parameters::symmetry_order(
+                                  4, CGAL::parameters::edge_is_constrained_map(creases).sparse_linear_solver(
+                                       SD::Cholmod_solver_traits())));
+  for(auto v : vertices(mesh))
+    CHECK((to_eigen(other.at(v)) - to_eigen(aligned.at(v))).norm() < 1e-8);
+#else
+  SD_CHOLMOD_UNAVAILABLE("the crease-aligned field of both solvers");
+#endif
+}
+
 // the face centroids of the nonzero indices
 template <class Mesh>
 std::vector<std::pair<Eigen::Vector3d, double>> cones_with_positions(const Mesh& mesh, const Vector_map<Mesh>& field, int n)

@@ -11,6 +11,7 @@
 #include <CGAL/Surface_design/Trivial_connection.h>
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <algorithm>
@@ -43,6 +44,9 @@ const char* usage =
   "                            boundary (tangent) or its inward normal; trivial: then the indices\n"
   "                            sum to the Euler characteristic less the corners the field turns\n"
   "                            with (the message says how much)\n"
+  "  --sharp-angle DEG         smoothest: the field follows the creases, the interior edges whose\n"
+  "                            faces' normals differ by more than DEG degrees (0 < DEG < 180; a\n"
+  "                            corner whose creases no n-direction follows at once stays free)\n"
   "  --solver S                sparse solver: default (simplicial LDLT below 20k\n"
   "                            unknowns, supernodal Cholesky above), ldlt, supernodal, cholmod\n"
   "  --output OUT.ply          mesh with vertex field_x, field_y, field_z and face field_index (k/N)\n"
@@ -57,6 +61,7 @@ struct Options
   std::string boundary = "free";
   int n = 1;
   double curvature_weight = 0.;
+  double sharp_angle = 0.; // 0: none
   std::map<std::size_t, int> singularities;
 };
 
@@ -79,6 +84,12 @@ Options parse(int argc, char** argv)
               })
     .value("--curvature-weight",
            [&](const std::string& v) { o.curvature_weight = program::parse_double(v, "--curvature-weight", 0., 1e12); })
+    .value("--sharp-angle",
+           [&](const std::string& v) {
+             o.sharp_angle = program::parse_double(v, "--sharp-angle", 0., 180.);
+             if(!(o.sharp_angle > 0. && o.sharp_angle < 180.))
+               throw program::Usage_error("--sharp-angle " + v + ": must lie strictly between 0 and 180 degrees");
+           })
     .value("--boundary",
            [&](const std::string& v) { o.boundary = program::parse_choice(v, "--boundary", {"free", "tangent", "normal"}); })
     .solver(o.solver)
@@ -93,6 +104,9 @@ Options parse(int argc, char** argv)
     throw program::Usage_error("--singularity needs --method trivial (smoothest fields place their own)");
   if(o.method == "trivial" && o.curvature_weight != 0.)
     throw program::Usage_error("--curvature-weight applies to --method smoothest");
+  if(o.method == "trivial" && p.given("--sharp-angle"))
+    throw program::Usage_error("--sharp-angle applies to --method smoothest (the trivial connection does not follow "
+                               "creases yet)");
   program::check_paths_and_picture({{"INPUT", o.input}, {"--output", o.output}}, o.picture, p.given("--up"));
   return o;
 }
@@ -207,12 +221,27 @@ int run(const Options& o, const Solver& solver)
     std::cout << "note: --boundary " << o.boundary << " has no effect: the mesh has no boundary\n";
   if(o.method == "smoothest")
   {
+    // the creases (none without --sharp-angle)
+    auto sharp = mesh.add_property_map<Mesh::Edge_index, bool>("e:sharp", false).first;
+    if(o.sharp_angle > 0.)
+    {
+      CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, o.sharp_angle, sharp);
+      std::size_t count = 0;
+      for(auto e : edges(mesh))
+        count += get(sharp, e) && !is_border(e, mesh) ? 1 : 0;
+      std::cout << "creases: " << count << " edges whose faces' normals differ by more than " << o.sharp_angle
+                << " degrees\n";
+    }
     const auto info = SD::smoothest_direction_field(
       mesh, field_map,
       SD::parameters::symmetry_order(
         o.n, SD::parameters::curvature_alignment_weight(
-               o.curvature_weight, SD::parameters::field_boundary_condition(
-                                     boundary_condition(o.boundary), SD::parameters::sparse_linear_solver(solver)))));
+               o.curvature_weight,
+               SD::parameters::field_boundary_condition(
+                 boundary_condition(o.boundary),
+                 CGAL::parameters::edge_is_constrained_map(sharp).sparse_linear_solver(solver)))));
+    if(o.sharp_angle > 0.)
+      std::cout << "the field follows them at " << info.feature_vertices << " vertices\n";
     std::cout << "smoothest field (n = " << o.n << "): " << clock.lap() << " ms";
     if(info.iterations > 0)
     {

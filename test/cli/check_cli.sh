@@ -130,10 +130,21 @@ for args in "--method smoothest --n 0" "--method smoothest --n 2.5" "--method sm
             "--method smoothest --curvature-weight nan" "--method smoothest --curvature-weight 1" \
             "--method smoothest --boundary sideways" "--method trivial --singularity 5:1 --singularity 5:1" \
             "--method trivial --singularity 5:1" "--method smoothest --up +Z" "--method smoothest --solver x" \
-            "--method smoothest --bogus"; do
+            "--method smoothest --bogus" "--method smoothest --sharp-angle 0" "--method smoothest --sharp-angle 180" \
+            "--method smoothest --sharp-angle nan" "--method smoothest --sharp-angle -5" \
+            "--method trivial --sharp-angle 30"; do
   # shellcheck disable=SC2086
   refuse direction_field "$B1K" $args --output "$O/f.ply"
 done
+# a field along the creases of a box with a hole: the 200 vertices inside its crease lines fixed,
+# its 16 corners free; 16 cones: -1/4 next to the hole's 8 saddle-like corners, +1/4 next to the
+# box's 8 convex corners
+accept direction_field "$DATA/creased_slab.off" --method smoothest --n 4 --sharp-angle 30 --output "$O/creases.ply"
+if ! grep -q "^creases: 224 edges" "$WORK/stdout" || ! grep -q "^the field follows them at 200 vertices" "$WORK/stdout" ||
+   ! grep -q "^singularities (16):" "$WORK/stdout"; then
+  echo "FAILED: direction_field creased_slab.off --sharp-angle 30: $(cat "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
 refuse direction_field "$B1K" --method smoothest
 refuse direction_field "$B1K" --method trivial --singularity 5:1 --singularity 400:1 --output "$WORK/input.off"
 accept direction_field "$B1K" --method trivial --singularity 5:1 --singularity 400:1 --output "$O/ok.ply"

@@ -66,6 +66,8 @@ struct Smoothest_direction_field_result
   /// True if the cotangent connection Laplacian was indefinite (possible for n = 4 on meshes with
   /// obtuse triangles) and the field was computed with its negative edge weights set to 0.
   bool weights_clamped = false;
+  /// Vertices whose direction the feature edges (`edge_is_constrained_map`) fixed.
+  std::size_t feature_vertices = 0;
 };
 
 
@@ -147,6 +149,22 @@ struct Smoothest_direction_field_result
 ///     \cgalParamType{`Direction_field_boundary`}
 ///     \cgalParamDefault{`Direction_field_boundary::free`}
 ///     \cgalParamExtra{throws `Invalid_parameter` if it is not an enumerator of `Direction_field_boundary`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_is_constrained_map}
+///     \cgalParamDescription{the feature edges (creases, e.g. from
+///                           `CGAL::Polygon_mesh_processing::detect_sharp_edges()`): at a vertex inside a line of
+///                           interior feature edges (two of them) or at its end (one), one direction of the field
+///                           lies along them: u is fixed there to the normalized mean of exp(i n theta) over the
+///                           edges' rescaled angles theta, as at a boundary with `tangent`, where the two agree
+///                           (|mean| at least half their count: for n = 4 a line that turns by at most 30
+///                           degrees there). Corners (three feature edges or more) and sharper turns stay free:
+///                           the field's singularities may sit there (a -1/4 cone next to a saddle-like corner).
+///                           Boundary edges are left to `field_boundary_condition`. A component with such
+///                           vertices is solved as with a boundary condition (one linear solve, then
+///                           `unit_length_iterations`)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with
+///                    `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and `bool` as value type}
+///     \cgalParamDefault{none: no feature edge}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{curvature_alignment_weight}
 ///     \cgalParamDescription{the weight t of the alignment with the principal curvature directions; 0: no
@@ -363,6 +381,32 @@ Smoothest_direction_field_result smoothest_direction_field(const TriangleMesh& t
         fixed_value[Eigen::Index(2 * v + 1)] = std::sin(n * direction);
       }
   }
+  // feature edges: one direction along them at their vertices (see `edge_is_constrained_map`)
+  std::size_t feature_vertices = 0;
+  internal::if_given(np, CGAL::internal_np::edge_is_constrained, [&](const auto& ecm) {
+    std::vector<std::complex<double>> sum(nv, 0.);
+    std::vector<int> count(nv, 0);
+    for(std::size_t h = 0; h < idx.number_of_halfedges(); ++h)
+    {
+      const auto hd = idx.halfedge(h);
+      if(idx.is_border(hd) || idx.is_border(opposite(hd, tm)) || !get(ecm, edge(hd, tm)))
+        continue;
+      const std::size_t v = idx.source_index(hd);
+      sum[v] += std::polar(1., n * conn.frames.angle[h]);
+      ++count[v];
+    }
+    for(std::size_t v = 0; v < nv; ++v)
+      if((count[v] == 1 || count[v] == 2) && !fixed[v] && std::abs(sum[v]) >= 0.5 * count[v])
+      {
+        fixed[v] = true;
+        eigen_component[comps.vertex_component[v]] = false;
+        const std::complex<double> u = sum[v] / std::abs(sum[v]);
+        fixed_value[Eigen::Index(2 * v)] = u.real();
+        fixed_value[Eigen::Index(2 * v + 1)] = u.imag();
+        ++feature_vertices;
+      }
+  });
+  const bool any_fixed = std::find(fixed.begin(), fixed.end(), true) != fixed.end();
   const bool any_eigen = std::find(eigen_component.begin(), eigen_component.end(), true) != eigen_component.end();
 
   // The system matrix: A + s M with s = eps (eigenproblem) or t * V / area (alignment);
@@ -408,7 +452,7 @@ Smoothest_direction_field_result smoothest_direction_field(const TriangleMesh& t
       for(std::size_t v = 0; v < nv; ++v)
         as_complex(rhs_fixed)[Eigen::Index(v)] = shift[v] * q[v] / rms;
     }
-    if(boundary != Direction_field_boundary::free)
+    if(any_fixed)
     {
       const Eigen::VectorXcd coupling = a * as_complex(fixed_value);
       for(std::size_t v = 0; v < nv; ++v)
@@ -440,11 +484,12 @@ Smoothest_direction_field_result smoothest_direction_field(const TriangleMesh& t
 
   Smoothest_direction_field_result info;
   info.weights_clamped = weights_clamped;
+  info.feature_vertices = feature_vertices;
   info.eigenvalues.assign(nc, std::numeric_limits<double>::quiet_NaN());
   Eigen::VectorXd x = Eigen::VectorXd::Zero(Eigen::Index(2 * nv));
   if(!std::all_of(eigen_component.begin(), eigen_component.end(), [](bool b) { return b; }))
     system.solve(rhs_fixed, x); // boundary conditions and alignment: one linear solve
-  if(flow_steps > 0 && alignment == 0. && boundary != Direction_field_boundary::free)
+  if(flow_steps > 0 && alignment == 0. && any_fixed)
     internal::unit_length_flow<Solver>(a_energy, mass, fixed, comps, flow_steps, np, x);
   if(any_eigen)
   {
