@@ -486,15 +486,20 @@ def read_quad_off(text):
     return points, faces
 
 
-def quad_mesh_reading(points, faces):
-    """An independent reading of a closed quad mesh: (only quads, every edge in two faces once each
-    way, Euler characteristic, valence per vertex)."""
+def directed_edges(faces):
+    """(how many faces run along each directed edge, whether every face is a quad)."""
     directed = {}
     for face in faces:
         for i in range(len(face)):
             key = (face[i], face[(i + 1) % len(face)])
             directed[key] = directed.get(key, 0) + 1
-    quads = all(len(face) == 4 for face in faces)
+    return directed, all(len(face) == 4 for face in faces)
+
+
+def quad_mesh_reading(points, faces):
+    """An independent reading of a closed quad mesh: (only quads, every edge in two faces once each
+    way, Euler characteristic, valence per vertex)."""
+    directed, quads = directed_edges(faces)
     two_sided = all(n == 1 and directed.get((b, a)) == 1 for (a, b), n in directed.items())
     edges = len(directed) // 2
     valence = [0] * len(points)
@@ -645,12 +650,7 @@ def quad_mesh_with_boundary_reading(points, faces):
     """An independent reading of a quad mesh with a boundary: (only quads, every directed edge once
     and every edge in at most two faces, Euler characteristic, number of boundary loops, valence
     per vertex, whether each vertex is on the boundary)."""
-    directed = {}
-    for face in faces:
-        for i in range(len(face)):
-            key = (face[i], face[(i + 1) % len(face)])
-            directed[key] = directed.get(key, 0) + 1
-    quads = all(len(face) == 4 for face in faces)
+    directed, quads = directed_edges(faces)
     manifold = all(n == 1 for n in directed.values())
     undirected = {tuple(sorted(k)) for k in directed}
     border = {(a, b) for (a, b) in directed if (b, a) not in directed}  # the face is on the left
