@@ -370,7 +370,10 @@ async function send({ request, t0, label }) {
     }
     const buffer = await response.arrayBuffer();
     if (request.op !== 'state' && request.op !== 'load') ++acceptedEdits;
-    if (request.op === 'load') await loadMesh();
+    if (request.op === 'load') {
+      acceptedEdits = 0; // a new session on the server: its version starts again
+      await loadMesh();
+    }
     applyState(buffer);
     showError('');
     render();
@@ -611,6 +614,29 @@ async function selftest() {
   const checks = [];
   const check = (name, ok, detail = '') => checks.push({ name, ok: !!ok, detail: String(detail) });
   await settle();
+
+  // first a mesh with a boundary (a plate with two holes): the quads follow its three loops when
+  // the cross field follows them too; then the first mesh again, for the rest
+  const first = ui.mesh.value;
+  await edit({ op: 'load', name: 'holed_plate.off' });
+  await settle();
+  ui.field.value = 'trivial@4+smoothest+tangent';
+  await setField();
+  await edit({ op: 'frequency', stripes: 16 });
+  ui.quads.click();
+  await settle();
+  check('a mesh with a boundary: the cross field along it, the quads following its 3 loops, drawn',
+    state.field.boundary === 'tangent' && state.quads.on && state.quads.valid && state.quads.boundary_loops === 3 &&
+    quadLines !== null, JSON.stringify(state.quads));
+  check('the panel reports the loops', ui.quadStatus.textContent.includes('3 boundary loops followed'), ui.quadStatus.textContent);
+  check('the field menu shows the field along the boundary', ui.field.value === 'trivial@4+smoothest+tangent', ui.field.value);
+  await saveFrame('editor_quads_boundary');
+  ui.quads.click();
+  await settle();
+  await edit({ op: 'load', name: first });
+  await settle();
+  check('back to the first mesh, a new session', ui.mesh.value === first && state.version === 0 && !state.quads.on,
+    `${ui.mesh.value} version ${state.version}`);
   const initial = pictureHash();
   check('the mesh is drawn', initial.lit > 0.05 * initial.pixels, `${initial.lit} of ${initial.pixels} pixels`);
   await saveFrame('editor_initial');
