@@ -769,7 +769,7 @@ private:
     else
     {
       // the stripes of every field on this mesh (and their stiffened systems) have one pattern:
-      // ordered and analysed once (measured: 45 analyses in the benchmark's quad drag on bunny_8k)
+      // ordered and analysed once (measured: 45 analyses in one run of the benchmark's editor workload on bunny_8k)
       auto bsp = std::make_unique<Branched>(
         *m_mesh, SD::parameters::symmetry_order(order).sparse_linear_solver(program::solver_sharing_analysis(m_stripe_solver)));
       try
