@@ -41,7 +41,6 @@
 #include <map>
 #include <memory>
 #include <optional>
-#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -860,17 +859,8 @@ private:
                          {"cones", r.cones},
                          {"edge_length", r.edge_length},
                          {"stiffening_rounds", r.stiffening_rounds},
+                         {"boundary_loops", r.boundary_loops},
                          {"rounds", m_quad_rounds}};
-      std::size_t loops = 0; // the boundary loops of the quads: the input's, followed
-      std::set<Mesh::Halfedge_index> seen;
-      for(auto h : halfedges(m_quad_mesh))
-        if(is_border(h, m_quad_mesh) && seen.insert(h).second)
-        {
-          ++loops;
-          for(auto g : halfedges_around_face(h, m_quad_mesh))
-            seen.insert(g);
-        }
-      m_quad_info["boundary_loops"] = loops;
       for(auto e : edges(m_quad_mesh))
         for(auto v : {source(halfedge(e, m_quad_mesh), m_quad_mesh), target(halfedge(e, m_quad_mesh), m_quad_mesh)})
           for(int i = 0; i < 3; ++i)

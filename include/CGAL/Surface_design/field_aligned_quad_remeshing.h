@@ -39,6 +39,7 @@ struct Field_aligned_quad_remeshing_result
   std::size_t initially_folded = 0;    ///< faces where the first map folded
   std::size_t folded_faces = 0;        ///< faces where the last map folds (its lines may still be a quad mesh)
   long euler_characteristic = 0;       ///< V - E + F of the result: that of the input
+  std::size_t boundary_loops = 0;      ///< of the result: the input's, each a line of the quads
   double edge_length = 0.;             ///< the spacing h of the lines
   double stripes_seconds = 0., extraction_seconds = 0.;
 };
@@ -257,6 +258,7 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
   result.vertices = q.points.size();
   result.faces = q.faces.size();
   result.euler_characteristic = chi;
+  result.boundary_loops = boundary_loops;
   result.irregular_vertices = cones.size();
   using Out_vpm = internal::Vertex_point_map_t<PolygonMesh, CGAL::parameters::Default_named_parameters>;
   using Out_point = typename boost::property_traits<Out_vpm>::value_type;
