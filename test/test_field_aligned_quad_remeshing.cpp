@@ -551,6 +551,101 @@ TEMPLATE_TEST_CASE("Field-aligned quads from a kept parameterizer: the remesher'
   CHECK(num_faces(moved) == before);
 }
 
+TEMPLATE_TEST_CASE("Stiffening kept across a new field: the new field's map with the old stiffening, the same as "
+                   "stiffened anew, and capped at 4^10", "[field_aligned_quads]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
+  using BSP = SD::Branched_stripe_parameterizer<Mesh>;
+  const Mesh mesh = make_case<Mesh>("torus");
+  const double h = std::sqrt(surface_area(mesh) / 800.);
+  SD::Trivial_connection<Mesh> tc(mesh, SD::parameters::symmetry_order(4));
+  const auto& idx = tc.indices();
+  auto torus_face = [&](int major, int minor) { return idx.face(std::size_t(2 * (12 * major + minor))); };
+  std::map<face_descriptor, int> cones{
+    {torus_face(0, 0), 1}, {torus_face(18, 0), 1}, {torus_face(9, 6), -1}, {torus_face(27, 6), -1}};
+  for(const auto& [f, k] : cones)
+    tc.set_index(f, k);
+  tc.solve();
+  Field<Mesh> before{&mesh, {}}, after{&mesh, {}};
+  tc.field(before.map());
+  tc.set_index(torus_face(0, 0), 0); // a cone dragged by a face, as in the editor
+  tc.set_index(torus_face(1, 0), 1);
+  tc.solve();
+  tc.field(after.map());
+  const std::vector<face_descriptor> some(faces(mesh).begin(), std::next(faces(mesh).begin(), 150));
+  auto make = [&](const Field<Mesh>& field) {
+    auto bsp = std::make_unique<BSP>(mesh, SD::parameters::symmetry_order(4));
+    bsp->set_field(field.map(), 1. / h);
+    bsp->set_lattice_branch_points(true);
+    return bsp;
+  };
+  auto corners = [&](const BSP& bsp) {
+    std::vector<double> c;
+    for(auto f : faces(mesh))
+      for(int a = 0; a < 2; ++a)
+        for(double x : bsp.corner_values(f, a))
+          c.push_back(x);
+    return c;
+  };
+  auto same_map = [&](const BSP& a, const BSP& b) {
+    CHECK(std::abs(a.energy() - b.energy()) <= 1e-9 * b.energy());
+    const std::vector<double> ca = corners(a), cb = corners(b);
+    double worst = 0.;
+    for(std::size_t i = 0; i < ca.size(); ++i)
+      worst = (std::max)(worst, std::abs(ca[i] - cb[i]));
+    CHECK(worst < 1e-8);
+  };
+  // the stiffened map of the new field, from scratch
+  auto fresh = make(after);
+  fresh->stiffen(some, 16., 2.);
+  fresh->solve();
+  auto plain = make(after);
+  plain->solve();
+  CHECK(std::abs(fresh->energy() - plain->energy()) > 1e-3 * plain->energy()); // the stiffening matters here
+  // kept: stiffened with the old field, then the new one; the same map as stiffened anew
+  auto kept = make(before);
+  kept->stiffen(some, 16., 2.);
+  kept->keep_stiffening(true);
+  kept->set_field(after.map(), 1. / h);
+  kept->solve();
+  same_map(*kept, *fresh);
+  // the editor's drag: the quads of the old field, then of the new one from their stiffening
+  {
+    auto drag = make(before);
+    Quad_mesh first, second; // (the quads are added to the mesh given)
+    CHECK_NOTHROW(SD::extract_field_aligned_quads(*drag, first));
+    CHECK(quad_mesh_problem(mesh, cones, first) == "");
+    drag->keep_stiffening(true);
+    drag->set_field(after.map(), 1. / h);
+    CHECK_NOTHROW(SD::extract_field_aligned_quads(*drag, second));
+    cones.erase(torus_face(0, 0));
+    cones[torus_face(1, 0)] = 1;
+    CHECK(quad_mesh_problem(mesh, cones, second) == "");
+  }
+  // not kept (the default, and after keep_stiffening(false)): the new field's map without it
+  auto dropped = make(before);
+  dropped->stiffen(some, 16., 2.);
+  dropped->set_field(after.map(), 1. / h);
+  dropped->solve();
+  same_map(*dropped, *plain);
+  kept->keep_stiffening(false);
+  kept->set_field(after.map(), 1. / h);
+  kept->solve();
+  same_map(*kept, *plain);
+  // a face's stiffening stops at 4^10: twelve rounds of 4 and one of 10^12 are 4^10 once, and
+  // the factorization holds
+  auto rounds = make(after), huge = make(after), cap = make(after);
+  for(int i = 0; i < 12; ++i)
+    rounds->stiffen(some, 4.);
+  huge->stiffen(some, 1e12);
+  cap->stiffen(some, 1048576.);
+  for(BSP* b : {rounds.get(), huge.get(), cap.get()})
+    b->solve();
+  same_map(*rounds, *cap);
+  same_map(*huge, *cap);
+}
+
 TEST_CASE("Field-aligned quads on a torus without cones: a regular grid", "[field_aligned_quads]")
 {
   using Mesh = test::Surface_mesh;

@@ -83,7 +83,7 @@ struct Field_aligned_quads_round
 /// back-substitution), the third chooses them again (`solve()`). The rounds stop early, and the
 /// call fails, where the stiffening makes things worse: a map folding in more than 4 f + 32
 /// faces when the first one folded in f. The stiffening stays in `bsp`
-/// until its next `set_field()`.
+/// until its next `set_field()` (or after it: `keep_stiffening()`).
 ///
 /// \param bsp the stripes of a cross field, as above (stiffened and solved again where it folds)
 /// \param out a model of `MutableFaceGraph` receiving the quads
