@@ -662,7 +662,8 @@ private:
     else // trivial
     {
       // its singularities: spread by farthest-point sampling (default), or the smoothest field's
-      // (for a cross field moved at least the quads' size h apart and out of wide faces, as quad_remesh does)
+      // (for a cross field moved at least the quads' size h apart); a cross field's out of wide
+      // faces, as quad_remesh does
       const std::string cones = request.contains("cones") ? text_arg(request, "cones") : "spread";
       if(cones != "spread" && cones != "smoothest")
         throw Request_error("\"cones\" = '" + cones + "': choose \"spread\" or \"smoothest\"");
@@ -690,9 +691,10 @@ private:
         connection->set_index(f, k);
       field.resize(num_vertices(*m_mesh));
       wrap_library([&] {
-        if(cones == "smoothest" && order == 4)
+        if(order == 4)
         {
-          connection->separate_singularities(m_diagonal / m_stripes);
+          if(cones == "smoothest")
+            connection->separate_singularities(m_diagonal / m_stripes);
           connection->move_singularities_from_wide_faces(); // a -1/4 cone there folds the quads' map
           field_singularities.clear();
           for(auto f : faces(*m_mesh))
@@ -941,15 +943,25 @@ private:
       tc.field(CGAL::make_property_map(field));
     }, what, restore);
     m_timing["field_ms"] = ms_since(start);
+    // a cone moved, added or removed: the new map mostly folds where the last one did, so the
+    // quad preview starts from the stiffening of its last quads (dropped after a failure, where
+    // it would only pile up)
+    const bool keep = m_quads && m_quad_info.value("valid", false);
+    if(m_order > 1)
+      m_bsp->keep_stiffening(keep);
     try
     {
       install_field(std::move(field), m_order, what);
     }
     catch(...)
     {
+      if(m_order > 1)
+        m_bsp->keep_stiffening(false);
       restore();
       throw;
     }
+    if(m_order > 1)
+      m_bsp->keep_stiffening(false);
     for(const auto& [f, k] : changes)
       k == 0 ? void(m_field_singularities.erase(f)) : void(m_field_singularities[f] = k);
   }
