@@ -134,7 +134,8 @@ void editor_workload(const Mesh& mesh, const std::string&, Run& run)
   const double diagonal = session->mesh_json()["diagonal"].get<double>(); // the session's own
   const double stripes = (std::min)(double(state["max_stripes"]),
                                     diagonal * std::sqrt(2000. / CGAL::Polygon_mesh_processing::area(mesh)));
-  bytes = request(R"({"op":"frequency","stripes":)" + std::to_string(stripes) + "}");
+  // (a number, not its decimal text: std::to_string may round the largest count up, past the limit)
+  bytes = session->edit(Json{{"op", "frequency"}, {"stripes", stripes}});
   run.phase("quads on", [&] { bytes = request(R"({"op":"quads","on":true})"); });
   state = state_of(bytes); // (a range-for over a temporary's member would dangle)
   std::set<std::size_t> cones;
