@@ -488,25 +488,38 @@ TEMPLATE_TEST_CASE("Field-aligned quads with prescribed cones: valence 3 at +1/4
   }
 }
 
+// The torus of make_case() with the four cones of a trivial cross field, for about 800 quads:
+// faces (major i, minor j) -> 2 (12 i + j), two +1/4 outside, two -1/4 inside
+template <class Mesh>
+struct Torus_with_cones
+{
+  using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
+  const Mesh mesh = make_case<Mesh>("torus");
+  const double h = std::sqrt(surface_area(mesh) / 800.);
+  SD::Trivial_connection<Mesh> tc{mesh, SD::parameters::symmetry_order(4)};
+  face_descriptor face(int major, int minor) const { return tc.indices().face(std::size_t(2 * (12 * major + minor))); }
+  const std::map<face_descriptor, int> cones{{face(0, 0), 1}, {face(18, 0), 1}, {face(9, 6), -1}, {face(27, 6), -1}};
+
+  Torus_with_cones()
+  {
+    for(const auto& [f, k] : cones)
+      tc.set_index(f, k);
+    tc.solve();
+  }
+  Torus_with_cones(const Torus_with_cones&) = delete; // tc refers to mesh
+};
+
 TEMPLATE_TEST_CASE("Field-aligned quads from a kept parameterizer: the remesher's mesh, then the quads of a moved "
                    "cone, and what is not a cross field's lattice map is refused", "[field_aligned_quads]",
                    SD_MESH_TYPES)
 {
   using Mesh = TestType;
-  using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
-  const Mesh mesh = make_case<Mesh>("torus");
-  const double h = std::sqrt(surface_area(mesh) / 800.);
-  SD::Trivial_connection<Mesh> tc(mesh, SD::parameters::symmetry_order(4));
-  const auto& idx = tc.indices();
-  // faces (major i, minor j) -> 2 (12 i + j): two +1/4 outside, two -1/4 inside
-  auto torus_face = [&](int major, int minor) { return idx.face(std::size_t(2 * (12 * major + minor))); };
-  std::map<face_descriptor, int> cones{
-    {torus_face(0, 0), 1}, {torus_face(18, 0), 1}, {torus_face(9, 6), -1}, {torus_face(27, 6), -1}};
-  for(const auto& [f, k] : cones)
-    tc.set_index(f, k);
-  tc.solve();
+  Torus_with_cones<Mesh> torus;
+  const Mesh& mesh = torus.mesh;
+  const double h = torus.h;
+  auto cones = torus.cones;
   Field<Mesh> field{&mesh, {}};
-  tc.field(field.map());
+  torus.tc.field(field.map());
   Quad_mesh reference;
   const auto r0 = SD::field_aligned_quad_remeshing(mesh, field.map(), reference, SD::parameters::target_edge_length(h));
 
@@ -522,12 +535,12 @@ TEMPLATE_TEST_CASE("Field-aligned quads from a kept parameterizer: the remesher'
 
   // an edit: one +1/4 cone moves a quarter of the way around the torus; the same parameterizer
   // gives the quads of the new field, the cone's valence-3 vertex where it now is
-  tc.set_index(torus_face(0, 0), 0);
-  tc.set_index(torus_face(9, 0), 1);
-  tc.solve();
-  tc.field(field.map());
-  cones.erase(torus_face(0, 0));
-  cones[torus_face(9, 0)] = 1;
+  torus.tc.set_index(torus.face(0, 0), 0);
+  torus.tc.set_index(torus.face(9, 0), 1);
+  torus.tc.solve();
+  torus.tc.field(field.map());
+  cones.erase(torus.face(0, 0));
+  cones[torus.face(9, 0)] = 1;
   bsp.set_field(field.map(), 1. / h);
   Quad_mesh moved;
   const auto r1 = SD::extract_field_aligned_quads(bsp, moved);
@@ -537,7 +550,7 @@ TEMPLATE_TEST_CASE("Field-aligned quads from a kept parameterizer: the remesher'
   // refused, with nothing written: a stripe singularity (a T-junction), branch points off the
   // lattice, a line field's stripes, rounds out of range
   const std::size_t before = num_faces(moved);
-  const auto regular = torus_face(20, 3), other = torus_face(30, 9);
+  const auto regular = torus.face(20, 3), other = torus.face(30, 9);
   bsp.set_index(regular, 1);
   bsp.set_index(other, -1);
   CHECK_THROWS_AS(SD::extract_field_aligned_quads(bsp, moved), SD::Invalid_constraints);
@@ -557,22 +570,16 @@ TEMPLATE_TEST_CASE("Stiffening kept across a new field: the new field's map with
   using Mesh = TestType;
   using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
   using BSP = SD::Branched_stripe_parameterizer<Mesh>;
-  const Mesh mesh = make_case<Mesh>("torus");
-  const double h = std::sqrt(surface_area(mesh) / 800.);
-  SD::Trivial_connection<Mesh> tc(mesh, SD::parameters::symmetry_order(4));
-  const auto& idx = tc.indices();
-  auto torus_face = [&](int major, int minor) { return idx.face(std::size_t(2 * (12 * major + minor))); };
-  std::map<face_descriptor, int> cones{
-    {torus_face(0, 0), 1}, {torus_face(18, 0), 1}, {torus_face(9, 6), -1}, {torus_face(27, 6), -1}};
-  for(const auto& [f, k] : cones)
-    tc.set_index(f, k);
-  tc.solve();
+  Torus_with_cones<Mesh> torus;
+  const Mesh& mesh = torus.mesh;
+  const double h = torus.h;
+  auto cones = torus.cones;
   Field<Mesh> before{&mesh, {}}, after{&mesh, {}};
-  tc.field(before.map());
-  tc.set_index(torus_face(0, 0), 0); // a cone dragged by a face, as in the editor
-  tc.set_index(torus_face(1, 0), 1);
-  tc.solve();
-  tc.field(after.map());
+  torus.tc.field(before.map());
+  torus.tc.set_index(torus.face(0, 0), 0); // a cone dragged by a face, as in the editor
+  torus.tc.set_index(torus.face(1, 0), 1);
+  torus.tc.solve();
+  torus.tc.field(after.map());
   const std::vector<face_descriptor> some(faces(mesh).begin(), std::next(faces(mesh).begin(), 150));
   auto make = [&](const Field<Mesh>& field) {
     auto bsp = std::make_unique<BSP>(mesh, SD::parameters::symmetry_order(4));
@@ -619,8 +626,8 @@ TEMPLATE_TEST_CASE("Stiffening kept across a new field: the new field's map with
     drag->keep_stiffening(true);
     drag->set_field(after.map(), 1. / h);
     CHECK_NOTHROW(SD::extract_field_aligned_quads(*drag, second));
-    cones.erase(torus_face(0, 0));
-    cones[torus_face(1, 0)] = 1;
+    cones.erase(torus.face(0, 0));
+    cones[torus.face(1, 0)] = 1;
     CHECK(quad_mesh_problem(mesh, cones, second) == "");
   }
   // not kept (the default, and after keep_stiffening(false)): the new field's map without it
