@@ -718,7 +718,6 @@ def quad_preview_with_boundary(server):
     # there); a pair inside is accepted and the preview follows (or says why not)
     mesh = server.json("api/mesh")
     T, nf = mesh["triangles"], mesh["faces"]
-    border = state.get("boundary_faces") or []
     count = {}
     for f in range(nf):
         for i in range(3):

@@ -945,23 +945,23 @@ private:
     m_timing["field_ms"] = ms_since(start);
     // a cone moved, added or removed: the new map mostly folds where the last one did, so the
     // quad preview starts from the stiffening of its last quads (dropped after a failure, where
-    // it would only pile up)
-    const bool keep = m_quads && m_quad_info.value("valid", false);
-    if(m_order > 1)
-      m_bsp->keep_stiffening(keep);
+    // it would only pile up), for this edit only
+    struct Kept_for_this_edit
+    {
+      Branched* bsp;
+      ~Kept_for_this_edit() { if(bsp) bsp->keep_stiffening(false); }
+    } kept{m_order > 1 ? m_bsp.get() : nullptr};
+    if(kept.bsp)
+      kept.bsp->keep_stiffening(m_quads && m_quad_info.value("valid", false));
     try
     {
       install_field(std::move(field), m_order, what);
     }
     catch(...)
     {
-      if(m_order > 1)
-        m_bsp->keep_stiffening(false);
       restore();
       throw;
     }
-    if(m_order > 1)
-      m_bsp->keep_stiffening(false);
     for(const auto& [f, k] : changes)
       k == 0 ? void(m_field_singularities.erase(f)) : void(m_field_singularities[f] = k);
   }
