@@ -556,7 +556,7 @@ public:
   }
   /// Whether `set_field()` keeps the stiffening of `stiffen()` (default: no). An editor moving a
   /// cone face by face keeps it: the new field's map mostly folds where the last one's did, and
-  /// starts stiffened there (measured: 5 rounds instead of 28 over 10 steps on bunny_8k).
+  /// starts stiffened there (measured: 5 to 8 rounds instead of 28 over 10 steps on bunny_8k).
   void keep_stiffening(bool on) { m_keep_stiffening = on; }
   /// The sparse factorizations done so far: one per `set_field()`, one per relaxation of
   /// `place_automatic_singularities()`. Edits of the singularities and the frequency add none.
