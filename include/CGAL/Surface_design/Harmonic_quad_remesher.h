@@ -557,7 +557,7 @@ public:
     {
       const auto snap_start = Clock::now();
       const double spacing = report.spacing;
-      const hq::Snap_statistics snap = hq::snap_to_far_vertices(soup, m_mesh, spacing / 4., 2. * spacing, true);
+      const internal::Snap_statistics snap = hq::snap_to_far_vertices(soup, m_mesh, spacing / 4., 2. * spacing, true);
       report.far_input_vertices = snap.far_vertices;
       report.snapped_vertices = snap.snapped;
       report.largest_input_distance = snap.largest_distance;
