@@ -15,6 +15,7 @@
 #include <CGAL/Surface_design/quad_mesh_quality.h>
 
 #include <CGAL/Polygon_mesh_processing/remesh.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
@@ -71,6 +72,10 @@ const char* usage =
   "  --stiffening-rounds R rounds of local stiffening where the map folds (default 10, R in [0, 64])\n"
   "  --no-input-remeshing  fail where the input's own triangles do not give the quads (given cones\n"
   "                        go, on the remeshed input, to the faces nearest theirs)\n"
+  "  --sharp-angle DEG     the quads follow the creases, the edges whose faces' normals differ by more\n"
+  "                        than DEG degrees (0 < DEG < 180): the field follows them (its own cones,\n"
+  "                        not separated), and the row of vertices next to each crease moves onto it\n"
+  "                        (not with --singularity or --cone-distance; a remeshed input keeps them)\n"
   "options of --method harmonic:\n"
   "  --min V               vertex V is a minimum of the function (value 0); repeatable\n"
   "  --max V               vertex V is a maximum (value 1); repeatable. Without --min/--max:\n"
@@ -88,10 +93,11 @@ const char* usage =
   "  --quad-dominant       keep the net as it is: pentagons where lines end (T-junctions), triangles\n"
   "                        (default: quads only; odd faces are paired by paths across the net whose\n"
   "                        edges get a vertex, and every face is split into quads)\n"
-  "  --no-feature-snapping keep the net's positions (default: interior input vertices and points\n"
-  "                        along its creases farther than h / 4 from the result, a pit, a spike or a\n"
-  "                        crease narrower than h, pull the nearest vertex onto them)\n"
   "common options:\n"
+  "  --no-feature-snapping keep the positions of the net or of the lines' crossings (default:\n"
+  "                        interior input vertices and points along its creases farther than h / 4\n"
+  "                        from the result, a pit, a spike or a crease narrower than h, pull the\n"
+  "                        nearest vertex onto them; the creases: --sharp-angle's, else 30 degrees)\n"
   "  --solver S            sparse solver: default (simplicial LDLT below 20k\n"
   "                        unknowns, supernodal Cholesky above), ldlt, supernodal, cholmod\n"
   "  --output OUT          the quad mesh (.off, .obj or .ply); required\n"
@@ -103,7 +109,7 @@ struct Options
   std::string input, output, picture, up = "+Y", solver = "default", method = "harmonic", field = "auto";
   std::vector<long> minima, maxima;
   std::map<long, int> cones; // --singularity FACE:K/4
-  double edge_length = 0., target_faces = 0., curvature_adaptation = 0., cone_distance = 1.;
+  double edge_length = 0., target_faces = 0., curvature_adaptation = 0., cone_distance = 1., sharp_angle = 0.;
   int stiffening_rounds = 10;
   bool protrusions = true, intrinsic_delaunay = false, quad_poles = true, spectacles = true,
        all_quads = true, feature_snapping = true, input_remeshing = true;
@@ -137,6 +143,7 @@ Options parse(int argc, char** argv)
                 if(!o.cones.emplace(f, int(k)).second)
                   throw program::Usage_error("--singularity: face " + std::to_string(f) + " is given more than once");
               })
+    .value("--sharp-angle", [&](const std::string& v) { o.sharp_angle = program::parse_double(v, "--sharp-angle", 0., 180.); })
     .value("--stiffening-rounds",
            [&](const std::string& v) { o.stiffening_rounds = int(program::parse_integer(v, "--stiffening-rounds", 0, 64)); })
     .flag("--no-input-remeshing", [&] { o.input_remeshing = false; })
@@ -159,15 +166,24 @@ Options parse(int argc, char** argv)
     throw program::Usage_error("--output OUT.off is required");
   if(p.given("--edge-length") && p.given("--target-faces"))
     throw program::Usage_error("give --edge-length or --target-faces, not both");
-  for(const char* option : {"--field", "--cone-distance", "--singularity", "--stiffening-rounds", "--no-input-remeshing"})
+  for(const char* option :
+      {"--field", "--cone-distance", "--singularity", "--stiffening-rounds", "--no-input-remeshing", "--sharp-angle"})
     if(p.given(option) && o.method != "field")
       throw program::Usage_error(std::string(option) + " applies to --method field");
   for(const char* option : {"--min", "--max", "--no-protrusions", "--curvature-adaptation", "--intrinsic-delaunay",
-                            "--triangle-poles", "--no-spectacles", "--quad-dominant", "--no-feature-snapping"})
+                            "--triangle-poles", "--no-spectacles", "--quad-dominant"})
     if(p.given(option) && o.method != "harmonic")
       throw program::Usage_error(std::string(option) + " applies to --method harmonic");
   if(!o.cones.empty() && (p.given("--field") || p.given("--cone-distance")))
     throw program::Usage_error("--singularity sets the cones of the field: not with --field or --cone-distance");
+  if(p.given("--sharp-angle"))
+  {
+    if(!(o.sharp_angle > 0. && o.sharp_angle < 180.))
+      throw program::Usage_error("--sharp-angle: must lie strictly between 0 and 180 degrees");
+    if(!o.cones.empty() || p.given("--cone-distance"))
+      throw program::Usage_error("--sharp-angle: the field follows the creases with the cones it chooses itself: not "
+                                 "with --singularity or --cone-distance (the trivial connection does not follow creases)");
+  }
   if(o.minima.empty() != o.maxima.empty())
     throw program::Usage_error("give both --min and --max vertices (constraints on one value only leave the "
                                "function constant), or neither for the default constraints");
@@ -320,14 +336,23 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
   // a cross field (curvature-aligned or not) and its cones (`out_cones`: the count returned); on
   // a mesh with a boundary, along it (then a line of the quads), its cones kept apart by the flow
   const bool closed = CGAL::is_closed(mesh);
-  auto compute = [&mesh, closed](bool aligned, auto out, auto out_cones, auto solver) {
+  auto sharp = mesh.add_property_map<Mesh::Edge_index, bool>("e:sharp", false).first;
+  if(o.sharp_angle > 0.)
+  {
+    CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, o.sharp_angle, sharp);
+    std::size_t count = 0;
+    for(auto e : edges(mesh))
+      count += get(sharp, e) && !is_border(e, mesh) ? 1 : 0;
+    std::printf("creases: %zu edges\n", count);
+  }
+  auto compute = [&mesh, closed, sharp](bool aligned, auto out, auto out_cones, auto solver) {
     SD::smoothest_direction_field(
       mesh, out,
       P::symmetry_order(4, P::curvature_alignment_weight(
                              aligned ? 0.1 : 0.,
                              P::field_boundary_condition(
                                closed ? SD::Direction_field_boundary::free : SD::Direction_field_boundary::tangent,
-                               P::unit_length_iterations(30, CGAL::parameters::sparse_linear_solver(solver))))));
+                               P::unit_length_iterations(30, CGAL::parameters::sparse_linear_solver(solver).edge_is_constrained_map(sharp))))));
     return SD::direction_field_singularities(mesh, out, out_cones, P::symmetry_order(4));
   };
   // --field auto: the principal field is independent of the rest, made on a second thread with a
@@ -360,7 +385,7 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
     auto separate = [&](bool aligned, std::size_t cones, auto out, auto cone_map) {
       std::printf("cross field: %s, %zu cones\n",
                   aligned ? "smoothest aligned with the principal curvature directions" : "smoothest", cones);
-      if(o.cone_distance <= 0.)
+      if(o.cone_distance <= 0. || o.sharp_angle > 0.)
         return cones;
       tc.set_indices(cone_map);
       try
@@ -436,7 +461,9 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
       const SD::Field_aligned_quad_remeshing_result r = SD::field_aligned_quad_remeshing(
         mesh, field, quads,
         P::target_edge_length(spacing,
-                              P::stiffening_rounds(o.stiffening_rounds, CGAL::parameters::sparse_linear_solver(traits)))
+                              P::stiffening_rounds(o.stiffening_rounds,
+                                                   P::feature_snapping(o.feature_snapping,
+                                                     CGAL::parameters::sparse_linear_solver(traits).edge_is_constrained_map(sharp))))
           .visitor([](const SD::Field_aligned_quads_round& round) {
             // progress: on a large mesh a round takes seconds
             std::printf("  %s %zu: folds in %zu faces; %s (%.2f s)\n", round.round == 0 ? "first map," : "round",
@@ -448,8 +475,14 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
       std::printf("field-aligned quads (h = %.4g): %zu cones, %zu faces folded in the first map, %zu rounds of "
                   "stiffening, %zu folded at the end\n",
                   spacing, r.cones, r.initially_folded, r.stiffening_rounds, r.folded_faces);
-      std::printf("times: field %.3f s, stripes %.3f s, extraction %.3f s\n", field_seconds, r.stripes_seconds,
-                  r.extraction_seconds);
+      if(o.sharp_angle > 0. && o.feature_snapping)
+        std::printf("creases: %zu vertices of the quads moved onto them\n", r.crease_vertices);
+      if(o.feature_snapping)
+        std::printf("feature snapping: %zu of %zu input vertices and crease points farther than h / 4 from the result "
+                    "pulled a vertex onto them (the farthest was %.3g away)\n",
+                    r.snapped_vertices, r.far_input_vertices, r.largest_input_distance);
+      std::printf("times: field %.3f s, stripes %.3f s, extraction %.3f s (snapping %.3f s)\n", field_seconds,
+                  r.stripes_seconds, r.extraction_seconds, r.snapping_seconds);
       break;
     }
     catch(const SD::Remeshing_failure& e)
@@ -462,14 +495,20 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
 }
 
 // A copy of `input` remeshed isotropically at edge length h (CGAL's isotropic_remeshing, its
-// points on the input's surface): the triangles of a decimated or badly shaped input can leave
-// the stripes' map folded where these do not (measured on four meshes decimated to 2k, 4k and 6k
-// faces, at 500 to 3000 quads: 13 of 48 runs succeed on the input's triangles, 44 with this).
-Mesh isotropically_remeshed(const Mesh& input, double h)
+// points on the input's surface, the creases of --sharp-angle kept): the triangles of a
+// decimated or badly shaped input can leave the stripes' map folded where these do not
+// (measured on four meshes decimated to 2k, 4k and 6k faces, at 500 to 3000 quads: 13 of 48 runs
+// succeed on the input's triangles, 44 with this).
+Mesh isotropically_remeshed(const Mesh& input, double h, double sharp_angle)
 {
   Mesh remeshed = input;
-  CGAL::Polygon_mesh_processing::isotropic_remeshing(faces(remeshed), h, remeshed,
-                                                     CGAL::parameters::number_of_iterations(5));
+  // the creases of --sharp-angle kept: their edges are split, never flipped or collapsed
+  auto sharp = remeshed.add_property_map<Mesh::Edge_index, bool>("e:remeshing_sharp", false).first;
+  if(sharp_angle > 0.)
+    CGAL::Polygon_mesh_processing::detect_sharp_edges(remeshed, sharp_angle, sharp);
+  CGAL::Polygon_mesh_processing::isotropic_remeshing(
+    faces(remeshed), h, remeshed, CGAL::parameters::number_of_iterations(5).edge_is_constrained_map(sharp));
+  remeshed.remove_property_map(sharp);
   remeshed.collect_garbage();
   const long before = euler_characteristic(input), after = euler_characteristic(remeshed);
   if(after != before || CGAL::is_closed(remeshed) != CGAL::is_closed(input))
@@ -551,7 +590,7 @@ int run_field(const Options& o, Traits traits)
                 "%.4g, and the field and the quads made again on it (--no-input-remeshing: fail instead)\n",
                 h);
     std::fflush(stdout);
-    const Mesh remeshed = isotropically_remeshed(input, h);
+    const Mesh remeshed = isotropically_remeshed(input, h, o.sharp_angle);
     std::printf("  remeshed input: %zu vertices, %zu faces\n", std::size_t(num_vertices(remeshed)),
                 std::size_t(num_faces(remeshed)));
     try

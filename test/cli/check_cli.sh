@@ -317,7 +317,10 @@ for args in "--method" "--method magic" "--target-faces 0" "--target-faces -5" "
             "--method field --singularity -1:1/4" "--method field --singularity 3:1/4 --singularity 3:-1/4" \
             "--method field --singularity 3:1/4 --field smoothest" "--method field --stiffening-rounds 65" \
             "--method field --min 0 --max 5" "--method field --no-spectacles" "--method field --singularity 999999:1/4" \
-            "--method field --singularity 0:1/4" "--no-input-remeshing" "--method field --no-input-remeshing 1"; do
+            "--method field --singularity 0:1/4" "--no-input-remeshing" "--method field --no-input-remeshing 1" \
+            "--sharp-angle 30" "--method field --sharp-angle 0" "--method field --sharp-angle 180" \
+            "--method field --sharp-angle nan" "--method field --sharp-angle -5" "--method field --sharp-angle x" \
+            "--method field --sharp-angle 30 --singularity 3:1/4" "--method field --sharp-angle 30 --cone-distance 1"; do
   # shellcheck disable=SC2086
   refuse quad_remesh "$E" $args --output "$O/q.off"
 done
@@ -421,6 +424,15 @@ if ! grep -q "face 1549 holds a cone of -1/4 and has an angle of 179 degrees" "$
 fi
 # --field auto (the default) takes, of the smoothest and the principal cross field, the one with
 # fewer cones: on the knotted tube the principal one, with no cone, hence no irregular vertex
+# creases: the field follows them and the row of vertices next to each moves onto it (the
+# library's test measures how closely the edges follow them); valid quads, the cones irregular
+accept quad_remesh "$DATA/creased_slab.off" --method field --sharp-angle 60 --target-faces 2000 --output "$O/slab.off"
+if ! grep -q "^creases: 224 edges" "$WORK/stdout" || ! grep -q "100.0% quads" "$WORK/stdout" ||
+   ! grep -qE "^creases: [1-9][0-9]* vertices of the quads moved onto them" "$WORK/stdout" ||
+   ! grep -q "Euler characteristic 0, 0 boundary loops, 1 components (as the input's)" "$WORK/stdout"; then
+  echo "FAILED: quad_remesh creased_slab.off --sharp-angle 60: $(grep -E "creases|quads|Euler" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
 accept quad_remesh "$DATA/knot1.off" --method field --target-faces 600 --output "$O/knot.off"
 if ! grep -q "^  auto: the principal field (0 cones against [1-9]" "$WORK/stdout" ||
    ! grep -q "^  0 irregular vertices" "$WORK/stdout" || ! grep -q "100.0% quads" "$WORK/stdout"; then

@@ -852,7 +852,10 @@ private:
     clear_quads();
     try
     {
-      const auto r = SD::extract_field_aligned_quads(*m_bsp, m_quad_mesh, SD::parameters::stiffening_rounds(m_quad_rounds));
+      // (the lines' crossings, not snapped onto the input's features: the drag's time goes to the
+      // stripes, and the preview shows the map the cones make)
+      const auto r = SD::extract_field_aligned_quads(
+        *m_bsp, m_quad_mesh, SD::parameters::stiffening_rounds(m_quad_rounds, SD::parameters::feature_snapping(false)));
       m_quad_info = Json{{"on", true},
                          {"valid", true},
                          {"faces", r.faces},

@@ -10,6 +10,7 @@
 
 #include <CGAL/Surface_design/Branched_stripe_parameterizer.h>
 #include <CGAL/Surface_design/exceptions.h>
+#include <CGAL/Surface_design/internal/Core/feature_snapping.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>
 #include <CGAL/Surface_design/internal/Core/named_parameters.h>
 #include <CGAL/Surface_design/internal/Field_aligned_parameterization/quad_extraction.h>
@@ -41,7 +42,14 @@ struct Field_aligned_quad_remeshing_result
   long euler_characteristic = 0;       ///< V - E + F of the result: that of the input
   std::size_t boundary_loops = 0;      ///< of the result: the input's, each a line of the quads
   double edge_length = 0.;             ///< the spacing h of the lines
+  /// with `feature_snapping(true)`: the input's interior vertices and crease points farther than
+  /// h / 4 from the quads, and the quads' vertices moved onto them
+  std::size_t far_input_vertices = 0, snapped_vertices = 0;
+  /// with `feature_snapping(true)` and `edge_is_constrained_map`: vertices moved onto the creases
+  std::size_t crease_vertices = 0;
+  double largest_input_distance = 0.; ///< the largest of those distances, before snapping (0 without it)
   double stripes_seconds = 0., extraction_seconds = 0.;
+  double snapping_seconds = 0.; ///< (part of the extraction's time)
 };
 
 /// \ingroup PkgFieldAlignedParameterizationRef
@@ -85,6 +93,18 @@ struct Field_aligned_quads_round
 /// faces when the first one folded in f. The stiffening stays in `bsp`
 /// until its next `set_field()` (or after it: `keep_stiffening()`).
 ///
+/// **Feature snapping.** The quads' vertices lie on the input, at the lines' crossings; the
+/// quads between them pass over what is narrower than h: a spike, a pit, a crease the lines
+/// cross. With `feature_snapping(true)` (the default), as in `harmonic_quad_remeshing()`, the
+/// input's interior vertices and points along its creases (at most h / 2 apart) farther than
+/// h / 4 from the quads pull the nearest vertex onto them (one per neighbourhood, never a cone's
+/// or a boundary vertex, never turning a quad over). Where `edge_is_constrained_map` gives the
+/// creases (a field that follows them: `smoothest_direction_field()` with the same map), the
+/// row of vertices next to each crease is moved onto it first: of every edge of the quads that
+/// crosses a crease, the end closer to it (within 3h / 4), closest first, unless a quad would
+/// turn over. The edges of the quads then run along the creases. The topology and the
+/// valences do not change; the lines' crossings are the positions without it.
+///
 /// \param bsp the stripes of a cross field, as above (stiffened and solved again where it folds)
 /// \param out a model of `MutableFaceGraph` receiving the quads
 /// \param np an optional sequence of named parameters among the ones listed below
@@ -93,6 +113,21 @@ struct Field_aligned_quads_round
 ///     \cgalParamDescription{the most rounds of stiffening where the map folds}
 ///     \cgalParamType{`int`, in [0, 64]}
 ///     \cgalParamDefault{10}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{feature_snapping}
+///     \cgalParamDescription{whether the quads' vertices are pulled onto the input's vertices and
+///                           creases they pass far from (see above)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_is_constrained_map}
+///     \cgalParamDescription{the creases (e.g. from `CGAL::Polygon_mesh_processing::detect_sharp_edges()`),
+///                           which the field should follow: with `feature_snapping(true)`, the row
+///                           of vertices next to each moves onto it, and the snapping's crease
+///                           points lie on them}
+///     \cgalParamType{a readable edge -> `bool` map of `bsp`'s mesh}
+///     \cgalParamDefault{none: the snapping's creases are the edges whose faces' normals differ by
+///                       more than 30 degrees, and no row moves}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{visitor}
 ///     \cgalParamDescription{a callable called after every extraction with its
@@ -253,6 +288,36 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
       bsp.solve_keeping_windings();
     ++result.stiffening_rounds;
   }
+  // the quads pass over the input's features narrower than h (a crease the lines cross, a
+  // spike): its vertices and points along its creases farther than h / 4 pull the nearest
+  // vertex onto them (the harmonic remesher's snapping; the topology does not change)
+  if(choose_parameter(get_parameter(np, internal_np::feature_snapping), true))
+  {
+    const auto snap_start = Clock::now();
+    std::vector<char> cone_vertex(q.points.size(), 0); // (they stay at their branch points)
+    for(std::size_t v : q.cone_vertex)
+      cone_vertex[v] = 1;
+    std::vector<bool> crease;
+    internal::if_given(np, CGAL::internal_np::edge_is_constrained, [&](const auto& ecm) {
+      crease.assign(idx.number_of_edges(), false);
+      for(auto e : edges(bsp.mesh()))
+        crease[idx.index(e)] = bool(get(ecm, e));
+      // given creases: the field follows them (the caller's), so the row of vertices next to
+      // each runs along it and moves onto it
+      result.crease_vertices = internal::snap_rows_onto_creases(
+        q.points, q.faces, internal::crease_segments(idx, bsp.vertex_point_map(), crease), 0.75 * h, true, cone_vertex);
+    });
+    if(crease.empty())
+      crease = internal::dihedral_creases(idx, bsp.vertex_point_map(), CGAL_PI / 6.);
+    const internal::Snap_statistics snap = internal::snap_to_far_points(
+      q.points, q.faces, internal::mesh_snap_targets(idx, bsp.vertex_point_map(), crease, h / 2.), h / 4., 2. * h, true,
+      cone_vertex);
+    result.far_input_vertices = snap.far_vertices;
+    result.snapped_vertices = snap.snapped;
+    result.largest_input_distance = snap.largest_distance;
+    result.snapping_seconds = seconds_since(snap_start);
+    extraction_seconds += result.snapping_seconds;
+  }
   result.extraction_seconds = extraction_seconds;
   result.stripes_seconds = seconds_since(start) - extraction_seconds;
   result.vertices = q.points.size();
@@ -286,6 +351,10 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
 /// several loops and no cone (a tube, an annulus, a plate with holes) the loops' windings are
 /// coupled by Stokes' theorem, and chosen together.
 ///
+/// **Creases.** Give them as `edge_is_constrained_map`, here and to the field
+/// (`smoothest_direction_field()`): the field follows them, and the row of the quads' vertices
+/// next to each crease moves onto it (see `extract_field_aligned_quads()`).
+///
 /// **How.** The two stripe families of `Branched_stripe_parameterizer` with n = 4, spacing h, no
 /// stripe singularity (no T-junction) and every branch point on the lattice
 /// (`set_lattice_branch_points()`) are the coordinates (u, v) of a seamless map whose integer
@@ -306,6 +375,17 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
 ///     \cgalParamDescription{the most rounds of stiffening where the map folds}
 ///     \cgalParamType{`int`, in [0, 64]}
 ///     \cgalParamDefault{10}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{feature_snapping}
+///     \cgalParamDescription{the vertices pulled onto the input's vertices and creases, as in
+///                           `extract_field_aligned_quads()`}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_is_constrained_map}
+///     \cgalParamDescription{the creases, which `field` should follow, as in `extract_field_aligned_quads()`}
+///     \cgalParamType{a readable edge -> `bool` map}
+///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{visitor}
 ///     \cgalParamDescription{called after every extraction, as in `extract_field_aligned_quads()`}
