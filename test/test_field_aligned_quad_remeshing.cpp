@@ -181,35 +181,37 @@ std::string quad_mesh_problem(const Mesh& input, const std::map<typename boost::
   const long chi_in = long(num_vertices(input)) - long(num_edges(input)) + long(num_faces(input));
   if(chi_out != chi_in)
     return "Euler characteristic " + std::to_string(chi_out) + ", the input's " + std::to_string(chi_in);
-  // every cone: the output vertex nearest to its face's centroid, within the face's size, has
-  // valence 4 - k; every other vertex valence 4; sum of (4 - valence) = 4 chi
+  // every cone: exactly one output vertex of valence 4 - k on its face (the closed triangle: a
+  // cone's vertex may be moved onto a corner of its face, see the creases); every other vertex
+  // valence 4; sum of (4 - valence) = 4 chi
   std::map<Quad_mesh::Vertex_index, int> due;
   for(const auto& [f, k] : cones)
   {
-    Eigen::Vector3d c = Eigen::Vector3d::Zero();
-    double size = 0.;
     std::vector<Eigen::Vector3d> x;
     for(auto v : vertices_around_face(halfedge(f, input), input))
       x.push_back(eigen_of(get(vpm, v)));
-    for(const auto& p : x)
-      c += p / 3.;
-    for(const auto& p : x)
-      size = (std::max)(size, (p - c).norm());
-    Quad_mesh::Vertex_index nearest;
-    double best = 1e300;
+    const Eigen::Vector3d n = (x[1] - x[0]).cross(x[2] - x[0]);
+    auto on_face = [&](const Eigen::Vector3d& p) {
+      if(std::abs((p - x[0]).dot(n.normalized())) > 1e-9 * scale)
+        return false;
+      for(int i = 0; i < 3; ++i) // on the inner side of every edge, up to rounding
+        if((x[std::size_t((i + 1) % 3)] - x[std::size_t(i)]).cross(p - x[std::size_t(i)]).dot(n) < -1e-9 * scale * n.norm())
+          return false;
+      return true;
+    };
+    std::vector<Quad_mesh::Vertex_index> found;
     for(auto v : vertices(out))
-      if((eigen(out.point(v)) - c).norm() < best)
-      {
-        best = (eigen(out.point(v)) - c).norm();
-        nearest = v;
-      }
-    if(best > size)
-      return "no vertex in a cone's face";
-    if(due.count(nearest))
+      if(on_face(eigen(out.point(v))) && int(degree(v, out)) == 4 - k)
+        found.push_back(v);
+    if(found.empty())
+      return "no vertex of valence " + std::to_string(4 - k) + " in a cone's face";
+    if(found.size() > 1)
+      return "several vertices of valence " + std::to_string(4 - k) + " in a cone's face";
+    if(due.count(found.front()))
       return "two cones at one vertex";
-    if(CGAL::is_border(nearest, out))
+    if(CGAL::is_border(found.front(), out))
       return "a cone on the boundary";
-    due[nearest] = 4 - k;
+    due[found.front()] = 4 - k;
   }
   // sum over the inside of (4 - valence), over the boundary of (3 - valence): 4 chi (Gauss-Bonnet
   // with quarter turns); a smooth boundary's vertices are regular: valence 3
@@ -731,6 +733,8 @@ TEMPLATE_TEST_CASE("Creases: the field follows them, and the quads' edges run al
   // the quad mesh of the field, its vertices moved along the creases
   CHECK(quad_mesh_problem(mesh, cones, followed) == "");
   CHECK(r.crease_vertices > 0);
+  CAPTURE(r.cones_on_corners);
+  CHECK(r.cones_on_corners > 0);
   // the lines' crossings (no snapping): the same mesh, its vertices where the lines cross
   const auto r0 = SD::field_aligned_quad_remeshing(
     mesh, field.map(), crossings,
@@ -741,13 +745,13 @@ TEMPLATE_TEST_CASE("Creases: the field follows them, and the quads' edges run al
   CHECK(r0.snapped_vertices == 0);
   // the edges follow the creases: nearly every crease point on an edge of the quads; without
   // the snapping the lines run beside the creases (the measure has teeth)
-  // (measured: 85% of the points, 99% away from the corners, where the cones are near but not
-  // on them; the lines' crossings: 1%)
+  // (measured: 93% of the points, 99% away from the corners, where the lines bend around the
+  // cones, now on the corners; the lines' crossings: 1%)
   const double on_edges = share_of_creases_on_edges(mesh, CGAL_PI / 3., followed, h, 0.02 * h);
   const double away_from_corners = share_of_creases_on_edges(mesh, CGAL_PI / 3., followed, h, 0.02 * h, 2. * h);
   const double beside = share_of_creases_on_edges(mesh, CGAL_PI / 3., crossings, h, 0.02 * h);
   CAPTURE(on_edges, away_from_corners, beside);
-  CHECK(on_edges > 0.8);
+  CHECK(on_edges > 0.85);
   CHECK(away_from_corners > 0.95);
   CHECK(beside < 0.1);
   // closer to the input: the snapped vertices lie on it
@@ -763,6 +767,95 @@ TEMPLATE_TEST_CASE("Creases: the field follows them, and the quads' edges run al
   const double unaligned_share = share_of_creases_on_edges(mesh, CGAL_PI / 3., unaligned_out, h, 0.02 * h);
   CAPTURE(unaligned_share);
   CHECK(unaligned_share < on_edges);
+}
+
+// The unit cube, every face an n x n grid of cells cut into two triangles (alternating
+// diagonals), its faces facing outwards.
+template <class Mesh>
+Mesh grid_cube(std::size_t n)
+{
+  std::vector<Point_of<Mesh>> points;
+  std::map<std::array<std::size_t, 3>, std::size_t> index;
+  std::vector<std::vector<std::size_t>> triangles;
+  // per face: a corner and two directions whose cross product points outwards
+  const int frames[6][3][3] = {{{0, 0, 0}, {0, 1, 0}, {1, 0, 0}}, {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},
+                               {{0, 0, 0}, {0, 0, 1}, {0, 1, 0}}, {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+                               {{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}, {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}}};
+  for(const auto& [o, u, w] : frames)
+  {
+    auto vertex = [&](std::size_t i, std::size_t j) {
+      std::array<std::size_t, 3> g;
+      for(int k = 0; k < 3; ++k)
+        g[std::size_t(k)] = std::size_t(o[k]) * n + std::size_t(u[k]) * i + std::size_t(w[k]) * j;
+      const auto [it, added] = index.emplace(g, points.size());
+      if(added)
+        points.emplace_back(double(g[0]) / double(n), double(g[1]) / double(n), double(g[2]) / double(n));
+      return it->second;
+    };
+    for(std::size_t i = 0; i < n; ++i)
+      for(std::size_t j = 0; j < n; ++j)
+      {
+        const std::size_t a = vertex(i, j), b = vertex(i + 1, j), c = vertex(i + 1, j + 1), d = vertex(i, j + 1);
+        if((i + j) % 2 == 0)
+          triangles.insert(triangles.end(), {{a, b, c}, {a, c, d}});
+        else
+          triangles.insert(triangles.end(), {{a, b, d}, {b, c, d}});
+      }
+  }
+  Mesh mesh;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, mesh);
+  return mesh;
+}
+
+TEMPLATE_TEST_CASE("Creases of a cube: its corners are the cones, its edges lines of the quads",
+                   "[field_aligned_quads]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  using Edge = typename boost::graph_traits<Mesh>::edge_descriptor;
+  const Mesh mesh = grid_cube<Mesh>(14);
+  REQUIRE(CGAL::is_closed(mesh));
+  std::map<Edge, bool> crease_of;
+  CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, 45., boost::make_assoc_property_map(crease_of));
+  const auto creases = boost::make_assoc_property_map(crease_of);
+  Field<Mesh> field{&mesh, {}};
+  // (as quad_remesh makes it: the flow keeps the cones apart)
+  SD::smoothest_direction_field(
+    mesh, field.map(),
+    SD::parameters::symmetry_order(4, SD::parameters::unit_length_iterations(30)).edge_is_constrained_map(creases));
+  const auto cones = cones_of(mesh, field);
+  CHECK(cones.size() == 8);
+  const double h = std::sqrt(surface_area(mesh) / 1500.);
+  Quad_mesh out;
+  const auto r = SD::field_aligned_quad_remeshing(mesh, field.map(), out,
+                                                  SD::parameters::target_edge_length(h).edge_is_constrained_map(creases));
+  CHECK(quad_mesh_problem(mesh, cones, out) == "");
+  // every cone on a corner of the cube, nearly every crease point on an edge of the quads, the
+  // quads nearly square. The creases are followed, not constrained to be lines: with this
+  // vertex order the lattice search shears the rows a little (1 456 quads, not 1 536) and one
+  // crosses a crease in a jog (measured: 97.8% of the crease points on edges, Hausdorff 1.29%;
+  // with another order of the same cube quad_remesh finds the cube's grid, 0.1%)
+  CHECK(r.cones_on_corners == 8);
+  std::size_t on_corners = 0;
+  for(auto v : vertices(out))
+  {
+    const Eigen::Vector3d x = eigen(out.point(v));
+    bool corner = true;
+    for(int k = 0; k < 3; ++k)
+      corner = corner && (std::abs(x[k]) < 1e-12 || std::abs(x[k] - 1.) < 1e-12);
+    if(corner)
+    {
+      ++on_corners;
+      CHECK(degree(v, out) == 3);
+    }
+  }
+  CHECK(on_corners == 8);
+  const double share = share_of_creases_on_edges(mesh, CGAL_PI / 4., out, h, 0.02 * h);
+  CAPTURE(share);
+  CHECK(share > 0.95);
+  const SD::Quad_mesh_quality q = SD::quad_mesh_quality(out, mesh);
+  CHECK(q.valid);
+  CHECK(q.angle_deviation_mean < 2.);
+  CHECK(q.relative_hausdorff_distance < 0.02);
 }
 
 TEST_CASE("Field-aligned quads on a torus without cones: a regular grid", "[field_aligned_quads]")

@@ -74,8 +74,9 @@ const char* usage =
   "                        go, on the remeshed input, to the faces nearest theirs)\n"
   "  --sharp-angle DEG     the quads follow the creases, the edges whose faces' normals differ by more\n"
   "                        than DEG degrees (0 < DEG < 180): the field follows them (its own cones,\n"
-  "                        not separated), and the row of vertices next to each crease moves onto it\n"
-  "                        (not with --singularity or --cone-distance; a remeshed input keeps them)\n"
+  "                        not separated), a cone next to a corner of them moves onto it, and the row\n"
+  "                        of vertices next to each crease onto the crease (not with --singularity\n"
+  "                        or --cone-distance; a remeshed input keeps the creases)\n"
   "options of --method harmonic:\n"
   "  --min V               vertex V is a minimum of the function (value 0); repeatable\n"
   "  --max V               vertex V is a maximum (value 1); repeatable. Without --min/--max:\n"
@@ -476,7 +477,8 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
                   "stiffening, %zu folded at the end\n",
                   spacing, r.cones, r.initially_folded, r.stiffening_rounds, r.folded_faces);
       if(o.sharp_angle > 0. && o.feature_snapping)
-        std::printf("creases: %zu vertices of the quads moved onto them\n", r.crease_vertices);
+        std::printf("creases: %zu vertices of the quads moved onto them, %zu of the %zu cones onto their corners\n",
+                    r.crease_vertices, r.cones_on_corners, r.cones);
       if(o.feature_snapping)
         std::printf("feature snapping: %zu of %zu input vertices and crease points farther than h / 4 from the result "
                     "pulled a vertex onto them (the farthest was %.3g away)\n",

@@ -23,6 +23,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,8 +46,9 @@ struct Field_aligned_quad_remeshing_result
   /// with `feature_snapping(true)`: the input's interior vertices and crease points farther than
   /// h / 4 from the quads, and the quads' vertices moved onto them
   std::size_t far_input_vertices = 0, snapped_vertices = 0;
-  /// with `feature_snapping(true)` and `edge_is_constrained_map`: vertices moved onto the creases
-  std::size_t crease_vertices = 0;
+  /// with `feature_snapping(true)` and `edge_is_constrained_map`: vertices moved onto the creases,
+  /// and cones' vertices moved onto a corner of the creases
+  std::size_t crease_vertices = 0, cones_on_corners = 0;
   double largest_input_distance = 0.; ///< the largest of those distances, before snapping (0 without it)
   double stripes_seconds = 0., extraction_seconds = 0.;
   double snapping_seconds = 0.; ///< (part of the extraction's time)
@@ -99,11 +101,12 @@ struct Field_aligned_quads_round
 /// input's interior vertices and points along its creases (at most h / 2 apart) farther than
 /// h / 4 from the quads pull the nearest vertex onto them (one per neighbourhood, never a cone's
 /// or a boundary vertex, never turning a quad over). Where `edge_is_constrained_map` gives the
-/// creases (a field that follows them: `smoothest_direction_field()` with the same map), the
-/// row of vertices next to each crease is moved onto it first: of every edge of the quads that
-/// crosses a crease, the end closer to it (within 3h / 4), closest first, unless a quad would
-/// turn over. The edges of the quads then run along the creases. The topology and the
-/// valences do not change; the lines' crossings are the positions without it.
+/// creases (a field that follows them: `smoothest_direction_field()` with the same map), a cone
+/// in a face at a corner of the creases (a vertex with three crease edges or more) moves onto
+/// that corner, and the row of vertices next to each crease is moved onto it: of every edge of
+/// the quads that crosses a crease, the end closer to it (within 3h / 4), closest first, unless
+/// a quad would turn over. The edges of the quads then run along the creases. The topology and
+/// the valences do not change; the lines' crossings are the positions without it.
 ///
 /// \param bsp the stripes of a cross field, as above (stiffened and solved again where it folds)
 /// \param out a model of `MutableFaceGraph` receiving the quads
@@ -302,8 +305,33 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
       crease.assign(idx.number_of_edges(), false);
       for(auto e : edges(bsp.mesh()))
         crease[idx.index(e)] = bool(get(ecm, e));
-      // given creases: the field follows them (the caller's), so the row of vertices next to
-      // each runs along it and moves onto it
+      // given creases: a cone in a face at a corner of them (three crease edges or more) moves
+      // onto that corner, where its irregular vertex belongs (a box's corner)
+      std::vector<int> crease_edges_at(idx.number_of_vertices(), 0);
+      for(auto e : edges(bsp.mesh()))
+        if(crease[idx.index(e)] && !is_border(e, bsp.mesh()))
+          for(auto v : {source(halfedge(e, bsp.mesh()), bsp.mesh()), target(halfedge(e, bsp.mesh()), bsp.mesh())})
+            ++crease_edges_at[idx.index(v)];
+      const internal::Soup_adjacency adjacency = internal::soup_adjacency(q.points.size(), q.faces);
+      for(std::size_t i = 0; i < cones.size(); ++i)
+      {
+        const std::size_t c = q.cone_vertex[i];
+        std::optional<Eigen::Vector3d> corner;
+        for(auto v : vertices_around_face(halfedge(idx.face(cones[i].face), bsp.mesh()), bsp.mesh()))
+          if(crease_edges_at[idx.index(v)] >= 3)
+          {
+            const Eigen::Vector3d x = internal::position(bsp.vertex_point_map(), v);
+            if(!corner || (x - q.points[c]).squaredNorm() < (*corner - q.points[c]).squaredNorm())
+              corner = x;
+          }
+        if(corner && internal::keeps_orientation(q.points, q.faces, adjacency.faces_around[c], c, *corner))
+        {
+          q.points[c] = *corner;
+          ++result.cones_on_corners;
+        }
+      }
+      // the field follows the creases (the caller's), so the row of vertices next to each runs
+      // along it and moves onto it
       result.crease_vertices = internal::snap_rows_onto_creases(
         q.points, q.faces, internal::crease_segments(idx, bsp.vertex_point_map(), crease), 0.75 * h, true, cone_vertex);
     });
