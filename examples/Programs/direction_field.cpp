@@ -11,7 +11,6 @@
 #include <CGAL/Surface_design/Trivial_connection.h>
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
-#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <algorithm>
@@ -224,14 +223,8 @@ int run(const Options& o, const Solver& solver)
     // the creases (none without --sharp-angle)
     auto sharp = mesh.add_property_map<Mesh::Edge_index, bool>("e:sharp", false).first;
     if(o.sharp_angle > 0.)
-    {
-      CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, o.sharp_angle, sharp);
-      std::size_t count = 0;
-      for(auto e : edges(mesh))
-        count += get(sharp, e) && !is_border(e, mesh) ? 1 : 0;
-      std::cout << "creases: " << count << " edges whose faces' normals differ by more than " << o.sharp_angle
-                << " degrees\n";
-    }
+      std::cout << "creases: " << program::detect_creases(mesh, o.sharp_angle, sharp)
+                << " edges whose faces' normals differ by more than " << o.sharp_angle << " degrees\n";
     const auto info = SD::smoothest_direction_field(
       mesh, field_map,
       SD::parameters::symmetry_order(

@@ -15,7 +15,6 @@
 #include <CGAL/Surface_design/quad_mesh_quality.h>
 
 #include <CGAL/Polygon_mesh_processing/remesh.h>
-#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
@@ -290,6 +289,15 @@ int report_and_write(const Mesh& input, const Mesh& quads, const Options& o, pro
   return 0;
 }
 
+// What feature snapping did (either method's result).
+template <class Result>
+void print_snapping(const Result& r)
+{
+  std::printf("feature snapping: %zu of %zu input vertices and crease points farther than h / 4 from the result "
+              "pulled a vertex onto them (the farthest was %.3g away)\n",
+              r.snapped_vertices, r.far_input_vertices, r.largest_input_distance);
+}
+
 long euler_characteristic(const Mesh& m) { return long(num_vertices(m)) - long(num_edges(m)) + long(num_faces(m)); }
 
 // The input mesh, with its counts printed.
@@ -339,13 +347,7 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
   const bool closed = CGAL::is_closed(mesh);
   auto sharp = mesh.add_property_map<Mesh::Edge_index, bool>("e:sharp", false).first;
   if(o.sharp_angle > 0.)
-  {
-    CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, o.sharp_angle, sharp);
-    std::size_t count = 0;
-    for(auto e : edges(mesh))
-      count += get(sharp, e) && !is_border(e, mesh) ? 1 : 0;
-    std::printf("creases: %zu edges\n", count);
-  }
+    std::printf("creases: %zu edges\n", program::detect_creases(mesh, o.sharp_angle, sharp));
   auto compute = [&mesh, closed, sharp](bool aligned, auto out, auto out_cones, auto solver) {
     SD::smoothest_direction_field(
       mesh, out,
@@ -480,9 +482,7 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
         std::printf("creases: %zu vertices of the quads moved onto them, %zu of the %zu cones onto their corners\n",
                     r.crease_vertices, r.cones_on_corners, r.cones);
       if(o.feature_snapping)
-        std::printf("feature snapping: %zu of %zu input vertices and crease points farther than h / 4 from the result "
-                    "pulled a vertex onto them (the farthest was %.3g away)\n",
-                    r.snapped_vertices, r.far_input_vertices, r.largest_input_distance);
+        print_snapping(r);
       std::printf("times: field %.3f s, stripes %.3f s, extraction %.3f s (snapping %.3f s)\n", field_seconds,
                   r.stripes_seconds, r.extraction_seconds, r.snapping_seconds);
       break;
@@ -507,7 +507,7 @@ Mesh isotropically_remeshed(const Mesh& input, double h, double sharp_angle)
   // the creases of --sharp-angle kept: their edges are split, never flipped or collapsed
   auto sharp = remeshed.add_property_map<Mesh::Edge_index, bool>("e:remeshing_sharp", false).first;
   if(sharp_angle > 0.)
-    CGAL::Polygon_mesh_processing::detect_sharp_edges(remeshed, sharp_angle, sharp);
+    program::detect_creases(remeshed, sharp_angle, sharp);
   CGAL::Polygon_mesh_processing::isotropic_remeshing(
     faces(remeshed), h, remeshed, CGAL::parameters::number_of_iterations(5).edge_is_constrained_map(sharp));
   remeshed.remove_property_map(sharp);
@@ -669,9 +669,7 @@ int run(const Options& o, Traits traits)
     std::printf("quads only: %zu faces with an odd number of sides paired by %zu paths, %zu edges split\n",
                 r.odd_faces, r.odd_face_paths, r.split_edges);
   if(o.feature_snapping)
-    std::printf("feature snapping: %zu of %zu input vertices and crease points farther than h / 4 from the result "
-                "pulled a vertex onto them (the farthest was %.3g away)\n",
-                r.snapped_vertices, r.far_input_vertices, r.largest_input_distance);
+    print_snapping(r);
   std::printf("times: harmonic %.3f s, spectacles (re-solve) %.3f s, curves %.3f s, meshing %.3f s (quads only %.3f s, "
               "snapping %.3f s)\n",
               r.harmonic_seconds, r.spectacles_seconds, r.curves_seconds, r.meshing_seconds, r.all_quads_seconds,

@@ -11,6 +11,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_design/solver_traits.h>
@@ -339,6 +340,18 @@ public:
 private:
   std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
 };
+
+// The creases of `mesh` (--sharp-angle DEG): `sharp` set on the edges whose faces' normals
+// differ by more than `degrees`; returns how many of them are interior edges.
+template <class EdgeMap>
+std::size_t detect_creases(Mesh& mesh, double degrees, EdgeMap sharp)
+{
+  CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, degrees, sharp);
+  std::size_t count = 0;
+  for(auto e : edges(mesh))
+    count += get(sharp, e) && !is_border(e, mesh) ? 1 : 0;
+  return count;
+}
 
 /// The solvers of the programs' `--solver` option: "default" (the library's `Default_solver_traits`:
 /// simplicial LDLT with AMD below 20k unknowns, supernodal Cholesky with nested dissection above),
