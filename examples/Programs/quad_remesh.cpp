@@ -461,12 +461,11 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
     std::fflush(stdout); // progress: the stiffening rounds can take seconds
     try
     {
-      const SD::Field_aligned_quad_remeshing_result r = SD::field_aligned_quad_remeshing(
-        mesh, field, quads,
+      const auto np =
         P::target_edge_length(spacing,
                               P::stiffening_rounds(o.stiffening_rounds,
                                                    P::feature_snapping(o.feature_snapping,
-                                                     CGAL::parameters::sparse_linear_solver(traits).edge_is_constrained_map(sharp))))
+                                                                       CGAL::parameters::sparse_linear_solver(traits))))
           .visitor([](const SD::Field_aligned_quads_round& round) {
             // progress: on a large mesh a round takes seconds
             std::printf("  %s %zu: folds in %zu faces; %s (%.2f s)\n", round.round == 0 ? "first map," : "round",
@@ -474,7 +473,11 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
                         round.problem.empty() ? "its lines are the quad mesh" : round.problem.c_str(), round.seconds);
             std::fflush(stdout);
             return true;
-          }));
+          });
+      // the creases of --sharp-angle (without it, the snapping's own: 30 degrees)
+      const SD::Field_aligned_quad_remeshing_result r =
+        o.sharp_angle > 0. ? SD::field_aligned_quad_remeshing(mesh, field, quads, np.edge_is_constrained_map(sharp))
+                           : SD::field_aligned_quad_remeshing(mesh, field, quads, np);
       std::printf("field-aligned quads (h = %.4g): %zu cones, %zu faces folded in the first map, %zu rounds of "
                   "stiffening, %zu folded at the end\n",
                   spacing, r.cones, r.initially_folded, r.stiffening_rounds, r.folded_faces);
@@ -504,7 +507,7 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
 Mesh isotropically_remeshed(const Mesh& input, double h, double sharp_angle)
 {
   Mesh remeshed = input;
-  // the creases of --sharp-angle kept: their edges are split, never flipped or collapsed
+  // the creases of --sharp-angle kept (constrained edges: the remeshing keeps its vertices on them)
   auto sharp = remeshed.add_property_map<Mesh::Edge_index, bool>("e:remeshing_sharp", false).first;
   if(sharp_angle > 0.)
     program::detect_creases(remeshed, sharp_angle, sharp);

@@ -422,8 +422,6 @@ if ! grep -q "face 1549 holds a cone of -1/4 and has an angle of 179 degrees" "$
   echo "FAILED: quad_remesh kitten_4k_decimated.off --singularity 1549:-1/4: $(cat "$WORK/stderr")"
   failures=$((failures + 1))
 fi
-# --field auto (the default) takes, of the smoothest and the principal cross field, the one with
-# fewer cones: on the knotted tube the principal one, with no cone, hence no irregular vertex
 # creases: the field follows them and the row of vertices next to each moves onto it (the
 # library's test measures how closely the edges follow them); valid quads, the cones irregular
 accept quad_remesh "$DATA/creased_slab.off" --method field --sharp-angle 60 --target-faces 2000 --output "$O/slab.off"
@@ -433,6 +431,19 @@ if ! grep -q "^creases: 224 edges" "$WORK/stdout" || ! grep -q "100.0% quads" "$
   echo "FAILED: quad_remesh creased_slab.off --sharp-angle 60: $(grep -E "creases|quads|Euler" "$WORK/stdout")"
   failures=$((failures + 1))
 fi
+# the field method snaps onto the input's features by default; --no-feature-snapping keeps the
+# lines' crossings
+if ! grep -q "^feature snapping: " "$WORK/stdout"; then
+  echo "FAILED: quad_remesh creased_slab.off --method field: no snapping report"
+  failures=$((failures + 1))
+fi
+accept quad_remesh "$DATA/creased_slab.off" --method field --no-feature-snapping --target-faces 800 --output "$O/slab_crossings.off"
+if grep -q "^feature snapping: " "$WORK/stdout" || ! grep -q "100.0% quads" "$WORK/stdout"; then
+  echo "FAILED: quad_remesh creased_slab.off --no-feature-snapping: $(grep -E "snapping|quads" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
+# --field auto (the default) takes, of the smoothest and the principal cross field, the one with
+# fewer cones: on the knotted tube the principal one, with no cone, hence no irregular vertex
 accept quad_remesh "$DATA/knot1.off" --method field --target-faces 600 --output "$O/knot.off"
 if ! grep -q "^  auto: the principal field (0 cones against [1-9]" "$WORK/stdout" ||
    ! grep -q "^  0 irregular vertices" "$WORK/stdout" || ! grep -q "100.0% quads" "$WORK/stdout"; then

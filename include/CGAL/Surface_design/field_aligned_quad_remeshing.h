@@ -10,10 +10,10 @@
 
 #include <CGAL/Surface_design/Branched_stripe_parameterizer.h>
 #include <CGAL/Surface_design/exceptions.h>
-#include <CGAL/Surface_design/internal/Core/feature_snapping.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>
 #include <CGAL/Surface_design/internal/Core/named_parameters.h>
 #include <CGAL/Surface_design/internal/Field_aligned_parameterization/quad_extraction.h>
+#include <CGAL/Surface_design/internal/Field_aligned_parameterization/quad_snapping.h>
 #include <CGAL/Surface_design/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -99,14 +99,17 @@ struct Field_aligned_quads_round
 /// quads between them pass over what is narrower than h: a spike, a pit, a crease the lines
 /// cross. With `feature_snapping(true)` (the default), as in `harmonic_quad_remeshing()`, the
 /// input's interior vertices and points along its creases (at most h / 2 apart) farther than
-/// h / 4 from the quads pull the nearest vertex onto them (one per neighbourhood, never a cone's
-/// or a boundary vertex, never turning a quad over). Where `edge_is_constrained_map` gives the
-/// creases (a field that follows them: `smoothest_direction_field()` with the same map), a cone
-/// in a face at a corner of the creases (a vertex with three crease edges or more) moves onto
-/// that corner, and the row of vertices next to each crease is moved onto it: of every edge of
-/// the quads that crosses a crease, the end closer to it (within 3h / 4), closest first, unless
-/// a quad would turn over. The edges of the quads then run along the creases. The topology and
-/// the valences do not change; the lines' crossings are the positions without it.
+/// h / 4 from the quads pull the nearest vertex onto them (one per neighbourhood, never a
+/// boundary vertex nor a cone's, never turning a quad over). Where `edge_is_constrained_map`
+/// gives the creases (a field that follows them: `smoothest_direction_field()` with the same
+/// map), a cone in a face at a corner of the creases (an interior vertex with three crease
+/// edges or more, within 2h) moves onto that corner, one cone per corner, and the row of
+/// vertices next to each crease is moved onto it: of every edge of the quads that crosses a crease, the end
+/// closer to it (within 3h / 4), closest first, unless a quad would turn over or two vertices
+/// meet. The edges of the quads then run along the creases. The topology and the valences do
+/// not change, and no quad turns against its orientation before the snapping (checked again at
+/// the end: where one does, the lines' crossings stay); the crossings are also the positions
+/// without it.
 ///
 /// \param bsp the stripes of a cross field, as above (stiffened and solved again where it folds)
 /// \param out a model of `MutableFaceGraph` receiving the quads
@@ -292,57 +295,36 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
     ++result.stiffening_rounds;
   }
   // the quads pass over the input's features narrower than h (a crease the lines cross, a
-  // spike): its vertices and points along its creases farther than h / 4 pull the nearest
-  // vertex onto them (the harmonic remesher's snapping; the topology does not change)
+  // spike): cones onto the corners of given creases, rows onto them, then the input's vertices
+  // and crease points farther than h / 4 pull the nearest vertex onto them (the harmonic
+  // remesher's snapping; the topology does not change)
   if(choose_parameter(get_parameter(np, internal_np::feature_snapping), true))
   {
     const auto snap_start = Clock::now();
-    std::vector<char> cone_vertex(q.points.size(), 0); // (they stay at their branch points)
-    for(std::size_t v : q.cone_vertex)
-      cone_vertex[v] = 1;
-    std::vector<bool> crease;
+    std::optional<std::vector<bool>> creases;
     internal::if_given(np, CGAL::internal_np::edge_is_constrained, [&](const auto& ecm) {
-      crease.assign(idx.number_of_edges(), false);
+      creases.emplace(idx.number_of_edges(), false);
       for(auto e : edges(bsp.mesh()))
-        crease[idx.index(e)] = bool(get(ecm, e));
-      // given creases: a cone in a face at a corner of them (three crease edges or more) moves
-      // onto that corner, where its irregular vertex belongs (a box's corner)
-      std::vector<int> crease_edges_at(idx.number_of_vertices(), 0);
-      for(auto e : edges(bsp.mesh()))
-        if(crease[idx.index(e)] && !is_border(e, bsp.mesh()))
-          for(auto v : {source(halfedge(e, bsp.mesh()), bsp.mesh()), target(halfedge(e, bsp.mesh()), bsp.mesh())})
-            ++crease_edges_at[idx.index(v)];
-      const internal::Soup_adjacency adjacency = internal::soup_adjacency(q.points.size(), q.faces);
-      for(std::size_t i = 0; i < cones.size(); ++i)
-      {
-        const std::size_t c = q.cone_vertex[i];
-        std::optional<Eigen::Vector3d> corner;
-        for(auto v : vertices_around_face(halfedge(idx.face(cones[i].face), bsp.mesh()), bsp.mesh()))
-          if(crease_edges_at[idx.index(v)] >= 3)
-          {
-            const Eigen::Vector3d x = internal::position(bsp.vertex_point_map(), v);
-            if(!corner || (x - q.points[c]).squaredNorm() < (*corner - q.points[c]).squaredNorm())
-              corner = x;
-          }
-        if(corner && internal::keeps_orientation(q.points, q.faces, adjacency.faces_around[c], c, *corner))
-        {
-          q.points[c] = *corner;
-          ++result.cones_on_corners;
-        }
-      }
-      // the field follows the creases (the caller's), so the row of vertices next to each runs
-      // along it and moves onto it
-      result.crease_vertices = internal::snap_rows_onto_creases(
-        q.points, q.faces, internal::crease_segments(idx, bsp.vertex_point_map(), crease), 0.75 * h, true, cone_vertex);
+        (*creases)[idx.index(e)] = bool(get(ecm, e));
     });
-    if(crease.empty())
-      crease = internal::dihedral_creases(idx, bsp.vertex_point_map(), CGAL_PI / 6.);
-    const internal::Snap_statistics snap = internal::snap_to_far_points(
-      q.points, q.faces, internal::mesh_snap_targets(idx, bsp.vertex_point_map(), crease, h / 2.), h / 4., 2. * h, true,
-      cone_vertex);
-    result.far_input_vertices = snap.far_vertices;
-    result.snapped_vertices = snap.snapped;
-    result.largest_input_distance = snap.largest_distance;
+    std::vector<std::size_t> cone_faces;
+    for(const auto& c : cones)
+      cone_faces.push_back(c.face);
+    const std::vector<Eigen::Vector3d> crossings = q.points;
+    const internal::Quad_snapping snap =
+      internal::snap_quads_to_features(q, idx, bsp.vertex_point_map(), cone_faces, creases, h);
+    // a second look (the check's last criterion, every quad facing the way of the surface, read
+    // at the faces the crossings lay in): where it fails, the crossings stay
+    if(internal::quad_extraction_problem(q, cone_index, chi, surface.normal, boundary_loops).empty())
+    {
+      result.cones_on_corners = snap.cones_on_corners;
+      result.crease_vertices = snap.crease_vertices;
+      result.far_input_vertices = snap.far.far_vertices;
+      result.snapped_vertices = snap.far.snapped;
+      result.largest_input_distance = snap.far.largest_distance;
+    }
+    else
+      q.points = crossings;
     result.snapping_seconds = seconds_since(snap_start);
     extraction_seconds += result.snapping_seconds;
   }

@@ -146,15 +146,33 @@ inline Eigen::Vector3d newell_normal(const std::vector<Eigen::Vector3d>& soup_po
   return n;
 }
 
-/// Whether moving vertex v of a soup to `to` keeps every face around it facing the same way (its
-/// normal keeps a positive dot product with the one before).
+/// Whether moving vertex v of a soup to `to` keeps every face around it facing the same way: its
+/// normal keeps a positive dot product with the one it has with the `reference` positions (the
+/// soup's before any move, so that moves one after the other cannot turn a face by steps; the
+/// current positions when null).
 inline bool keeps_orientation(const std::vector<Eigen::Vector3d>& soup_points,
                               const std::vector<std::vector<std::size_t>>& soup_faces,
-                              const std::vector<std::size_t>& faces_around, std::size_t v, const Eigen::Vector3d& to)
+                              const std::vector<std::size_t>& faces_around, std::size_t v, const Eigen::Vector3d& to,
+                              const std::vector<Eigen::Vector3d>* reference = nullptr)
+{
+  const std::vector<Eigen::Vector3d>& before = reference ? *reference : soup_points;
+  for(std::size_t f : faces_around)
+    if(!(newell_normal(soup_points, soup_faces[f], v, to).dot(newell_normal(before, soup_faces[f], npos, to)) > 0.))
+      return false;
+  return true;
+}
+
+/// Whether `to` lies farther than `epsilon` from every other vertex of the faces around v (a
+/// move there would not make two vertices one point).
+inline bool lands_apart(const std::vector<Eigen::Vector3d>& soup_points,
+                        const std::vector<std::vector<std::size_t>>& soup_faces,
+                        const std::vector<std::size_t>& faces_around, std::size_t v, const Eigen::Vector3d& to,
+                        double epsilon)
 {
   for(std::size_t f : faces_around)
-    if(!(newell_normal(soup_points, soup_faces[f], v, to).dot(newell_normal(soup_points, soup_faces[f], npos, to)) > 0.))
-      return false;
+    for(std::size_t w : soup_faces[f])
+      if(w != v && (soup_points[w] - to).norm() <= epsilon)
+        return false;
   return true;
 }
 
@@ -164,7 +182,8 @@ inline bool keeps_orientation(const std::vector<Eigen::Vector3d>& soup_points,
 /// the soup face closest to them onto them, provided that
 ///  - that corner is not on the boundary nor `fixed` (per soup vertex; empty: none) and is at
 ///    most `reach` away,
-///  - no face around it turns over (its normal keeps a positive dot product with the old one),
+///  - no face around it turns over (its normal keeps a positive dot product with the old one, or
+///    with the one it has with the `reference` positions when given),
 ///  - no face around it has moved already (the distances are those before any move: a corner
 ///    next to a moved one stays),
 ///  - the targets closest to a face around it end up closer to the surface than the farthest of
@@ -174,7 +193,8 @@ inline bool keeps_orientation(const std::vector<Eigen::Vector3d>& soup_points,
 inline Snap_statistics snap_to_far_points(std::vector<Eigen::Vector3d>& soup_points,
                                           const std::vector<std::vector<std::size_t>>& soup_faces,
                                           const std::vector<Eigen::Vector3d>& targets, double tolerance, double reach,
-                                          bool parallel, const std::vector<char>& fixed = {})
+                                          bool parallel, const std::vector<char>& fixed = {},
+                                          const std::vector<Eigen::Vector3d>* reference = nullptr)
 {
   using K = CGAL::Simple_cartesian<double>;
   using Triangles = std::vector<K::Triangle_3>;
@@ -244,7 +264,7 @@ inline Snap_statistics snap_to_far_points(std::vector<Eigen::Vector3d>& soup_poi
     bool any_moved = false;
     for(std::size_t g : faces_around[corner])
       any_moved = any_moved || face_moved[g];
-    if(any_moved || !keeps_orientation(soup_points, soup_faces, faces_around[corner], corner, target))
+    if(any_moved || !keeps_orientation(soup_points, soup_faces, faces_around[corner], corner, target, reference))
       continue;
     // the targets closest to a face around the corner may move away from it: their
     // distance to the faces around the corner and their neighbours (an upper bound of the new
@@ -319,15 +339,17 @@ std::vector<Crease_segment> crease_segments(const Indices& idx, const VertexPoin
 /// edges follow the creases instead of cutting across them. Every edge of the soup that crosses
 /// a crease (its two ends on the two sides of the crease segment nearest the end closer to it,
 /// `Crease_segment::side`) marks that closer end, if it lies within `reach` of the creases, not
-/// on the soup's boundary and not `fixed` (per soup vertex; empty: none); the marked vertices move onto their nearest points of the creases,
-/// closest first, each unless a face around it would turn over (its normal keeps a positive dot
-/// product with the one before the move). On a quad mesh whose lines run along the creases (a
+/// on the soup's boundary and not `fixed` (per soup vertex; empty: none); the marked vertices
+/// move onto their nearest points of the creases, closest first, each unless a face around it
+/// would turn over (`keeps_orientation()`, against `reference` when given) or the point is
+/// another vertex's of those faces. On a quad mesh whose lines run along the creases (a
 /// field that follows them) the closer ends are the row of vertices next to each crease: the row
 /// moves onto it. Returns the number of vertices moved; the topology does not change.
 inline std::size_t snap_rows_onto_creases(std::vector<Eigen::Vector3d>& soup_points,
                                           const std::vector<std::vector<std::size_t>>& soup_faces,
                                           const std::vector<Crease_segment>& creases, double reach, bool parallel,
-                                          const std::vector<char>& fixed = {})
+                                          const std::vector<char>& fixed = {},
+                                          const std::vector<Eigen::Vector3d>* reference = nullptr)
 {
   using K = CGAL::Simple_cartesian<double>;
   using Segments = std::vector<K::Segment_3>;
@@ -362,6 +384,8 @@ inline std::size_t snap_rows_onto_creases(std::vector<Eigen::Vector3d>& soup_poi
     const Crease_segment& c = creases[segment[closer]];
     // the other end's side of the same segment (from its nearest point on it)
     const Eigen::Vector3d ab = c.b - c.a;
+    if(!(ab.squaredNorm() > 0.))
+      continue;
     const double t = std::clamp((soup_points[other] - c.a).dot(ab) / ab.squaredNorm(), 0., 1.);
     const double side = (soup_points[closer] - nearest[closer]).dot(c.side),
                  other_side = (soup_points[other] - (c.a + t * ab)).dot(c.side);
@@ -377,7 +401,8 @@ inline std::size_t snap_rows_onto_creases(std::vector<Eigen::Vector3d>& soup_poi
   std::size_t moved = 0;
   for(std::size_t v : order)
   {
-    if(!keeps_orientation(soup_points, soup_faces, adjacency.faces_around[v], v, nearest[v]))
+    if(!keeps_orientation(soup_points, soup_faces, adjacency.faces_around[v], v, nearest[v], reference) ||
+       !lands_apart(soup_points, soup_faces, adjacency.faces_around[v], v, nearest[v], 1e-9 * reach))
       continue;
     soup_points[v] = nearest[v];
     ++moved;
