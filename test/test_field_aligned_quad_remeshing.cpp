@@ -680,7 +680,7 @@ TEMPLATE_TEST_CASE("Stiffening kept across a new field: the new field's map with
 // How closely the quads' edges follow the creases, read from the two meshes alone: points every
 // h / 8 along the input's edges whose faces' normals differ by more than `angle`, farther than
 // `away` from the creases' corners (vertices with three crease edges or more), and the share of
-// them within `tolerance` of an edge of the quads (by brute force).
+// them within `tolerance` of an edge of the quads (by brute force over the edges).
 template <class Mesh>
 double share_of_creases_on_edges(const Mesh& input, double angle, const Quad_mesh& out, double h, double tolerance,
                                  double away = 0.)
@@ -720,14 +720,17 @@ double share_of_creases_on_edges(const Mesh& input, double angle, const Quad_mes
       const Eigen::Vector3d x = a + (double(k) + 0.5) / double(pieces) * (b - a);
       if(std::any_of(corners.begin(), corners.end(), [&](const Eigen::Vector3d& c) { return (x - c).norm() <= away; }))
         continue;
-      double best = 1e300;
-      for(const auto& [p, q] : segments)
-      {
+      // (an edge whose bounding box, grown by the tolerance, misses x is farther)
+      const bool on_an_edge = std::any_of(segments.begin(), segments.end(), [&](const auto& segment) {
+        const auto& [p, q] = segment;
+        for(int i = 0; i < 3; ++i)
+          if(x[i] < (std::min)(p[i], q[i]) - tolerance || x[i] > (std::max)(p[i], q[i]) + tolerance)
+            return false;
         const double t = std::clamp((x - p).dot(q - p) / (q - p).squaredNorm(), 0., 1.);
-        best = (std::min)(best, (p + t * (q - p) - x).norm());
-      }
+        return (p + t * (q - p) - x).norm() <= tolerance;
+      });
       ++samples;
-      near += best <= tolerance ? 1 : 0;
+      near += on_an_edge ? 1 : 0;
     }
   }
   return samples == 0 ? 0. : double(near) / double(samples);
@@ -785,8 +788,12 @@ TEMPLATE_TEST_CASE("Creases: the field follows them, and the quads' edges run al
                                    SD::parameters::target_edge_length(h).edge_is_constrained_map(creases));
   CHECK(quad_mesh_problem(mesh, cones_of(mesh, unaligned), unaligned_out, true) == "");
   const double unaligned_share = share_of_creases_on_edges(mesh, CGAL_PI / 3., unaligned_out, h, 0.02 * h);
-  CAPTURE(unaligned_share);
+  const SD::Quad_mesh_quality unaligned_q = SD::quad_mesh_quality(unaligned_out, mesh);
+  CAPTURE(unaligned_share, unaligned_q.angle_deviation_mean, q.angle_deviation_mean);
   CHECK(unaligned_share < on_edges);
+  // (measured: 87% against 93%: the rows' move puts most crossings on the creases anyway, at the
+  // cost of the quads' shape; the alignment is what keeps them square)
+  CHECK(unaligned_q.angle_deviation_mean > q.angle_deviation_mean);
 }
 
 // The unit cube, every face an n x n grid of cells cut into two triangles (alternating
