@@ -104,9 +104,9 @@ struct Field_aligned_quads_round
 /// gives the creases (a field that follows them: `smoothest_direction_field()` with the same
 /// map), a cone in a face at a corner of the creases (an interior vertex with three crease
 /// edges or more, within 2h) moves onto that corner, one cone per corner, and the row of
-/// vertices next to each crease is moved onto it: of every edge of the quads that crosses a crease, the end
-/// closer to it (within 3h / 4), closest first, unless a quad would turn over or two vertices
-/// meet. The edges of the quads then run along the creases. The topology and the valences do
+/// vertices next to each crease is moved onto it: of every edge of the quads that crosses a
+/// crease, the end closer to it (within 3h / 4), closest first, unless a quad would turn over
+/// or two vertices meet. The edges of the quads then run along the creases. The topology and the valences do
 /// not change, and no quad turns against its orientation before the snapping (checked again at
 /// the end: where one does, the lines' crossings stay); the crossings are also the positions
 /// without it.
