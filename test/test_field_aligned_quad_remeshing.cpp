@@ -16,6 +16,8 @@
 #include <CGAL/Surface_design/mesh_generators.h>
 #include <CGAL/Surface_design/quad_mesh_quality.h>
 #include <CGAL/Surface_design/Trivial_connection.h>
+#include <CGAL/Surface_design/internal/Core/boundary_smoothing.h>
+#include <CGAL/Surface_design/internal/Core/cover_constraints.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
@@ -394,6 +396,264 @@ TEMPLATE_TEST_CASE("Field-aligned quads on a boundary with corners: one quad at 
     }
     CHECK(q.angle_deviation_mean < 5.);
   }
+}
+
+// The unit square's grid (n x n cells, its inner vertices jittered by 0.15 cells) whose boundary
+// zigzags: every other boundary vertex but the corners moved inward by `depth` cells, so that
+// the boundary turns by 2 atan(depth) at every vertex (62 degrees for depth 0.6), alternately
+// left and right
+template <class Mesh>
+Mesh zigzag_square(std::size_t n, double depth)
+{
+  Mesh mesh;
+  SD::make_grid(mesh, n, n, 0.15);
+  auto vpm = get(CGAL::vertex_point, mesh);
+  const double cell = 1. / double(n);
+  const long last = long(n);
+  for(auto v : vertices(mesh))
+  {
+    const auto p = get(vpm, v);
+    const long i = std::lround(p.x() / cell), j = std::lround(p.y() / cell);
+    const bool on_x = i == 0 || i == last, on_y = j == 0 || j == last;
+    if(on_x == on_y || (on_x ? j : i) % 2 == 0) // inside, a corner, or not moved
+      continue;
+    const double x = p.x() + (i == 0 ? depth : i == last ? -depth : 0.) * cell;
+    const double y = p.y() + (j == 0 ? depth : j == last ? -depth : 0.) * cell;
+    put(vpm, v, typename boost::property_traits<decltype(vpm)>::value_type(x, y, 0.));
+  }
+  return mesh;
+}
+
+TEMPLATE_TEST_CASE("A boundary that zigzags finer than the quads: the field and the quads follow it smoothed, its "
+                   "corners kept", "[field_aligned_quads][boundary]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  // 40 x 40 cells, the boundary turning by 62 degrees at every vertex; quads of 4 cells
+  const Mesh mesh = zigzag_square<Mesh>(40, 0.6);
+  const double h = 0.1;
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  const SDI::Mesh_indices<Mesh> idx(mesh);
+  auto is_square_corner = [&](std::size_t v) {
+    const auto p = get(vpm, idx.vertex(v));
+    return (p.x() == 0. || p.x() == 1.) && (p.y() == 0. || p.y() == 1.);
+  };
+  // the smoothed boundary: its corners are the square's four, its direction the sides' (the
+  // mean over at least 3 edges of alternately +31 and -31 degrees, away from the corners)
+  {
+    const SDI::Smoothed_boundary sb = SDI::smoothed_boundary(idx, vpm, SDI::boundary_loops(idx), h);
+    CHECK(sb.corners == 4);
+    for(std::size_t v = 0; v < idx.number_of_vertices(); ++v)
+      CHECK(sb.corner[v] == is_square_corner(v));
+    // the direction of the side: the edge leaving v turned by the offset, in the plane's frame
+    std::size_t read = 0;
+    for(auto h0 : halfedges(mesh))
+    {
+      if(!is_border(opposite(h0, mesh), mesh))
+        continue; // h0: along the boundary, the square on its left
+      const std::size_t v = idx.index(source(h0, mesh));
+      const auto a = get(vpm, source(h0, mesh)), b = get(vpm, target(h0, mesh));
+      const double edge = std::atan2(b.y() - a.y(), b.x() - a.x()) + sb.offset[v];
+      const double side = std::atan2(std::sin(4. * edge), std::cos(4. * edge)); // 0 along the sides
+      const double x = a.x(), y = a.y();
+      const double from_corner = (std::min)({std::hypot(x, y), std::hypot(1. - x, y), std::hypot(x, 1. - y),
+                                             std::hypot(1. - x, 1. - y)});
+      if(from_corner < h)
+        continue;
+      ++read;
+      CHECK(std::abs(side) / 4. < (31. / 3. + 0.5) * SDI::pi / 180.);
+    }
+    CHECK(read > 100);
+    // without smoothing nothing is straightened, and the turn along an edge is the boundary's
+    const SDI::Smoothed_boundary raw = SDI::smoothed_boundary(idx, vpm, SDI::boundary_loops(idx), 0.);
+    CHECK(std::all_of(raw.offset.begin(), raw.offset.end(), [](double x) { return x == 0.; }));
+    CHECK(raw.corners == 0);
+  }
+  // the fields: the smoothest one and the trivial connection, both along the smoothed boundary
+  Field<Mesh> field{&mesh, {}};
+  SD::smoothest_direction_field(mesh, field.map(),
+                                SD::parameters::symmetry_order(4, SD::parameters::field_boundary_condition(
+                                                                    SD::Direction_field_boundary::tangent,
+                                                                    SD::parameters::boundary_smoothing_length(h))));
+  CHECK(cones_of(mesh, field).empty());
+  SD::Trivial_connection tc(mesh, SD::parameters::symmetry_order(4, SD::parameters::field_boundary_condition(
+                                                                     SD::Direction_field_boundary::tangent,
+                                                                     SD::parameters::boundary_smoothing_length(h))));
+  // four convex corners that the field turns with: the indices sum to chi - 4 / 4 = 0
+  CHECK(tc.required_index_sum(0) == std::optional<long>(0));
+  tc.solve();
+  Field<Mesh> connection{&mesh, {}};
+  tc.field(connection.map());
+  CHECK(cones_of(mesh, connection).empty());
+  // at every boundary vertex both fields are the smoothed direction (a cross: modulo 90 degrees)
+  {
+    const SDI::Smoothed_boundary sb = SDI::smoothed_boundary(idx, vpm, SDI::boundary_loops(idx), h);
+    for(auto h0 : halfedges(mesh))
+    {
+      if(!is_border(opposite(h0, mesh), mesh))
+        continue;
+      const auto a = get(vpm, source(h0, mesh)), b = get(vpm, target(h0, mesh));
+      const double smoothed = std::atan2(b.y() - a.y(), b.x() - a.x()) + sb.offset[idx.index(source(h0, mesh))];
+      for(const Field<Mesh>* f : {&field, &connection})
+      {
+        const auto x = f->values.at(source(h0, mesh));
+        const double d = 4. * (std::atan2(x.y(), x.x()) - smoothed);
+        CHECK(std::abs(std::atan2(std::sin(d), std::cos(d))) < 1e-6);
+      }
+    }
+  }
+  // the stripes: the family normal to the boundary switches at the four corners only; with a
+  // field that follows every edge, read edge by edge, it switches at many of the zigzag's vertices
+  Field<Mesh> raw_field{&mesh, {}};
+  SD::smoothest_direction_field(mesh, raw_field.map(),
+                                SD::parameters::symmetry_order(4, SD::parameters::field_boundary_condition(
+                                                                    SD::Direction_field_boundary::tangent)));
+  for(const bool smoothed : {true, false})
+  {
+    CAPTURE(smoothed);
+    SD::Branched_stripe_parameterizer bsp(mesh, SD::parameters::symmetry_order(4));
+    bsp.set_lattice_branch_points(true);
+    bsp.set_boundary_on_level_lines(true, smoothed ? h : 0.);
+    bsp.set_field((smoothed ? field : raw_field).map(), 1. / h);
+    std::vector<std::size_t> corners = bsp.boundary_corners();
+    if(smoothed)
+    {
+      CHECK(corners.size() == 4);
+      for(std::size_t v : corners)
+        CHECK(is_square_corner(v));
+    }
+    else
+      CHECK(corners.size() > 40);
+  }
+  // the quads: valence 2 at the square's corners, 3 along the sides, 4 inside, for both fields
+  for(const Field<Mesh>* f : {&field, &connection})
+  {
+    Quad_mesh out;
+    const auto r = SD::field_aligned_quad_remeshing(
+      mesh, f->map(), out, SD::parameters::boundary_smoothing_length(h, SD::parameters::target_edge_length(h)));
+    std::map<int, int> boundary_valences;
+    for(auto v : vertices(out))
+      if(CGAL::is_border(v, out))
+      {
+        ++boundary_valences[int(degree(v, out))];
+        if(degree(v, out) == 2)
+        {
+          const auto p = out.point(v);
+          CHECK((std::min(p.x(), 1. - p.x()) < 1e-12 && std::min(p.y(), 1. - p.y()) < 1e-12));
+        }
+      }
+      else
+        CHECK(degree(v, out) == 4);
+    CHECK(boundary_valences.size() == 2u);
+    CHECK(boundary_valences[2] == 4);
+    CHECK(std::abs(double(r.faces) / 100. - 1.) < 0.25);
+    const SD::Quad_mesh_quality q = SD::quad_mesh_quality(out, mesh);
+    CHECK(q.same_topology);
+    CHECK(q.valid);
+    CHECK(q.relative_hausdorff_distance < 0.01);
+  }
+  // a negative length is refused
+  CHECK_THROWS_AS(SD::smoothest_direction_field(
+                    mesh, field.map(),
+                    SD::parameters::symmetry_order(4, SD::parameters::field_boundary_condition(
+                                                        SD::Direction_field_boundary::tangent,
+                                                        SD::parameters::boundary_smoothing_length(-1.)))),
+                  SD::Invalid_parameter);
+  CHECK_THROWS_AS(SD::Trivial_connection(mesh, SD::parameters::field_boundary_condition(
+                                                 SD::Direction_field_boundary::tangent,
+                                                 SD::parameters::boundary_smoothing_length(std::nan("")))),
+                  SD::Invalid_parameter);
+}
+
+TEMPLATE_TEST_CASE("A boundary smoothed at a length too short to straighten anything: the trivial connection is the "
+                   "one that follows every edge", "[field_aligned_quads][boundary]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  // a jittered disk with a cone pair: at a length shorter than every edge, the smoothed boundary is
+  // the boundary (offsets 0), and the one-form taken along it, the transport's plus n times the
+  // turn, must be 0 there: the field is the same as without smoothing
+  const Mesh mesh = saddle_disk<Mesh>(16, 0.2);
+  auto field_with = [&](double length) {
+    SD::Trivial_connection tc(mesh, SD::parameters::symmetry_order(4, SD::parameters::field_boundary_condition(
+                                                                       SD::Direction_field_boundary::tangent,
+                                                                       SD::parameters::boundary_smoothing_length(length))));
+    CHECK(tc.required_index_sum(0) == std::optional<long>(4));
+    for(std::size_t f : {100u, 200u, 300u, 400u})
+      tc.set_index(f, 1);
+    tc.solve();
+    Field<Mesh> out{&mesh, {}};
+    tc.field(out.map());
+    return out;
+  };
+  const Field<Mesh> a = field_with(0.), b = field_with(1e-9);
+  for(const auto& [v, x] : a.values)
+  {
+    const auto y = b.values.at(v);
+    CHECK(std::abs(x.x() - y.x()) + std::abs(x.y() - y.y()) + std::abs(x.z() - y.z()) < 1e-9);
+  }
+  // the stripes: with the smoothed boundary the sheets normal to it are read at each edge's first
+  // vertex along the boundary, through the edge's matching where that is not the edge's first
+  // vertex in its orientation; at that length they are the sheets read edge by edge, and so are
+  // the corners and the quads (a hemisphere: four cones, so that the matchings are not all 0)
+  const Mesh hemisphere = make_case<Mesh>("hemisphere.off");
+  const auto field = boundary_cross_field(hemisphere);
+  const double h = std::sqrt(surface_area(hemisphere) / 800.);
+  std::vector<std::vector<std::size_t>> corners;
+  std::vector<Quad_mesh> quads;
+  for(double length : {0., 1e-9 * h})
+  {
+    SD::Branched_stripe_parameterizer bsp(hemisphere, SD::parameters::symmetry_order(4));
+    bsp.set_lattice_branch_points(true);
+    bsp.set_boundary_on_level_lines(true, length);
+    bsp.set_field(field.map(), 1. / h);
+    corners.push_back(bsp.boundary_corners());
+    quads.emplace_back();
+    SD::extract_field_aligned_quads(bsp, quads.back());
+  }
+  CHECK(corners[0] == corners[1]);
+  // (the sheets of the representatives are gauged along a spanning tree, and a field along the
+  // boundary leaves every boundary edge's matching 0: turning the representatives of every other
+  // boundary vertex by a quarter turn makes the matchings there 1 or 3, and the sheets read
+  // through them must be those read at the edges' first vertices, as before)
+  {
+    const SDI::Mesh_indices<Mesh> idx(hemisphere);
+    const auto vpm = get(CGAL::vertex_point, hemisphere);
+    const SDI::Discrete_connection connection = SDI::levi_civita_connection(idx, vpm);
+    const SDI::Topology topology = SDI::compute_topology(idx);
+    SDI::Direction_field_cover cover = SDI::direction_field_cover(
+      idx, connection, topology.tree, SDI::field_angles(idx, connection.frames, field.map()), 4);
+    const std::vector<std::uint8_t> before = SDI::boundary_normal_sheets(idx, topology, connection.frames, cover);
+    std::vector<bool> turned(idx.number_of_vertices(), false);
+    std::size_t k = 0;
+    for(std::size_t hb : topology.boundary.loops.front())
+      if(++k % 2 == 0)
+      {
+        const std::size_t v = idx.target_index(idx.halfedge(hb));
+        turned[v] = true;
+        cover.angle[v] += SDI::pi / 2.;
+      }
+    std::size_t shifted = 0;
+    for(std::size_t e = 0; e < idx.number_of_edges(); ++e)
+    {
+      const auto [i, j] = idx.edge_vertices(e);
+      cover.matching[e] = (cover.matching[e] + (turned[i] ? 1 : 0) - (turned[j] ? 1 : 0) + 4) % 4;
+    }
+    const std::vector<std::uint8_t> after =
+      SDI::boundary_normal_sheets(idx, topology, connection.frames, cover, std::vector<double>(idx.number_of_vertices(), 0.));
+    for(std::size_t hb : topology.boundary.loops.front())
+    {
+      const std::size_t e = idx.edge_index(idx.halfedge(hb));
+      const std::size_t i = idx.source_index(idx.oriented_halfedge(e));
+      // a turned first vertex: its sheet a is the old sheet a + 1, of the other family
+      const std::uint8_t expected = turned[i] ? std::uint8_t(((before[e] & 1u) << 1) | ((before[e] >> 1) & 1u)) : before[e];
+      CHECK(after[e] == expected);
+      shifted += cover.matching[e] != 0 && idx.source_index(opposite(idx.halfedge(hb), hemisphere)) != i ? 1 : 0;
+    }
+    CHECK(shifted > 10);
+  }
+  REQUIRE(num_vertices(quads[0]) == num_vertices(quads[1]));
+  REQUIRE(num_faces(quads[0]) == num_faces(quads[1]));
+  for(auto v : vertices(quads[0]))
+    CHECK((eigen(quads[0].point(v)) - eigen(quads[1].point(v))).norm() < 1e-9 * h);
 }
 
 TEMPLATE_TEST_CASE("Field-aligned quads on an open tube: two boundary loops, no cone, the loops' windings coupled",

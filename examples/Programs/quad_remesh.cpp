@@ -47,8 +47,8 @@ const char* usage =
   "  --method field: the lines of the two stripe families of a cross field with its cones on the\n"
   "  lattice: pure quads whose irregular vertices are exactly the field's cones (valence 3 at +1/4,\n"
   "  5 at -1/4). On a mesh with a boundary the field follows it and every boundary loop is a line of\n"
-  "  the quads (valence 3 along it; 2 at a convex corner, 4 at a concave one); a boundary that\n"
-  "  zigzags at the scale of h fails. Where the lines do not form such a mesh, h is tried 5%\n"
+  "  the quads (valence 3 along it; 2 at a convex corner, 4 at a concave one), its direction\n"
+  "  smoothed at h (--boundary-smoothing). Where the lines do not form such a mesh, h is tried 5%\n"
   "  smaller and 5% larger, then the input is remeshed isotropically at edge length h (its triangles'\n"
   "  shapes can fold the map: decimated meshes) and the whole tried again, before the program fails.\n"
   "options of both methods:\n"
@@ -68,6 +68,10 @@ const char* usage =
   "                        trivial connection with exactly these cones (they must sum to the Euler\n"
   "                        characteristic; with a boundary, less its corners: the message says how\n"
   "                        much; not in a face with an edge on the boundary)\n"
+  "  --boundary-smoothing S  with a boundary, the field and the quads follow its direction smoothed\n"
+  "                        at S h (default 1, S in [0, 10]; 0: every boundary edge): a boundary that\n"
+  "                        zigzags finer than that is straightened, corners where it turns by 67.5\n"
+  "                        degrees or more within S h are kept\n"
   "  --stiffening-rounds R rounds of local stiffening where the map folds (default 10, R in [0, 64])\n"
   "  --no-input-remeshing  fail where the input's own triangles do not give the quads (given cones\n"
   "                        go, on the remeshed input, to the faces nearest theirs)\n"
@@ -109,7 +113,8 @@ struct Options
   std::string input, output, picture, up = "+Y", solver = "default", method = "harmonic", field = "auto";
   std::vector<long> minima, maxima;
   std::map<long, int> cones; // --singularity FACE:K/4
-  double edge_length = 0., target_faces = 0., curvature_adaptation = 0., cone_distance = 1., sharp_angle = 0.;
+  double edge_length = 0., target_faces = 0., curvature_adaptation = 0., cone_distance = 1., sharp_angle = 0.,
+         boundary_smoothing = 1.;
   int stiffening_rounds = 10;
   bool protrusions = true, intrinsic_delaunay = false, quad_poles = true, spectacles = true,
        all_quads = true, feature_snapping = true, input_remeshing = true;
@@ -143,6 +148,8 @@ Options parse(int argc, char** argv)
                 if(!o.cones.emplace(f, int(k)).second)
                   throw program::Usage_error("--singularity: face " + std::to_string(f) + " is given more than once");
               })
+    .value("--boundary-smoothing",
+           [&](const std::string& v) { o.boundary_smoothing = program::parse_double(v, "--boundary-smoothing", 0., 10.); })
     .value("--sharp-angle", [&](const std::string& v) { o.sharp_angle = program::parse_double(v, "--sharp-angle", 0., 180.); })
     .value("--stiffening-rounds",
            [&](const std::string& v) { o.stiffening_rounds = int(program::parse_integer(v, "--stiffening-rounds", 0, 64)); })
@@ -167,7 +174,8 @@ Options parse(int argc, char** argv)
   if(p.given("--edge-length") && p.given("--target-faces"))
     throw program::Usage_error("give --edge-length or --target-faces, not both");
   for(const char* option :
-      {"--field", "--cone-distance", "--singularity", "--stiffening-rounds", "--no-input-remeshing", "--sharp-angle"})
+      {"--field", "--cone-distance", "--singularity", "--stiffening-rounds", "--no-input-remeshing", "--sharp-angle",
+       "--boundary-smoothing"})
     if(p.given(option) && o.method != "field")
       throw program::Usage_error(std::string(option) + " applies to --method field");
   for(const char* option : {"--min", "--max", "--no-protrusions", "--curvature-adaptation", "--intrinsic-delaunay",
@@ -348,14 +356,21 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
   auto sharp = mesh.add_property_map<Mesh::Edge_index, bool>("e:sharp", false).first;
   if(o.sharp_angle > 0.)
     std::printf("creases: %zu edges\n", program::detect_creases(mesh, o.sharp_angle, sharp));
-  auto compute = [&mesh, closed, sharp](bool aligned, auto out, auto out_cones, auto solver) {
+  // with a boundary, the field follows its direction smoothed at h: what zigzags finer than the
+  // quads is straightened, its corners are kept (the stripes read it at the same length)
+  const double smoothing = o.boundary_smoothing * h;
+  if(!closed)
+    std::printf("boundary: the field and the quads follow its direction smoothed at %.4g (%g h)\n", smoothing,
+                o.boundary_smoothing);
+  auto compute = [&mesh, closed, sharp, smoothing](bool aligned, auto out, auto out_cones, auto solver) {
     SD::smoothest_direction_field(
       mesh, out,
       P::symmetry_order(4, P::curvature_alignment_weight(
                              aligned ? 0.1 : 0.,
                              P::field_boundary_condition(
                                closed ? SD::Direction_field_boundary::free : SD::Direction_field_boundary::tangent,
-                               P::unit_length_iterations(30, CGAL::parameters::sparse_linear_solver(solver).edge_is_constrained_map(sharp))))));
+                               P::boundary_smoothing_length(smoothing,
+                               P::unit_length_iterations(30, CGAL::parameters::sparse_linear_solver(solver).edge_is_constrained_map(sharp)))))));
     return SD::direction_field_singularities(mesh, out, out_cones, P::symmetry_order(4));
   };
   // --field auto: the principal field is independent of the rest, made on a second thread with a
@@ -371,7 +386,8 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
   SD::Trivial_connection tc(
     mesh, P::symmetry_order(4, P::field_boundary_condition(closed ? SD::Direction_field_boundary::free
                                                                   : SD::Direction_field_boundary::tangent,
-                                                           CGAL::parameters::sparse_linear_solver(traits))));
+                                                           P::boundary_smoothing_length(smoothing,
+                                                           CGAL::parameters::sparse_linear_solver(traits)))));
   if(!given_cones.empty())
   {
     for(const auto& [f, k] : given_cones)
@@ -465,7 +481,8 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
         P::target_edge_length(spacing,
                               P::stiffening_rounds(o.stiffening_rounds,
                                                    P::feature_snapping(o.feature_snapping,
-                                                                       CGAL::parameters::sparse_linear_solver(traits))))
+                                                                       P::boundary_smoothing_length(smoothing,
+                                                                       CGAL::parameters::sparse_linear_solver(traits)))))
           .visitor([](const SD::Field_aligned_quads_round& round) {
             // progress: on a large mesh a round takes seconds
             std::printf("  %s %zu: folds in %zu faces; %s (%.2f s)\n", round.round == 0 ? "first map," : "round",

@@ -11,6 +11,7 @@
 #include <CGAL/Surface_design/exceptions.h>
 #include <CGAL/Surface_design/Field_aligned_parameterizer.h>
 #include <CGAL/Surface_design/internal/Core/angles.h>
+#include <CGAL/Surface_design/internal/Core/boundary_smoothing.h>
 #include <CGAL/Surface_design/internal/Core/Branched_one_form_solver.h>
 #include <CGAL/Surface_design/internal/Core/direction_field_cover.h>
 #include <CGAL/Surface_design/internal/Core/discrete_connection.h>
@@ -433,13 +434,17 @@ public:
   /// Whether every boundary loop lies on a level-0 line of the family normal to it (alpha = 0
   /// modulo 2 pi at its vertices, no stripe crossing it): the field must be normal to the
   /// boundary for some family (within 45 degrees) on every boundary edge. Factors again when a
-  /// field is set.
-  /// \throws Invalid_constraints where the field runs along the boundary
-  void set_boundary_on_level_lines(bool on)
+  /// field is set. With `smoothing_length` L > 0 the family is read against the boundary's
+  /// direction smoothed at L, as the field's `boundary_smoothing_length(L)` (give the same L).
+  /// \throws Invalid_constraints where the field runs along the boundary, Invalid_parameter if L < 0
+  void set_boundary_on_level_lines(bool on, double smoothing_length = 0.)
   {
-    const bool was = m_boundary_level;
-    m_boundary_level = on;
-    if(!has_field() || was == on)
+    std::vector<double> old_offset = std::exchange(
+      m_boundary_offset, internal::require_nonnegative("smoothing_length", smoothing_length) > 0. && on
+                           ? internal::smoothed_boundary(*m_idx, m_vpm, m_topology->boundary, smoothing_length).offset
+                           : std::vector<double>());
+    const bool was = std::exchange(m_boundary_level, on);
+    if(!has_field() || (was == on && old_offset == m_boundary_offset))
       return;
     try
     {
@@ -449,6 +454,7 @@ public:
     catch(...)
     {
       m_boundary_level = was;
+      m_boundary_offset = std::move(old_offset);
       throw;
     }
   }
@@ -816,8 +822,9 @@ private:
   // With boundary_on_level_lines(): the sheets normal to the boundary (cover_constraints.h)
   std::vector<std::uint8_t> level_sheets(const internal::Direction_field_cover& cover) const
   {
-    return m_boundary_level ? internal::boundary_normal_sheets(*m_idx, *m_topology, m_connection.frames, cover)
-                            : std::vector<std::uint8_t>();
+    return m_boundary_level
+             ? internal::boundary_normal_sheets(*m_idx, *m_topology, m_connection.frames, cover, m_boundary_offset)
+             : std::vector<std::uint8_t>();
   }
 
   // The stripes' weights (stripe_weights.h): per edge, and per branch face its spokes'
@@ -959,6 +966,7 @@ private:
   std::vector<double> m_stiffness; // per face (stiffen()), empty: all 1
   bool m_keep_stiffening = false;  // by set_field()
   bool m_boundary_level = false;    // boundary loops on level-0 lines
+  std::vector<double> m_boundary_offset; // the smoothed boundary's offsets (empty: edge by edge)
   bool m_own_analysis_cache = false;
   std::shared_ptr<const Indices> m_idx;
   std::shared_ptr<const internal::Topology> m_topology;

@@ -11,6 +11,7 @@
 #include <CGAL/Surface_design/direction_fields.h>
 #include <CGAL/Surface_design/exceptions.h>
 #include <CGAL/Surface_design/internal/Core/angles.h>
+#include <CGAL/Surface_design/internal/Core/boundary_smoothing.h>
 #include <CGAL/Surface_design/internal/Core/discrete_connection.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
@@ -88,6 +89,16 @@ namespace Surface_design {
 /// once more). The windings around handles are still chosen for the problem without the boundary
 /// condition.
 ///
+/// With `boundary_smoothing_length(L)` the field follows the boundary's direction smoothed at L
+/// instead (`smoothest_direction_field()` takes the same parameter): a boundary that zigzags at a
+/// scale below L (a cut through a triangulation, a staircase) is straightened, and its corners are
+/// kept where it turns by 67.5 degrees or more within L. The field's rescaled angle at a boundary
+/// vertex is then the constant plus n times the smoothed direction's angle from the boundary edge
+/// leaving it, y on a boundary edge the transport's omega plus n times the smoothed direction's
+/// turn along it (the multiple of 2 pi that turns the field least: a quarter turn at a corner is
+/// none for a cross field), and each loop's winding the sum of those, no longer 0. The indices
+/// then sum to the corners that the smoothed direction keeps.
+///
 /// **Consistency.** On a closed component the indices must sum to its Euler characteristic
 /// (Poincaré-Hopf); on a component with boundary any sum is allowed (the boundary holonomies
 /// absorb it), except with the field along the boundary: then they must sum to the Euler
@@ -155,6 +166,13 @@ public:
   ///     \cgalParamType{`Direction_field_boundary`}
   ///     \cgalParamDefault{`Direction_field_boundary::free`}
   ///     \cgalParamExtra{throws `Invalid_parameter` for another value}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{boundary_smoothing_length}
+  ///     \cgalParamDescription{with `tangent` or `normal`: the length L at which the boundary's direction is
+  ///                           smoothed before the field follows it (see "Along the boundary"; 0: every edge)}
+  ///     \cgalParamType{`double`}
+  ///     \cgalParamDefault{`0`}
+  ///     \cgalParamExtra{throws `Invalid_parameter` if it is negative or not finite}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{vertex_index_map}
   ///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in
@@ -232,11 +250,26 @@ public:
     if(m_boundary != Direction_field_boundary::free && m_boundary != Direction_field_boundary::tangent &&
        m_boundary != Direction_field_boundary::normal)
       throw Invalid_parameter("field_boundary_condition", "not a Direction_field_boundary enumerator");
+    const double smoothing = internal::require_nonnegative(
+      "boundary_smoothing_length",
+      CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::boundary_smoothing_length), 0.));
     if(m_boundary != Direction_field_boundary::free && m_solver.number_of_boundary_loops() > 0)
     {
       SolverTraits traits = internal::class_solver_traits<SolverTraits>(np);
       m_aligned.emplace(idx, m_solver.topology(), m_solver.weights(), internal::new_solver_like(traits));
+      if(smoothing > 0.)
+        follow_smoothed_boundary(tm, np, smoothing);
     }
+    m_boundary_winding.assign(m_solver.number_of_boundary_loops(), 0);
+    if(m_aligned)
+      for(std::size_t b = 0; b < m_boundary_winding.size(); ++b)
+      {
+        const std::size_t l = m_solver.number_of_generator_loops() + b;
+        double sum = 0.;
+        for(std::size_t h : m_solver.oriented_loop(l))
+          sum += idx.orientation_sign(idx.halfedge(h)) * m_aligned->boundary_y(idx.edge_index(idx.halfedge(h)));
+        m_boundary_winding[b] = int(std::lround(sum / internal::two_pi));
+      }
     const auto vpm = internal::class_vertex_point_map<VertexPointMap>(tm, np);
     m_centre.resize(idx.number_of_faces());
     for(std::size_t f = 0; f < m_centre.size(); ++f)
@@ -448,7 +481,7 @@ public:
     std::vector<std::optional<int>> windings(m_solver.number_of_loops());
     if(m_aligned)
       for(std::size_t l = m_solver.number_of_generator_loops(); l < windings.size(); ++l)
-        windings[l] = 0;
+        windings[l] = m_boundary_winding[l - m_solver.number_of_generator_loops()];
     typename Solver::Solution s = m_solver.solve(m_omega, k, windings);
     if(m_aligned)
     {
@@ -467,7 +500,7 @@ public:
         const std::size_t v = m_solver.indices().source_index(m_solver.indices().halfedge(loop.front()));
         const std::size_t c = topo.components.vertex_component[v];
         if(!done[c])
-          shift[c] = value - alpha[v];
+          shift[c] = value + m_aligned->alpha_offset(v) - alpha[v];
         done[c] = true;
       }
       for(std::size_t v = 0; v < alpha.size(); ++v)
@@ -499,6 +532,10 @@ public:
     for(std::size_t f = 0; f < m_offset.size(); ++f)
       if(topo.components.face_component[f] == c)
         sum -= m_offset[f];
+    // (Stokes: the boundary windings, 0 unless the boundary is smoothed)
+    for(std::size_t b = 0; b < m_boundary_winding.size(); ++b)
+      if(m_solver.loop_component(m_solver.number_of_generator_loops() + b) == c)
+        sum += m_boundary_winding[b];
     return sum;
   }
 
@@ -561,6 +598,30 @@ public:
   /// @}
 
 private:
+  // The field along the boundary smoothed at `length` (`internal::smoothed_boundary()`): at a
+  // boundary vertex alpha = c + n times the smoothed direction's offset, and y on a boundary edge
+  // (from vertex i to j, the surface on the left) the transport's omega plus n times the smoothed
+  // direction's turn, the multiple of 2 pi taken that turns the field least (a corner's quarter
+  // turn is no turn of a cross field)
+  template <class NamedParameters>
+  void follow_smoothed_boundary(const TriangleMesh& tm, const NamedParameters& np, double length)
+  {
+    const auto& idx = m_solver.indices();
+    const internal::Smoothed_boundary sb = internal::smoothed_boundary(
+      idx, internal::class_vertex_point_map<VertexPointMap>(tm, np), m_solver.topology().boundary, length);
+    std::vector<double> y(idx.number_of_edges(), 0.), alpha(idx.number_of_vertices(), 0.);
+    for(std::size_t v = 0; v < alpha.size(); ++v)
+      alpha[v] = m_n * sb.offset[v];
+    for(const auto& loop : m_solver.topology().boundary.loops)
+      for(std::size_t h : loop)
+      {
+        const auto inner = opposite(idx.halfedge(h), tm); // from vertex i to j, the surface on its left
+        const std::size_t e = idx.edge_index(inner);
+        y[e] = m_omega[e] + idx.orientation_sign(inner) * internal::wrap_angle(m_n * sb.turning[e]);
+      }
+    m_aligned->set_boundary_values(std::move(y), std::move(alpha));
+  }
+
   template <class NamedParameters>
   static int checked_symmetry_order(const NamedParameters& np)
   {
@@ -792,6 +853,7 @@ private:
   std::vector<double> m_largest_angle;   // of every face, radians
   double m_rotation = 0.;
   Direction_field_boundary m_boundary = Direction_field_boundary::free;
+  std::vector<int> m_boundary_winding; // per boundary loop: y's winding along it (field along the boundary)
   // with the field along the boundary, on a mesh with one
   std::optional<internal::Boundary_aligned_one_form<Indices, SolverTraits>> m_aligned;
   bool m_solved = false;

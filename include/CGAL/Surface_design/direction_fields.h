@@ -9,6 +9,7 @@
 
 #include <CGAL/Surface_design/exceptions.h>
 #include <CGAL/Surface_design/internal/Core/angles.h>
+#include <CGAL/Surface_design/internal/Core/boundary_smoothing.h>
 #include <CGAL/Surface_design/internal/Core/dec.h>
 #include <CGAL/Surface_design/internal/Core/discrete_connection.h>
 #include <CGAL/Surface_design/internal/Core/geometry.h>
@@ -149,6 +150,18 @@ struct Smoothest_direction_field_result
 ///     \cgalParamType{`Direction_field_boundary`}
 ///     \cgalParamDefault{`Direction_field_boundary::free`}
 ///     \cgalParamExtra{throws `Invalid_parameter` if it is not an enumerator of `Direction_field_boundary`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{boundary_smoothing_length}
+///     \cgalParamDescription{with `tangent` or `normal`: the length L at which the boundary's direction is
+///                           smoothed before the field follows it. 0 follows every boundary edge; L > 0
+///                           straightens what zigzags at a scale below L (a cut through a triangulation, a
+///                           staircase) and keeps the corners where the boundary turns by 67.5 degrees or more
+///                           within L (see `Trivial_connection`, which takes the same parameter; the quads of
+///                           `field_aligned_quad_remeshing()` want the same L as their field, about their edge
+///                           length)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`0`}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is negative or not finite}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{edge_is_constrained_map}
 ///     \cgalParamDescription{the feature edges (creases, e.g. from
@@ -333,6 +346,7 @@ Smoothest_direction_field_result smoothest_direction_field(const TriangleMesh& t
     choose_parameter(get_parameter(np, internal_np::field_boundary_condition), Direction_field_boundary::free);
   const double alignment = choose_parameter(get_parameter(np, internal_np::curvature_alignment_weight), 0.);
   const bool normalize = choose_parameter(get_parameter(np, internal_np::normalize_field), true);
+  const double smoothing = choose_parameter(get_parameter(np, internal_np::boundary_smoothing_length), 0.);
   const int flow_steps = choose_parameter(get_parameter(np, internal_np::unit_length_iterations), 0);
   const double tolerance = choose_parameter(get_parameter(np, internal_np::eigen_tolerance), 1e-6);
   const std::size_t max_iterations =
@@ -340,6 +354,7 @@ Smoothest_direction_field_result smoothest_direction_field(const TriangleMesh& t
 
   internal::check_symmetry_order(n);
   internal::require_nonnegative("curvature_alignment_weight", alignment);
+  internal::require_nonnegative("boundary_smoothing_length", smoothing);
   internal::require_in_range("eigen_tolerance", tolerance, 0., 1., true, true);
   internal::require_at_least("number_of_iterations", max_iterations, std::size_t(1));
   if(flow_steps < 0 || flow_steps > 1000)
@@ -369,6 +384,8 @@ Smoothest_direction_field_result smoothest_direction_field(const TriangleMesh& t
   if(boundary != Direction_field_boundary::free)
   {
     const double direction = boundary == Direction_field_boundary::tangent ? 0. : internal::pi / 2.;
+    // the boundary's direction, smoothed at `boundary_smoothing_length` (0: edge by edge)
+    const std::vector<double> offset = internal::smoothed_boundary(idx, vpm, loops, smoothing).offset;
     for(const auto& loop : loops.loops)
       for(std::size_t h : loop)
       {
@@ -377,8 +394,8 @@ Smoothest_direction_field_result smoothest_direction_field(const TriangleMesh& t
         const std::size_t v = idx.target_index(idx.halfedge(h));
         fixed[v] = true;
         eigen_component[comps.vertex_component[v]] = false;
-        fixed_value[Eigen::Index(2 * v)] = std::cos(n * direction);
-        fixed_value[Eigen::Index(2 * v + 1)] = std::sin(n * direction);
+        fixed_value[Eigen::Index(2 * v)] = std::cos(n * (direction + offset[v]));
+        fixed_value[Eigen::Index(2 * v + 1)] = std::sin(n * (direction + offset[v]));
       }
   }
   // feature edges: one direction along them at their vertices (see `edge_is_constrained_map`)

@@ -392,6 +392,15 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{boundary_smoothing_length}
+///     \cgalParamDescription{the length at which `field` followed the boundary smoothed
+///                           (`smoothest_direction_field()` or `Trivial_connection` with the same parameter):
+///                           the family normal to the boundary is read against the same smoothed direction
+///                           (`Branched_stripe_parameterizer::set_boundary_on_level_lines()`)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`0` (edge by edge)}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is negative or not finite}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{edge_is_constrained_map}
 ///     \cgalParamDescription{the creases, which `field` should follow, as in `extract_field_aligned_quads()`}
 ///     \cgalParamType{a readable edge -> `bool` map}
@@ -444,9 +453,11 @@ Field_aligned_quad_remeshing_result field_aligned_quad_remeshing(const TriangleM
     throw Invalid_parameter("target_edge_length", "must be finite and positive and give at most 10^7 quads, got " +
                                                     std::to_string(h));
   // (the switches first: set_field() then factors once)
+  const double smoothing = internal::require_nonnegative(
+    "boundary_smoothing_length", choose_parameter(get_parameter(np, internal_np::boundary_smoothing_length), 0.));
   bsp.set_lattice_branch_points(true);
   if(bsp.topology().boundary.size() != 0)
-    bsp.set_boundary_on_level_lines(true);
+    bsp.set_boundary_on_level_lines(true, smoothing);
   bsp.set_field(field, 1. / h); // throws where the field runs along the boundary
   bsp.solve();
   // (the parameters it reads: the rounds and the visitor)

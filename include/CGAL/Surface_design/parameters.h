@@ -25,6 +25,7 @@ enum area_tolerance_t { area_tolerance };
 enum symmetry_order_t { symmetry_order };
 enum curvature_alignment_weight_t { curvature_alignment_weight };
 enum field_boundary_condition_t { field_boundary_condition };
+enum boundary_smoothing_length_t { boundary_smoothing_length };
 enum normalize_field_t { normalize_field };
 enum unit_length_iterations_t { unit_length_iterations };
 enum eigen_tolerance_t { eigen_tolerance };
@@ -104,6 +105,7 @@ CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(area_tolerance)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(symmetry_order)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(curvature_alignment_weight)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(field_boundary_condition)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(boundary_smoothing_length)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(normalize_field)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(unit_length_iterations)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(eigen_tolerance)

@@ -202,10 +202,14 @@ Boundary_level_lines boundary_level_lines(const Indices& idx, const Topology& to
 
 /// Per boundary edge i -> j (its orientation), the bit mask of the sheets whose direction at i is
 /// within 45 degrees of the edge's normal: the sheets whose level lines can follow the boundary.
+/// With `offset` (`Smoothed_boundary::offset`, per vertex), the normal of the smoothed boundary
+/// instead, at the edge's first vertex along the boundary (the surface on the left), whose
+/// sheets are those of i through the matching.
 /// \throws Invalid_constraints where no sheet is (the field runs along the boundary)
 template <class Indices>
 std::vector<std::uint8_t> boundary_normal_sheets(const Indices& idx, const Topology& topology,
-                                                 const Vertex_frames& frames, const Direction_field_cover& cover)
+                                                 const Vertex_frames& frames, const Direction_field_cover& cover,
+                                                 const std::vector<double>& offset = {})
 {
   std::vector<std::uint8_t> mask(idx.number_of_edges(), 0);
   for(const auto& loop : topology.boundary.loops)
@@ -213,10 +217,20 @@ std::vector<std::uint8_t> boundary_normal_sheets(const Indices& idx, const Topol
     {
       const std::size_t e = idx.edge_index(idx.halfedge(h));
       const auto oriented = idx.oriented_halfedge(e);
-      const double edge_angle = frames.angle[idx.index(oriented)];
+      // the vertex and angle the sheets are read at, and the shift of their numbering from i's
+      std::size_t v = idx.source_index(oriented);
+      double edge_angle = frames.angle[idx.index(oriented)];
+      int shift = 0;
+      if(!offset.empty())
+      {
+        const auto inner = opposite(idx.halfedge(h), idx.mesh()); // leaving v along the boundary
+        v = idx.source_index(inner);
+        edge_angle = frames.angle[idx.index(inner)] + offset[v];
+        shift = v == idx.source_index(oriented) ? 0 : cover.matching[e];
+      }
       for(int a = 0; a < cover.d; ++a)
       {
-        const double direction = cover.angle[idx.source_index(oriented)] + double(a) * two_pi / double(cover.n);
+        const double direction = cover.angle[v] + double((a + shift) % cover.n) * two_pi / double(cover.n);
         if(std::abs(std::sin(direction - edge_angle)) > std::sqrt(0.5))
           mask[e] = std::uint8_t(mask[e] | (1u << a));
       }

@@ -135,6 +135,18 @@ public:
       }
   }
 
+  /// A boundary that the field follows smoothed (`smoothed_boundary()`): y on the boundary edges
+  /// (`boundary_y`, per edge in its orientation, the multiples of 2 pi making each loop's winding)
+  /// and alpha's offset from the constant c at the boundary vertices (`alpha_offset`, per vertex)
+  /// instead of 0.
+  void set_boundary_values(std::vector<double> boundary_y, std::vector<double> alpha_offset)
+  {
+    m_boundary_y = std::move(boundary_y);
+    m_alpha_offset = std::move(alpha_offset);
+  }
+  double boundary_y(std::size_t e) const { return m_boundary_y.empty() ? 0. : m_boundary_y[e]; }
+  double alpha_offset(std::size_t v) const { return m_alpha_offset.empty() ? 0. : m_alpha_offset[v]; }
+
   /// Whether vertex v lies on the boundary.
   bool on_boundary(std::size_t v) const { return m_loop_of_vertex[v] != npos; }
 
@@ -144,7 +156,7 @@ public:
   std::size_t sharp_turn(const std::vector<double>& omega, double bound) const
   {
     for(std::size_t e = 0; e < omega.size(); ++e)
-      if(m_border_edge[e] && !(std::abs(omega[e]) <= bound))
+      if(m_border_edge[e] && !(std::abs(omega[e] - boundary_y(e)) <= bound))
         return e;
     return npos;
   }
@@ -165,9 +177,11 @@ public:
       for(std::size_t k = 0; k + 1 < loop.size(); ++k)
       {
         const auto hd = idx.halfedge(loop[k]);
-        known[idx.target_index(hd)] = known[idx.source_index(hd)] - idx.orientation_sign(hd) * y[idx.edge_index(hd)];
+        const std::size_t e = idx.edge_index(hd);
+        known[idx.target_index(hd)] = known[idx.source_index(hd)] + idx.orientation_sign(hd) * (boundary_y(e) - y[e]);
       }
-      phase[l] = alpha[idx.source_index(idx.halfedge(loop.front()))];
+      const std::size_t first = idx.source_index(idx.halfedge(loop.front()));
+      phase[l] = alpha[first] - alpha_offset(first);
     }
     // each loop's constant, modulo 2 pi, so that alpha + g has the reference loop's phase on it
     std::vector<double> fraction(m_loops, 0.);
@@ -210,7 +224,7 @@ public:
         y[e] += g[j] - g[i];
       }
       else if(m_aligned[topology.components.vertex_component[idx.edge_vertices(e).first]])
-        y[e] = 0.; // a boundary edge
+        y[e] = boundary_y(e); // a boundary edge
   }
 
 private:
@@ -240,7 +254,7 @@ private:
     return g;
   }
 
-  std::vector<double> m_weight;
+  std::vector<double> m_weight, m_boundary_y, m_alpha_offset;
   mutable Factored_system<SolverTraits> m_system;
   std::vector<std::size_t> m_node, m_loop_of_vertex, m_loop_unknown, m_reference_loop;
   std::vector<bool> m_aligned, m_free_edge, m_border_edge;
