@@ -48,7 +48,7 @@ const char* usage =
   "  lattice: pure quads whose irregular vertices are exactly the field's cones (valence 3 at +1/4,\n"
   "  5 at -1/4). On a mesh with a boundary the field follows it and every boundary loop is a line of\n"
   "  the quads (valence 3 along it; 2 at a convex corner, 4 at a concave one), its direction\n"
-  "  smoothed at h (--boundary-smoothing). Where the lines do not form such a mesh, h is tried 5%\n"
+  "  smoothed at 2h (--boundary-smoothing). Where the lines do not form such a mesh, h is tried 5%\n"
   "  smaller and 5% larger, then the input is remeshed isotropically at edge length h (its triangles'\n"
   "  shapes can fold the map: decimated meshes) and the whole tried again, before the program fails.\n"
   "options of both methods:\n"
@@ -69,7 +69,7 @@ const char* usage =
   "                        characteristic; with a boundary, less its corners: the message says how\n"
   "                        much; not in a face with an edge on the boundary)\n"
   "  --boundary-smoothing S  with a boundary, the field and the quads follow its direction smoothed\n"
-  "                        at S h (default 1, S in [0, 10]; 0: every boundary edge): a boundary that\n"
+  "                        at S h (default 2, S in [0, 10]; 0: every boundary edge): a boundary that\n"
   "                        zigzags finer than that is straightened, corners where it turns by 67.5\n"
   "                        degrees or more within S h are kept\n"
   "  --stiffening-rounds R rounds of local stiffening where the map folds (default 10, R in [0, 64])\n"
@@ -114,7 +114,7 @@ struct Options
   std::vector<long> minima, maxima;
   std::map<long, int> cones; // --singularity FACE:K/4
   double edge_length = 0., target_faces = 0., curvature_adaptation = 0., cone_distance = 1., sharp_angle = 0.,
-         boundary_smoothing = 1.;
+         boundary_smoothing = 2.;
   int stiffening_rounds = 10;
   bool protrusions = true, intrinsic_delaunay = false, quad_poles = true, spectacles = true,
        all_quads = true, feature_snapping = true, input_remeshing = true;
@@ -356,8 +356,9 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
   auto sharp = mesh.add_property_map<Mesh::Edge_index, bool>("e:sharp", false).first;
   if(o.sharp_angle > 0.)
     std::printf("creases: %zu edges\n", program::detect_creases(mesh, o.sharp_angle, sharp));
-  // with a boundary, the field follows its direction smoothed at h: what zigzags finer than the
-  // quads is straightened, its corners are kept (the stripes read it at the same length)
+  // with a boundary, the field follows its direction smoothed at 2h: what zigzags finer than the
+  // quads is straightened, its corners are kept (the stripes read it at the same length; at h the
+  // camel head's neck cut, whose teeth are about h long, keeps corners at most targets)
   const double smoothing = o.boundary_smoothing * h;
   if(!closed)
     std::printf("boundary: the field and the quads follow its direction smoothed at %.4g (%g h)\n", smoothing,

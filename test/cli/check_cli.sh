@@ -426,8 +426,8 @@ if ! grep -q "face 1549 holds a cone of -1/4 and has an angle of 179 degrees" "$
 fi
 # a boundary that zigzags (the camel head's neck cut: its boundary turns by up to 90 degrees at
 # single vertices, finer than the quads), which QuadriFlow refuses: the field and the quads follow
-# it smoothed at h, its only corners kept; before the smoothing this failed on the remeshed input
-# too (the library's test shows the same on a zigzag square, which fails edge by edge)
+# it smoothed at 2h, its corners kept; before the smoothing this failed on the remeshed input too
+# (the library's test shows the same on a zigzag square, which fails edge by edge)
 accept quad_remesh "$DATA/camelhead.off" --method field --target-faces 2000 --output "$O/camel.off"
 if ! grep -q "100.0% quads" "$WORK/stdout" ||
    ! grep -q "Euler characteristic 1, 1 boundary loops, 1 components (as the input's)" "$WORK/stdout"; then
