@@ -385,7 +385,8 @@ Smoothest_direction_field_result smoothest_direction_field(const TriangleMesh& t
   {
     const double direction = boundary == Direction_field_boundary::tangent ? 0. : internal::pi / 2.;
     // the boundary's direction, smoothed at `boundary_smoothing_length` (0: edge by edge)
-    const std::vector<double> offset = internal::smoothed_boundary(idx, vpm, loops, smoothing).offset;
+    const std::vector<double> offset = smoothing > 0. ? internal::smoothed_boundary(idx, vpm, loops, smoothing).offset
+                                                      : std::vector<double>(nv, 0.);
     for(const auto& loop : loops.loops)
       for(std::size_t h : loop)
       {

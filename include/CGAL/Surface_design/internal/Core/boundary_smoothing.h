@@ -163,7 +163,6 @@ Smoothed_boundary smoothed_boundary(const Indices& idx, const VertexPointMap& vp
       out.corner[vertex[c]] = true;
     out.corners += corners.size();
     // the smoothed direction at each vertex, over the piece of its edge
-    std::vector<double> smooth(m);
     for(std::size_t k = 0; k < m; ++k)
     {
       auto [lo, hi] = window(mid, s[m + k], m + k);
@@ -176,8 +175,7 @@ Smoothed_boundary smoothed_boundary(const Indices& idx, const VertexPointMap& vp
         lo = (std::max)(lo, first);
         hi = (std::min)(hi, last);
       }
-      smooth[k] = hi > lo ? (sum_len_theta[hi] - sum_len_theta[lo]) / (sum_len[hi] - sum_len[lo]) : theta[m + k];
-      out.offset[vertex[k]] = smooth[k] - theta[m + k];
+      out.offset[vertex[k]] = (hi > lo ? mean_theta(lo, hi) : theta[m + k]) - theta[m + k];
     }
     // the smoothed direction's turn along edge k (vertex k to k + 1), relative to the transport
     // along it, which turns by -tau there
