@@ -151,46 +151,165 @@ inline Supernodal_solve_split supernodal_solve_split(const Supernodal_symbolic& 
   return split;
 }
 
-/// L y = b within supernode s of the factor whose panels are `values`; updates of rows at or past
-/// `top_column` go to `collected` (subtracted from collected[row - top_column]), the others to y.
-template <class Scalar>
-void supernodal_forward(const Supernodal_symbolic& sym, const Scalar* values, int s, Scalar* y, Scalar* collected,
-                        int top_column)
+namespace supernodal_detail {
+
+// The kernels of the back-substitution take the columns of a supernode four at a time (`K` <= 4
+// columns): every entry of the vector they run along is then read or written once for the K
+// columns, and the K sums of the backward dot products are independent chains. One column at a
+// time, the backward sums were one chain of dependent additions (latency-bound, twice the time of
+// the forward pass) and the forward pass wrote every row below a supernode once per column.
+
+// t[i] -= sum_q col[q][i] x[q], for i in [0, count)
+template <int K, class Scalar>
+void subtract_columns(const Scalar* const* col, const Scalar* x, int count, Scalar* t)
 {
-  const int c = sym.columns(s), m = sym.row_count(s);
-  const int* rows = sym.rows.data() + sym.row_offsets[std::size_t(s)];
-  const int split = int(std::lower_bound(rows + c, rows + m, top_column) - rows);
-  Scalar* block = y + sym.first[std::size_t(s)];
-  for(int j = 0; j < c; ++j)
+  for(int i = 0; i < count; ++i)
   {
-    const Scalar* column = values + sym.panel_offsets[std::size_t(s)] + std::int64_t(j) * m;
-    const Scalar yj = supernodal_detail::over_diagonal(block[j], column[j]);
-    block[j] = yj;
-    for(int i = j + 1; i < c; ++i)
-      block[i] -= supernodal_detail::times(column[i], yj);
-    for(int i = c; i < split; ++i)
-      y[rows[i]] -= supernodal_detail::times(column[i], yj);
-    for(int i = split; i < m; ++i)
-      collected[rows[i] - top_column] -= supernodal_detail::times(column[i], yj);
+    Scalar sum = times(col[0][i], x[0]);
+    for(int q = 1; q < K; ++q)
+      sum += times(col[q][i], x[q]);
+    t[i] -= sum;
   }
 }
 
-/// L^H x = y within supernode s, the rows below it already final.
-template <class Scalar>
-void supernodal_backward(const Supernodal_symbolic& sym, const Scalar* values, int s, Scalar* y)
+// s[q] -= sum_i conj(col[q][i]) v[i], for i in [0, count)
+template <int K, class Scalar>
+void subtract_dots(const Scalar* const* col, const Scalar* v, int count, Scalar* s)
 {
-  const int c = sym.columns(s), m = sym.row_count(s);
-  const int* rows = sym.rows.data() + sym.row_offsets[std::size_t(s)];
-  Scalar* block = y + sym.first[std::size_t(s)];
-  for(int j = c; j-- > 0;)
+  Scalar sum[K];
+  for(int q = 0; q < K; ++q)
+    sum[q] = Scalar(0);
+  for(int i = 0; i < count; ++i)
   {
-    const Scalar* column = values + sym.panel_offsets[std::size_t(s)] + std::int64_t(j) * m;
-    Scalar sum = block[j];
-    for(int i = j + 1; i < c; ++i)
-      sum -= supernodal_detail::conj_times(column[i], block[i]);
-    for(int i = c; i < m; ++i)
-      sum -= supernodal_detail::conj_times(column[i], y[rows[i]]);
-    block[j] = supernodal_detail::over_diagonal(sum, column[j]);
+    const Scalar vi = v[i];
+    for(int q = 0; q < K; ++q)
+      sum[q] += conj_times(col[q][i], vi);
+  }
+  for(int q = 0; q < K; ++q)
+    s[q] -= sum[q];
+}
+
+// the same for complex numbers, with the real and imaginary parts summed apart (2K independent
+// chains, in plain real arithmetic)
+template <int K, class T>
+void subtract_dots(const std::complex<T>* const* col, const std::complex<T>* v, int count, std::complex<T>* s)
+{
+  T re[K], im[K];
+  for(int q = 0; q < K; ++q)
+    re[q] = im[q] = T(0);
+  for(int i = 0; i < count; ++i)
+  {
+    const T vr = v[i].real(), vi = v[i].imag();
+    for(int q = 0; q < K; ++q)
+    {
+      const T ar = col[q][i].real(), ai = col[q][i].imag();
+      re[q] += ar * vr + ai * vi;
+      im[q] += ar * vi - ai * vr;
+    }
+  }
+  for(int q = 0; q < K; ++q)
+    s[q] -= std::complex<T>(re[q], im[q]);
+}
+
+// the kernels above for a number of columns k in [1, 4] known at run time; `offset` is added to
+// every column pointer
+template <class Scalar>
+void subtract_columns(int k, const Scalar* const* col, std::int64_t offset, const Scalar* x, int count, Scalar* t)
+{
+  if(count <= 0)
+    return;
+  const Scalar* c[4];
+  for(int q = 0; q < k; ++q)
+    c[q] = col[q] + offset;
+  switch(k)
+  {
+  case 1: subtract_columns<1>(c, x, count, t); break;
+  case 2: subtract_columns<2>(c, x, count, t); break;
+  case 3: subtract_columns<3>(c, x, count, t); break;
+  default: subtract_columns<4>(c, x, count, t); break;
+  }
+}
+template <class Scalar>
+void subtract_dots(int k, const Scalar* const* col, std::int64_t offset, const Scalar* v, int count, Scalar* s)
+{
+  if(count <= 0)
+    return;
+  const Scalar* c[4];
+  for(int q = 0; q < k; ++q)
+    c[q] = col[q] + offset;
+  switch(k)
+  {
+  case 1: subtract_dots<1>(c, v, count, s); break;
+  case 2: subtract_dots<2>(c, v, count, s); break;
+  case 3: subtract_dots<3>(c, v, count, s); break;
+  default: subtract_dots<4>(c, v, count, s); break;
+  }
+}
+
+} // namespace supernodal_detail
+
+/// L y = b within supernode s of the factor whose panels are `values`; updates of rows at or past
+/// `top_column` go to `collected` (added to collected[row - top_column]), the others to y.
+/// `work` holds at least `sym.largest_below` entries.
+template <class Scalar>
+void supernodal_forward(const Supernodal_symbolic& sym, const Scalar* values, int s, Scalar* y, Scalar* collected,
+                        int top_column, Scalar* work)
+{
+  using namespace supernodal_detail;
+  const int c = sym.columns(s), m = sym.row_count(s), below = m - c;
+  const int* rows = sym.rows.data() + sym.row_offsets[std::size_t(s)];
+  const int split = int(std::lower_bound(rows + c, rows + m, top_column) - rows);
+  const Scalar* panel = values + sym.panel_offsets[std::size_t(s)];
+  Scalar* block = y + sym.first[std::size_t(s)];
+  std::fill(work, work + below, Scalar(0));
+  for(int j0 = 0; j0 < c; j0 += 4)
+  {
+    const int k = (std::min)(4, c - j0);
+    const Scalar* col[4];
+    for(int q = 0; q < k; ++q)
+      col[q] = panel + std::int64_t(j0 + q) * m;
+    for(int q = 0; q < k; ++q) // the group's own triangle
+    {
+      block[j0 + q] = over_diagonal(block[j0 + q], col[q][j0 + q]);
+      for(int p = q + 1; p < k; ++p)
+        block[j0 + p] -= times(col[q][j0 + p], block[j0 + q]);
+    }
+    subtract_columns(k, col, j0 + k, block + j0, c - j0 - k, block + j0 + k); // the supernode's later columns
+    subtract_columns(k, col, c, block + j0, below, work);                     // the rows below it
+  }
+  for(int i = c; i < split; ++i)
+    y[rows[i]] += work[i - c];
+  for(int i = split; i < m; ++i)
+    collected[rows[i] - top_column] += work[i - c];
+}
+
+/// L^H x = y within supernode s, the rows below it already final. `work` holds at least
+/// `sym.largest_below` entries.
+template <class Scalar>
+void supernodal_backward(const Supernodal_symbolic& sym, const Scalar* values, int s, Scalar* y, Scalar* work)
+{
+  using namespace supernodal_detail;
+  const int c = sym.columns(s), m = sym.row_count(s), below = m - c;
+  const int* rows = sym.rows.data() + sym.row_offsets[std::size_t(s)];
+  const Scalar* panel = values + sym.panel_offsets[std::size_t(s)];
+  Scalar* block = y + sym.first[std::size_t(s)];
+  for(int i = 0; i < below; ++i)
+    work[i] = y[rows[c + i]];
+  for(int j1 = c; j1 > 0; j1 -= 4)
+  {
+    const int j0 = (std::max)(0, j1 - 4), k = j1 - j0;
+    const Scalar* col[4];
+    for(int q = 0; q < k; ++q)
+      col[q] = panel + std::int64_t(j0 + q) * m;
+    subtract_dots(k, col, j1, block + j1, c - j1, block + j0); // the supernode's later columns, final
+    subtract_dots(k, col, c, work, below, block + j0);         // the rows below it
+    for(int q = k; q-- > 0;)                                   // the group's own triangle
+    {
+      Scalar sum = block[j0 + q];
+      for(int p = q + 1; p < k; ++p)
+        sum -= conj_times(col[q][j0 + p], block[j0 + p]);
+      block[j0 + q] = over_diagonal(sum, col[q][j0 + q]);
+    }
   }
 }
 
