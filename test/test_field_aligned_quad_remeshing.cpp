@@ -1571,6 +1571,53 @@ TEST_CASE("The extraction's check reports what is not the quad mesh of the field
   CHECK(quad_mesh_problem(cube, none, quads) != "");
 }
 
+TEST_CASE("The test's reading of the quads fails where the cones are not its irregular vertices",
+          "[field_aligned_quads][oracle]")
+{
+  // a real output (the eight: genus 2, its cones of index -1/4 at valence-5 vertices), read
+  // against its own cones, then against cones that are wrong in each way the reading checks
+  const test::Surface_mesh mesh = make_case<test::Surface_mesh>("eight.off");
+  const auto field = smoothest_cross_field(mesh);
+  const auto cones = cones_of(mesh, field);
+  REQUIRE(cones.size() >= 8);
+  Quad_mesh out;
+  SD::field_aligned_quad_remeshing(mesh, field.map(), out,
+                                   SD::parameters::target_edge_length(std::sqrt(surface_area(mesh) / 900.)));
+  REQUIRE(quad_mesh_problem(mesh, cones, out) == "");
+  for(bool at_corners : {false, true})
+  {
+    CAPTURE(at_corners);
+    auto flipped = cones; // valence 3 due where the quads have 5
+    flipped.begin()->second = -flipped.begin()->second;
+    CHECK(quad_mesh_problem(mesh, flipped, out, at_corners) != "");
+    auto dropped = cones; // a valence-5 vertex where no cone is
+    dropped.erase(dropped.begin());
+    CHECK(quad_mesh_problem(mesh, dropped, out, at_corners) != "");
+    // a cone moved to the face farthest from every cone: no irregular vertex there
+    auto moved = cones;
+    test::Surface_mesh::Face_index far;
+    double farthest = -1.;
+    for(auto f : faces(mesh))
+    {
+      Eigen::Vector3d c = Eigen::Vector3d::Zero();
+      for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+        c += eigen(mesh.point(v)) / 3.;
+      double nearest = 1e300;
+      for(const auto& [g, k] : cones)
+        nearest = (std::min)(nearest, (eigen(mesh.point(target(halfedge(g, mesh), mesh))) - c).norm());
+      if(nearest > farthest)
+      {
+        farthest = nearest;
+        far = f;
+      }
+    }
+    const int k = moved.begin()->second;
+    moved.erase(moved.begin());
+    moved[far] = k;
+    CHECK(quad_mesh_problem(mesh, moved, out, at_corners) != "");
+  }
+}
+
 TEMPLATE_TEST_CASE("Bad input to the field-aligned remesher is refused and changes nothing", "[field_aligned_quads]",
                    SD_MESH_TYPES)
 {
