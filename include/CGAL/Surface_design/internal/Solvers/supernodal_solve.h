@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -211,39 +212,38 @@ void subtract_dots(const std::complex<T>* const* col, const std::complex<T>* v, 
     s[q] -= std::complex<T>(re[q], im[q]);
 }
 
-// the kernels above for a number of columns k in [1, 4] known at run time; `offset` is added to
-// every column pointer
-template <class Scalar>
-void subtract_columns(int k, const Scalar* const* col, std::int64_t offset, const Scalar* x, int count, Scalar* t)
+// Calls kernel(std::integral_constant<int, K>(), c) for the number of columns k in [1, 4] known
+// at run time, c[q] = col[q] + offset.
+template <class Scalar, class Kernel>
+void with_columns(int k, const Scalar* const* col, std::int64_t offset, Kernel kernel)
 {
-  if(count <= 0)
-    return;
   const Scalar* c[4];
   for(int q = 0; q < k; ++q)
     c[q] = col[q] + offset;
   switch(k)
   {
-  case 1: subtract_columns<1>(c, x, count, t); break;
-  case 2: subtract_columns<2>(c, x, count, t); break;
-  case 3: subtract_columns<3>(c, x, count, t); break;
-  default: subtract_columns<4>(c, x, count, t); break;
+  case 1: kernel(std::integral_constant<int, 1>(), c); break;
+  case 2: kernel(std::integral_constant<int, 2>(), c); break;
+  case 3: kernel(std::integral_constant<int, 3>(), c); break;
+  default: kernel(std::integral_constant<int, 4>(), c); break;
   }
+}
+
+template <class Scalar>
+void subtract_columns(int k, const Scalar* const* col, std::int64_t offset, const Scalar* x, int count, Scalar* t)
+{
+  if(count > 0)
+    with_columns(k, col, offset, [&](auto columns, const Scalar* const* c) {
+      subtract_columns<decltype(columns)::value>(c, x, count, t);
+    });
 }
 template <class Scalar>
 void subtract_dots(int k, const Scalar* const* col, std::int64_t offset, const Scalar* v, int count, Scalar* s)
 {
-  if(count <= 0)
-    return;
-  const Scalar* c[4];
-  for(int q = 0; q < k; ++q)
-    c[q] = col[q] + offset;
-  switch(k)
-  {
-  case 1: subtract_dots<1>(c, v, count, s); break;
-  case 2: subtract_dots<2>(c, v, count, s); break;
-  case 3: subtract_dots<3>(c, v, count, s); break;
-  default: subtract_dots<4>(c, v, count, s); break;
-  }
+  if(count > 0)
+    with_columns(k, col, offset, [&](auto columns, const Scalar* const* c) {
+      subtract_dots<decltype(columns)::value>(c, v, count, s);
+    });
 }
 
 } // namespace supernodal_detail
