@@ -127,6 +127,10 @@ def main(argv):
     for m in meshes:
         if not os.path.exists(m):
             fail("mesh not found: " + m)
+    if not os.path.isdir(gc_dir):
+        fail("not a geometry-central checkout: " + gc_dir)
+    if not os.path.exists(os.path.join(build_dir, "benchmark", "surface_design_benchmark")):
+        fail("no benchmark in " + build_dir + " (build the target surface_design_benchmark)")
     driver = build_driver(build_dir, gc_dir)
     rows, machine = [], None
     for m in meshes:
