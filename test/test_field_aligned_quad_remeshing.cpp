@@ -398,6 +398,57 @@ TEMPLATE_TEST_CASE("Field-aligned quads on a boundary with corners: one quad at 
   }
 }
 
+// An exact grid, not jittered: the field is the grid's directions, so the lines run through its
+// vertices and along its edges wherever the spacing h meets the cells (at h = 2 cells everywhere),
+// and lines of the two families cross exactly at vertices and on edges. The isolines share those
+// points; they must still run through them, and the crossings there be the quads' vertices.
+TEMPLATE_TEST_CASE("Field-aligned quads on an exact grid: lines through its vertices and along its edges",
+                   "[field_aligned_quads][boundary]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  for(const std::size_t n : {10u, 20u})
+    for(const double h : {0.1, 0.07, 0.05, 0.04})
+    {
+      CAPTURE(n, h);
+      Mesh mesh;
+      SD::make_grid(mesh, n, n, 0.);
+      const auto field = boundary_cross_field(mesh);
+      CHECK(cones_of(mesh, field).empty());
+      Quad_mesh out;
+      const auto r = SD::field_aligned_quad_remeshing(mesh, field.map(), out, SD::parameters::target_edge_length(h));
+      // the quads: a regular grid of m x m cells of the unit square, every vertex on the lattice
+      // of spacing 1 / m, valence 4 inside, 3 on the sides, 2 at the corners
+      const std::size_t m = std::size_t(std::lround(std::sqrt(double(r.faces))));
+      REQUIRE(m * m == r.faces);
+      CHECK(std::abs(double(m) * h - 1.) < 0.25);
+      std::map<int, int> valences;
+      std::size_t through_vertices = 0;
+      for(auto v : vertices(out))
+      {
+        const Eigen::Vector3d x = eigen(out.point(v));
+        CHECK(std::abs(x.x() * double(m) - std::round(x.x() * double(m))) < 1e-9);
+        CHECK(std::abs(x.y() * double(m) - std::round(x.y() * double(m))) < 1e-9);
+        const bool side_x = x.x() < 1e-12 || x.x() > 1. - 1e-12, side_y = x.y() < 1e-12 || x.y() > 1. - 1e-12;
+        ++valences[int(degree(v, out)) * 10 + int(side_x) + int(side_y)];
+        // a crossing at an inner vertex of the input (both families' lines through it)
+        const double cx = x.x() * double(n), cy = x.y() * double(n);
+        if(!side_x && !side_y && std::abs(cx - std::round(cx)) < 1e-9 && std::abs(cy - std::round(cy)) < 1e-9)
+          ++through_vertices;
+      }
+      CHECK(valences[40] == int((m - 1) * (m - 1)));
+      CHECK(valences[31] == int(4 * (m - 1)));
+      CHECK(valences[22] == 4);
+      CHECK(valences.size() == 3u);
+      // the degenerate case is really met: at h = 0.1 and 0.05 (2 and 1 cells of the 20 x 20
+      // grid; 1 and 1/2 of the 10 x 10), every crossing of the quads is at a vertex of the grid
+      if(std::abs(h * double(n) - std::round(h * double(n))) < 1e-9)
+        CHECK(through_vertices == (m - 1) * (m - 1));
+      const SD::Quad_mesh_quality q = SD::quad_mesh_quality(out, mesh);
+      CHECK(q.same_topology);
+      CHECK(q.angle_deviation_max < 1e-6);
+    }
+}
+
 // The unit square's grid (n x n cells, its inner vertices jittered by 0.15 cells) whose boundary
 // zigzags: every other boundary vertex but the corners moved inward by `depth` cells, so that
 // the boundary turns by 2 atan(depth) at every vertex (62 degrees for depth 0.6), alternately

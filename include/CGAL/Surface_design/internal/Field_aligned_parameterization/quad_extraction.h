@@ -164,8 +164,11 @@ inline Quad_extraction extract_quads(const std::vector<Stripe_isoline_polyline>&
           continue; // lines meet the boundary at their ends (below)
         const Eigen::Vector3d& p0 = lines[l1]->points[s1];
         const Eigen::Vector3d& q0 = lines[l2]->points[s2];
-        const Eigen::Vector2d p = flat(p0), r = flat(piece_end(l1, s1)) - p;
-        const Eigen::Vector2d q = flat(q0), t = flat(piece_end(l2, s2)) - q;
+        const Eigen::Vector3d &p1 = piece_end(l1, s1), &q1 = piece_end(l2, s2);
+        if(p0 == q0 || p0 == q1 || p1 == q0 || p1 == q1)
+          continue; // pieces with a point in common cross there or end there (below)
+        const Eigen::Vector2d p = flat(p0), r = flat(p1) - p;
+        const Eigen::Vector2d q = flat(q0), t = flat(q1) - q;
         const double den = r.x() * t.y() - r.y() * t.x();
         if(den == 0.)
           continue; // parallel pieces do not cross (overlapping ones are not lines of a map)
@@ -173,13 +176,34 @@ inline Quad_extraction extract_quads(const std::vector<Stripe_isoline_polyline>&
         const double a = (w.x() * t.y() - w.y() * t.x()) / den, b = (w.x() * r.y() - w.y() * r.x()) / den;
         if(!(a >= 0. && a < 1. && b >= 0. && b < 1.))
           continue;
-        const Eigen::Vector3d x = p0 + a * (piece_end(l1, s1) - p0);
+        const Eigen::Vector3d x = p0 + a * (p1 - p0);
         if(cone_in_face[f] && (x - *cone_in_face[f]).norm() < tolerance)
           continue;
         const std::size_t v = add_point(x, f);
         on_line[l1].emplace_back(double(s1) + a, v);
         on_line[l2].emplace_back(double(s2) + b, v);
       }
+  }
+  // the lines that cross exactly at a mesh vertex or on an input edge share that point (the
+  // isolines run through it, see Stripe_isoline_builder): a vertex where two lines pass through
+  // one point, which the pieces, half-open, would miss or meet in either face
+  {
+    std::map<std::array<double, 3>, std::vector<std::pair<std::size_t, std::size_t>>> through;
+    for(std::size_t l = 0; l < first_boundary_line; ++l)
+      for(std::size_t i : lines[l]->crossings)
+      {
+        const Eigen::Vector3d& x = lines[l]->points[i];
+        through[{x.x(), x.y(), x.z()}].emplace_back(l, i);
+      }
+    for(const auto& [x, at] : through)
+    {
+      if(at.size() < 2)
+        continue;
+      const auto [l, i] = at.front();
+      const std::size_t v = add_point(lines[l]->points[i], lines[l]->faces[i]);
+      for(const auto& [m, j] : at)
+        on_line[m].emplace_back(double(j), v);
+    }
   }
   // vertex v at point x on every line (not the boundary's) that ends there or runs through it
   std::vector<bool> end_used(2 * lines.size(), false);

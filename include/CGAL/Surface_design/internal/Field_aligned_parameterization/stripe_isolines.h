@@ -48,6 +48,7 @@ struct Stripe_isoline_polyline
   bool closed = false;
   double level = 0.;
   int family = 0;
+  std::vector<std::size_t> crossings; ///< the points it shares with lines crossing it there (at a mesh vertex or on an edge)
 };
 
 /// A point of a face's subdivision, by barycentric coordinates, with the stripe angle there.
@@ -110,62 +111,111 @@ public:
   /// The polylines of all pieces added so far.
   std::vector<Stripe_isoline_polyline> polylines() const
   {
+    // (a copy only where a segment runs along a mesh edge: an exact grid's lines)
+    std::vector<Segment> split;
+    const bool along_edges =
+      std::any_of(m_segments.begin(), m_segments.end(), [](const Segment& s) { return s.edge != none; });
+    if(along_edges)
+      split = split_along_edges();
+    const std::vector<Segment>& segments = along_edges ? split : m_segments;
     // the segments at each point, in one array (point p's in [first[p], first[p + 1]))
-    std::vector<std::size_t> first(m_points.size() + 1, 0), at_point(2 * m_segments.size());
-    for(const Segment& s : m_segments)
+    std::vector<std::size_t> first(m_points.size() + 1, 0), at_point(2 * segments.size());
+    for(const Segment& s : segments)
       ++first[s.a + 1], ++first[s.b + 1];
     for(std::size_t p = 0; p < m_points.size(); ++p)
       first[p + 1] += first[p];
     {
       std::vector<std::size_t> fill(first.begin(), first.end() - 1);
-      for(std::size_t s = 0; s < m_segments.size(); ++s)
-        at_point[fill[m_segments[s].a]++] = s, at_point[fill[m_segments[s].b]++] = s;
+      for(std::size_t s = 0; s < segments.size(); ++s)
+        at_point[fill[segments[s].a]++] = s, at_point[fill[segments[s].b]++] = s;
     }
     auto degree = [&](std::size_t p) { return first[p + 1] - first[p]; };
-    std::vector<bool> used(m_segments.size(), false);
+    auto other_end = [&](std::size_t s, std::size_t p) { return segments[s].a == p ? segments[s].b : segments[s].a; };
+    // Where lines cross exactly at a mesh vertex or on a mesh edge (a grid whose lines run through
+    // its vertices), they share that point: there each segment continues with the one most
+    // nearly opposite it (of its level), so that each line runs through the crossing, which the
+    // quad extraction then finds at the point the lines share. Elsewhere a point where other than
+    // two segments meet ends them all (a branch point).
+    std::vector<std::size_t> partner(at_point.size(), none);
+    for(std::size_t p = 0; p < m_points.size(); ++p)
+    {
+      const bool on_mesh = (p < m_point_vertex.size() && m_point_vertex[p] != none) ||
+                           (p < m_edge_point.size() && m_edge_point[p]);
+      if(degree(p) < 4 || degree(p) % 2 != 0 || !on_mesh || on_boundary(p))
+        continue; // (at the boundary the lines end: see set_boundary_vertices())
+      std::vector<Eigen::Vector3d> direction;
+      for(std::size_t k = first[p]; k < first[p + 1]; ++k)
+        direction.push_back((m_points[other_end(at_point[k], p)] - m_points[p]).normalized());
+      for(;;)
+      {
+        std::size_t best_i = none, best_j = none;
+        double best = 0.; // pairs of segments at an obtuse angle only
+        for(std::size_t i = 0; i < direction.size(); ++i)
+          for(std::size_t j = i + 1; j < direction.size(); ++j)
+          {
+            const std::size_t ki = first[p] + i, kj = first[p] + j;
+            if(partner[ki] != none || partner[kj] != none ||
+               segments[at_point[ki]].level != segments[at_point[kj]].level)
+              continue;
+            if(const double d = direction[i].dot(direction[j]); d < best)
+              best = d, best_i = i, best_j = j;
+          }
+        if(best_i == none)
+          break;
+        partner[first[p] + best_i] = at_point[first[p] + best_j];
+        partner[first[p] + best_j] = at_point[first[p] + best_i];
+      }
+    }
+    // the segment that continues the line of segment s at its end p (none: the line ends there)
+    auto continuation = [&](std::size_t s, std::size_t p) {
+      if(degree(p) == 2)
+        return at_point[first[p]] == s ? at_point[first[p] + 1] : at_point[first[p]];
+      for(std::size_t k = first[p]; k < first[p + 1]; ++k)
+        if(at_point[k] == s)
+          return partner[k];
+      return none;
+    };
+    std::vector<bool> used(segments.size(), false);
     std::vector<Stripe_isoline_polyline> result;
     auto walk = [&](std::size_t start, std::size_t first_segment) {
       Stripe_isoline_polyline line;
-      line.level = m_segments[first_segment].level == 0 ? 0. : pi;
-      line.family = m_segments[first_segment].family;
+      line.level = segments[first_segment].level == 0 ? 0. : pi;
+      line.family = segments[first_segment].family;
       line.points.push_back(m_points[start]);
       std::size_t at = start, segment = first_segment;
       for(;;)
       {
         used[segment] = true;
-        line.faces.push_back(m_segments[segment].face);
-        const std::size_t next = m_segments[segment].a == at ? m_segments[segment].b : m_segments[segment].a;
-        if(next == start && degree(start) == 2)
+        line.faces.push_back(segments[segment].face);
+        const std::size_t next = other_end(segment, at);
+        const std::size_t then = continuation(segment, next);
+        if(next == start && then == first_segment)
         {
           line.closed = true;
+          if(degree(start) != 2)
+            line.crossings.push_back(0);
           break;
         }
-        if(next == start)
-        {
-          // back at the point where it started, where other lines end too (a branch point on
-          // the lattice): an open line with both ends there, not a loop
-          line.points.push_back(m_points[next]);
-          break;
-        }
+        // (back at the point where it started, where other lines end too, a branch point on the
+        // lattice: an open line with both ends there, not a loop)
         line.points.push_back(m_points[next]);
+        if(then == none || used[then])
+          break;
+        if(degree(next) != 2)
+          line.crossings.push_back(line.points.size() - 1);
         at = next;
-        if(degree(at) != 2)
-          break;
-        segment = used[at_point[first[at]]] ? at_point[first[at] + 1] : at_point[first[at]];
-        if(used[segment])
-          break;
+        segment = then;
       }
       result.push_back(std::move(line));
     };
     // open chains start at the points where they end or branch, then the remaining loops
     for(std::size_t p = 0; p < m_points.size(); ++p)
-      if(degree(p) != 2)
-        for(std::size_t k = first[p]; k < first[p + 1]; ++k)
-          if(!used[at_point[k]])
-            walk(p, at_point[k]);
-    for(std::size_t s = 0; s < m_segments.size(); ++s)
+      for(std::size_t k = first[p]; k < first[p + 1]; ++k)
+        if(!used[at_point[k]] && continuation(at_point[k], p) == none)
+          walk(p, at_point[k]);
+    for(std::size_t s = 0; s < segments.size(); ++s)
       if(!used[s])
-        walk(m_segments[s].a, s);
+        walk(segments[s].a, s);
     return result;
   }
 
@@ -186,7 +236,45 @@ private:
     std::size_t a, b;
     int level, family;
     std::size_t face;
+    std::size_t edge = none; // the mesh edge it runs along, from a to b (a_first) or back
+    bool a_first = true;
   };
+
+  // The segments, those along a mesh edge cut at the points where other lines of their level
+  // cross that edge: the lines cross there.
+  std::vector<Segment> split_along_edges() const
+  {
+    std::vector<Segment> segments = m_segments;
+    for(std::size_t s = 0, count = segments.size(); s < count; ++s)
+    {
+      if(segments[s].edge == none)
+        continue;
+      std::vector<std::pair<double, std::size_t>> inside;
+      for(const Carrier_point& c : m_edge_points[segments[s].edge])
+        if(c.level_class == segments[s].level)
+          inside.emplace_back(c.t, c.id);
+      std::sort(inside.begin(), inside.end());
+      inside.erase(std::unique(inside.begin(), inside.end(),
+                               [](const auto& x, const auto& y) { return x.second == y.second; }),
+                   inside.end());
+      if(inside.empty())
+        continue;
+      const Segment whole = segments[s];
+      std::size_t from = whole.a_first ? whole.a : whole.b;
+      const std::size_t to = whole.a_first ? whole.b : whole.a;
+      segments[s].a = from;
+      segments[s].b = inside.front().second;
+      for(std::size_t i = 0; i < inside.size(); ++i)
+      {
+        from = inside[i].second;
+        Segment piece = whole;
+        piece.a = from;
+        piece.b = i + 1 < inside.size() ? inside[i + 1].second : to;
+        segments.push_back(piece);
+      }
+    }
+    return segments;
+  }
 
   static double wrapped(double x) { return x - two_pi * std::round(x / two_pi); }
 
@@ -237,7 +325,21 @@ private:
     // triangles) is met again from the other side: kept once
     if(zeros == 2 && !m_segment_keys.insert(std::make_pair((std::min)(a, b), (std::max)(a, b))).second)
       return;
-    m_segments.push_back({a, b, level_class, family, face.index});
+    Segment segment{a, b, level_class, family, face.index};
+    if(zeros == 2)
+    {
+      // along the mesh edge opposite corner k when both ends are on it
+      const int k = sg[0] != 0 ? 0 : (sg[1] != 0 ? 1 : 2);
+      const auto& p = s[std::size_t((k + 1) % 3)];
+      const auto& q = s[std::size_t((k + 2) % 3)];
+      if(p.b[std::size_t(k)] == 0. && q.b[std::size_t(k)] == 0. && a < m_point_vertex.size() &&
+         m_point_vertex[a] != none)
+      {
+        segment.edge = face.opposite_edge[std::size_t(k)];
+        segment.a_first = m_point_vertex[a] == face.vertex[std::size_t(face.edge_first_corner[std::size_t(k)])];
+      }
+    }
+    m_segments.push_back(segment);
   }
 
   bool on_boundary(std::size_t point) const
@@ -311,7 +413,11 @@ private:
     if(t <= 0. || t >= 1.)
       return sample_point(face, Stripe_isoline_sample{corner(t <= 0. ? first : second), 0., 0});
     const Eigen::Vector3d x = (1. - t) * face.position[std::size_t(first)] + t * face.position[std::size_t(second)];
-    return find_or_add(m_edge_points[face.opposite_edge[std::size_t(k)]], t, x);
+    const std::size_t id = find_or_add(m_edge_points[face.opposite_edge[std::size_t(k)]], t, x);
+    if(m_edge_point.size() <= id)
+      m_edge_point.resize(id + 1, false);
+    m_edge_point[id] = true;
+    return id;
   }
 
   static std::array<double, 3> corner(int i)
@@ -338,6 +444,7 @@ private:
   std::vector<std::size_t> m_vertex_point;
   std::vector<std::size_t> m_point_vertex; // the mesh vertex a point is at, none elsewhere (may be short)
   std::vector<bool> m_boundary_vertex;     // see set_boundary_vertices()
+  std::vector<bool> m_edge_point;          // whether a point is on a mesh edge (may be short)
   std::vector<std::vector<Carrier_point>> m_edge_points;
   std::map<std::tuple<std::size_t, std::size_t, std::size_t>, std::vector<Carrier_point>> m_local_points;
   int m_class = 0; // the level class being cut: 0 or 1 (pi)
