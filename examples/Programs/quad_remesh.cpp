@@ -72,6 +72,9 @@ const char* usage =
   "                        at S h (default 2, S in [0, 10]; 0: every boundary edge): a boundary that\n"
   "                        zigzags finer than that is straightened, corners where it turns by 67.5\n"
   "                        degrees or more within S h are kept\n"
+  "  --edge-length-ratio R curvature-adapted sizing: the spacing follows 1 / sqrt(curvature), an even\n"
+  "                        chord error, with the largest R times the smallest (R in [1, 100]; default\n"
+  "                        1: uniform); the mean stays h, the face count about the same\n"
   "  --stiffening-rounds R rounds of local stiffening where the map folds (default 10, R in [0, 64])\n"
   "  --no-input-remeshing  fail where the input's own triangles do not give the quads (given cones\n"
   "                        go, on the remeshed input, to the faces nearest theirs)\n"
@@ -114,7 +117,7 @@ struct Options
   std::vector<long> minima, maxima;
   std::map<long, int> cones; // --singularity FACE:K/4
   double edge_length = 0., target_faces = 0., curvature_adaptation = 0., cone_distance = 1., sharp_angle = 0.,
-         boundary_smoothing = 2.;
+         boundary_smoothing = 2., edge_length_ratio = 1.;
   int stiffening_rounds = 10;
   bool protrusions = true, intrinsic_delaunay = false, quad_poles = true, spectacles = true,
        all_quads = true, feature_snapping = true, input_remeshing = true;
@@ -151,6 +154,8 @@ Options parse(int argc, char** argv)
     .value("--boundary-smoothing",
            [&](const std::string& v) { o.boundary_smoothing = program::parse_double(v, "--boundary-smoothing", 0., 10.); })
     .value("--sharp-angle", [&](const std::string& v) { o.sharp_angle = program::parse_double(v, "--sharp-angle", 0., 180.); })
+    .value("--edge-length-ratio",
+           [&](const std::string& v) { o.edge_length_ratio = program::parse_double(v, "--edge-length-ratio", 1., 100.); })
     .value("--stiffening-rounds",
            [&](const std::string& v) { o.stiffening_rounds = int(program::parse_integer(v, "--stiffening-rounds", 0, 64)); })
     .flag("--no-input-remeshing", [&] { o.input_remeshing = false; })
@@ -175,7 +180,7 @@ Options parse(int argc, char** argv)
     throw program::Usage_error("give --edge-length or --target-faces, not both");
   for(const char* option :
       {"--field", "--cone-distance", "--singularity", "--stiffening-rounds", "--no-input-remeshing", "--sharp-angle",
-       "--boundary-smoothing"})
+       "--boundary-smoothing", "--edge-length-ratio"})
     if(p.given(option) && o.method != "field")
       throw program::Usage_error(std::string(option) + " applies to --method field");
   for(const char* option : {"--min", "--max", "--no-protrusions", "--curvature-adaptation", "--intrinsic-delaunay",
@@ -479,11 +484,11 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
     try
     {
       const auto np =
-        P::target_edge_length(spacing,
+        P::target_edge_length(spacing, P::edge_length_ratio(o.edge_length_ratio,
                               P::stiffening_rounds(o.stiffening_rounds,
                                                    P::feature_snapping(o.feature_snapping,
                                                                        P::boundary_smoothing_length(smoothing,
-                                                                       CGAL::parameters::sparse_linear_solver(traits)))))
+                                                                       CGAL::parameters::sparse_linear_solver(traits))))))
           .visitor([](const SD::Field_aligned_quads_round& round) {
             // progress: on a large mesh a round takes seconds
             std::printf("  %s %zu: folds in %zu faces; %s (%.2f s)\n", round.round == 0 ? "first map," : "round",
@@ -499,6 +504,9 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
       std::printf("field-aligned quads (h = %.4g): %zu cones, %zu faces folded in the first map, %zu rounds of "
                   "stiffening, %zu folded at the end\n",
                   spacing, r.cones, r.initially_folded, r.stiffening_rounds, r.folded_faces);
+      if(o.edge_length_ratio > 1.)
+        std::printf("curvature-adapted sizing: local spacing from %.4g to %.4g\n", r.smallest_edge_length,
+                    r.largest_edge_length);
       if(o.sharp_angle > 0. && o.feature_snapping)
         std::printf("creases: %zu vertices of the quads moved onto them, %zu of the %zu cones onto their corners\n",
                     r.crease_vertices, r.cones_on_corners, r.cones);

@@ -322,7 +322,9 @@ for args in "--method" "--method magic" "--target-faces 0" "--target-faces -5" "
             "--method field --sharp-angle nan" "--method field --sharp-angle -5" "--method field --sharp-angle x" \
             "--method field --sharp-angle 30 --singularity 3:1/4" "--method field --sharp-angle 30 --cone-distance 1" \
             "--boundary-smoothing 1" "--method field --boundary-smoothing -1" "--method field --boundary-smoothing 11" \
-            "--method field --boundary-smoothing nan" "--method field --boundary-smoothing x"; do
+            "--method field --boundary-smoothing nan" "--method field --boundary-smoothing x" \
+            "--edge-length-ratio 2" "--method field --edge-length-ratio 0.5" "--method field --edge-length-ratio 101" \
+            "--method field --edge-length-ratio nan" "--method field --edge-length-ratio x" "--method field --edge-length-ratio"; do
   # shellcheck disable=SC2086
   refuse quad_remesh "$E" $args --output "$O/q.off"
 done

@@ -20,6 +20,7 @@
 #include <CGAL/Surface_design/internal/Core/named_parameters.h>
 #include <CGAL/Surface_design/internal/Core/topology.h>
 #include <CGAL/Surface_design/internal/Core/validation.h>
+#include <CGAL/Surface_design/internal/Field_aligned_parameterization/branched_target_one_form.h>
 #include <CGAL/Surface_design/internal/Field_aligned_parameterization/stripe_interpolation.h>
 #include <CGAL/Surface_design/internal/Field_aligned_parameterization/stripe_isolines.h>
 #include <CGAL/Surface_design/internal/Field_aligned_parameterization/stripe_relaxation.h>
@@ -244,12 +245,47 @@ public:
     check_frequency(stripes_per_unit_length);
     require_field();
     m_frequency = stripes_per_unit_length;
-    m_relaxation.reset();
-    m_solved = false;
-    m_windings_valid = false;
-    update_omega();
+    frequency_changed();
   }
   double frequency() const { return m_frequency; }
+
+  /// Makes the frequency vary over the surface: at vertex v the stripe angle advances by
+  /// 2 pi `frequency()` `scale[v]` per unit length, so that the spacing of the stripes there is
+  /// 1 / (`frequency()` `scale[v]`) (the sizing of curvature-adapted quads:
+  /// `field_aligned_quad_remeshing()` with `edge_length_ratio`). Along an edge the target integrates
+  /// the scaled field by the trapezoid rule; from the corners of a branch face to its branch point
+  /// the mean of the corners' scales applies. A scale that varies gives the target one-form a
+  /// curl, which the least squares spreads: the spacing follows the scale where it varies slowly
+  /// against the spacing. Kept by `set_field()` and `set_frequency()`. No factorization: O(|E|).
+  /// \throws Invalid_parameter if a value is not positive and finite (nothing changes then)
+  template <class VertexScalarMap>
+  void set_frequency_scale(const VertexScalarMap& scale)
+  {
+    std::vector<double> s(m_idx->number_of_vertices());
+    for(std::size_t v = 0; v < s.size(); ++v)
+    {
+      s[v] = double(get(scale, m_idx->vertex(v)));
+      if(!std::isfinite(s[v]) || !(s[v] > 0.))
+        throw Invalid_parameter("frequency scale", "must be positive and finite at every vertex, got " +
+                                                     std::to_string(s[v]) + " at vertex " + std::to_string(v));
+    }
+    m_frequency_scale = std::move(s);
+    frequency_changed();
+  }
+  /// Back to one frequency everywhere.
+  void clear_frequency_scale()
+  {
+    m_frequency_scale.clear();
+    frequency_changed();
+  }
+  /// The scale of `set_frequency_scale()` at v (1 without one).
+  double frequency_scale(vertex_descriptor v) const
+  {
+    const std::size_t i = m_idx->find(v);
+    if(i == internal::npos)
+      throw Invalid_constraints("the vertex is not a vertex of this mesh");
+    return m_frequency_scale.empty() ? 1. : m_frequency_scale[i];
+  }
 
   bool has_field() const { return bool(m_solver); }
   /// Whether face f is a branch face of the field.
@@ -418,7 +454,7 @@ public:
   /// After `stiffen()`: solves again with the integers (the windings) of the last `solve()`, one
   /// back-substitution with the stiffened system, no new choice of windings. The map keeps its
   /// lattice branch points and its topology; the stiffening moves only its continuous part.
-  /// 	hrows Invalid_constraints if the field, the singularities or the lattice setting changed
+  /// \throws Invalid_constraints if the field, the singularities or the lattice setting changed
   ///         since the last `solve()` (or there was none): its windings do not apply
   void solve_keeping_windings()
   {
@@ -759,6 +795,16 @@ private:
       }
     }
   }
+  // the target one-form changes (no factorization); before set_field() it is made there
+  void frequency_changed()
+  {
+    if(!m_solver)
+      return;
+    m_relaxation.reset();
+    m_solved = false;
+    m_windings_valid = false;
+    update_omega();
+  }
   static void check_frequency(double s)
   {
     if(!std::isfinite(s) || !(s > 0.))
@@ -846,78 +892,15 @@ private:
     return internal::branch_point_position(*m_idx, m_vpm, f);
   }
 
-  // omega per edge and sheet: the field of sheet a at i and of sheet a + r at j integrated along
-  // the edge i -> j (as the vector case's conventions).
+  // omega per edge and sheet, and the spokes' targets (branched_target_one_form.h)
   void update_omega()
   {
-    const auto& frames = m_connection.frames;
-    const internal::Direction_field_cover& c = cover();
-    const double nu = internal::two_pi * m_frequency;
-    m_omega.assign(m_idx->number_of_edges(), Value::Zero());
-    auto sheet_angle = [&](std::size_t v, int sheet) { return c.angle[v] + internal::two_pi * sheet / double(m_n); };
-    auto sheet_vector = [&](std::size_t v, int sheet) {
-      // sheet + n/2 is exactly the opposite of sheet
-      const int half = (std::max)(m_n / 2, 1);
-      const int base = m_n == 1 ? 0 : sheet % half;
-      const double sign = m_n == 1 || (sheet % m_n) < half ? 1. : -1.;
-      return Eigen::Vector3d(sign * frames.to_vector(v, sheet_angle(v, base)));
-    };
-    for(std::size_t e = 0; e < m_omega.size(); ++e)
-    {
-      const auto h = m_idx->oriented_halfedge(e);
-      const auto o = opposite(h, m_tm);
-      const std::size_t i = m_idx->source_index(h), j = m_idx->target_index(h);
-      for(int a = 0; a < c.d; ++a)
-      {
-        const int b = a + c.matching[e];
-        if(m_convention == One_form_convention::projected)
-        {
-          const Eigen::Vector3d d = internal::position(m_vpm, m_idx->vertex(j)) - internal::position(m_vpm, m_idx->vertex(i));
-          m_omega[e][a] = 0.5 * nu * (sheet_vector(i, a) + sheet_vector(j, b)).dot(d);
-        }
-        else
-          m_omega[e][a] = 0.5 * nu * m_length[e] *
-                          (std::cos(sheet_angle(i, a) - frames.angle[m_idx->index(h)]) -
-                           std::cos(sheet_angle(j, b) - frames.angle[m_idx->index(o)]));
-      }
-    }
-    if(!m_solver->has_spokes())
-      return;
-    // the spokes' targets: the field of the face's reference sheets at corner k integrated from
-    // the corner to the branch point o (on corner k, reference sheet a is sheet b of its vertex
-    // where the walk's transport M_k has its entry +-1)
-    std::vector<std::array<Value, 3>> target(m_idx->number_of_faces());
-    for(std::size_t f = 0; f < target.size(); ++f)
-    {
-      if(c.regular[f])
-        continue;
-      const Eigen::Vector3d o = branch_point_position(f);
-      Eigen::Matrix2d M = Eigen::Matrix2d::Identity();
-      int k = 0;
-      for(auto h : halfedges_around_face(halfedge(m_idx->face(f), m_tm), m_tm))
-      {
-        const std::size_t v = m_idx->index(source(h, m_tm));
-        const Eigen::Vector3d x = internal::position(m_vpm, source(h, m_tm));
-        Value b = Value::Zero();
-        for(int a = 0; a < c.d; ++a)
-          for(int s2 = 0; s2 < c.d; ++s2)
-            if(M(a, s2) != 0.)
-              b[a] = nu * M(a, s2) * sheet_vector(v, s2).dot(o - x);
-        target[f][std::size_t(k)] = b;
-        M = M * m_solver->transition_along(m_idx->index(h));
-        ++k;
-      }
-      if(c.d == 2) // a cross field: the cone's exact map (see internal::conformal_cone_targets())
-      {
-        std::array<Eigen::Vector2d, 3> t;
-        for(std::size_t i = 0; i < 3; ++i)
-          t[i] = target[f][i].head<2>();
-        t = internal::conformal_cone_targets(corners(f), o, t, 1. - c.index_numerator[f] / double(m_n));
-        for(std::size_t i = 0; i < 3; ++i)
-          target[f][i].head<2>() = t[i];
-      }
-    }
-    m_solver->set_spoke_targets(target);
+    const internal::Cover_sheet_field field{m_connection.frames, cover(), m_frequency_scale};
+    m_omega = internal::branched_edge_targets(*m_idx, m_vpm, field, m_length, m_frequency,
+                                              m_convention == One_form_convention::projected);
+    if(m_solver->has_spokes())
+      m_solver->set_spoke_targets(internal::branched_spoke_targets(
+        *m_idx, m_vpm, field, m_frequency, [this](std::size_t h) { return m_solver->transition_along(h); }));
   }
 
   // The walk around face f: beta[0..2] at its corners (unwrapped along its first two halfedges),
@@ -977,6 +960,7 @@ private:
   std::unique_ptr<Solver> m_solver;
   One_form_convention m_convention = One_form_convention::projected;
   double m_frequency = 1.;
+  std::vector<double> m_frequency_scale; // per vertex (set_frequency_scale()), empty: all 1
   std::vector<Value> m_omega;
   std::vector<Eigen::Vector2i> m_index;
   std::optional<std::vector<Eigen::Vector2i>> m_relaxation;

@@ -13,6 +13,7 @@
 #include <CGAL/Surface_design/internal/Core/geometry.h>
 #include <CGAL/Surface_design/internal/Core/named_parameters.h>
 #include <CGAL/Surface_design/internal/Field_aligned_parameterization/quad_extraction.h>
+#include <CGAL/Surface_design/internal/Field_aligned_parameterization/quad_sizing.h>
 #include <CGAL/Surface_design/internal/Field_aligned_parameterization/quad_snapping.h>
 #include <CGAL/Surface_design/parameters.h>
 
@@ -20,9 +21,12 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
+#include <boost/property_map/function_property_map.hpp>
+
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,7 +46,9 @@ struct Field_aligned_quad_remeshing_result
   std::size_t folded_faces = 0;        ///< faces where the last map folds (its lines may still be a quad mesh)
   long euler_characteristic = 0;       ///< V - E + F of the result: that of the input
   std::size_t boundary_loops = 0;      ///< of the result: the input's, each a line of the quads
-  double edge_length = 0.;             ///< the spacing h of the lines
+  double edge_length = 0.;             ///< the spacing h of the lines (their mean, with `edge_length_ratio`)
+  /// the range of the local spacing (h without `edge_length_ratio`)
+  double smallest_edge_length = 0., largest_edge_length = 0.;
   /// with `feature_snapping(true)`: the input's interior vertices and crease points farther than
   /// h / 4 from the quads, and the quads' vertices moved onto them
   std::size_t far_input_vertices = 0, snapped_vertices = 0;
@@ -186,14 +192,32 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
                                   " holds a stripe singularity: a dislocation is a T-junction, not a quad mesh");
   const internal::Quad_extraction_input surface = internal::quad_extraction_input(idx, bsp.vertex_point_map());
   const double h = 1. / bsp.frequency();
-  if(surface.area / (h * h) > 1e7)
+  // about sum_v A_v (s_v / h)^2 quads, s the frequency scale
+  double quads = 0.;
+  {
+    const std::vector<double> area = internal::vertex_areas(idx, internal::face_areas(idx, bsp.vertex_point_map()));
+    for(auto v : vertices(bsp.mesh()))
+      quads += area[idx.index(v)] * std::pow(bsp.frequency_scale(v) / h, 2);
+  }
+  if(quads > 1e7)
     throw Invalid_parameter("stripes_per_unit_length", "must give at most 10^7 quads (the spacing 1 / frequency is " +
-                                                         std::to_string(h) + ")");
+                                                         std::to_string(h) + (quads > surface.area / (h * h) ?
+                                                         ", divided by the frequency scale" : "") + ")");
   if(!bsp.is_solved())
     bsp.solve();
 
   Field_aligned_quad_remeshing_result result;
   result.edge_length = h;
+  {
+    double lo = std::numeric_limits<double>::infinity(), hi = 0.;
+    for(auto v : vertices(bsp.mesh()))
+    {
+      lo = (std::min)(lo, 1. / bsp.frequency_scale(v));
+      hi = (std::max)(hi, 1. / bsp.frequency_scale(v));
+    }
+    result.smallest_edge_length = lo * h;
+    result.largest_edge_length = hi * h;
+  }
   result.cones = bsp.branch_faces().size();
   std::vector<internal::Quad_extraction_cone> cones;
   std::vector<int> cone_index;
@@ -395,6 +419,16 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{sqrt(area / 3000): about 3000 quads}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_length_ratio}
+///     \cgalParamDescription{curvature-adapted sizing: the largest local spacing over the smallest.
+///                           Above 1 the spacing follows 1 / sqrt(kappa) (kappa: the largest absolute
+///                           principal curvature, smoothed at the scale of h), an even chord error,
+///                           within that ratio, grows by at most a quarter of the distance, and keeps
+///                           h as its mean (about as many quads; see
+///                           `Branched_stripe_parameterizer::set_frequency_scale()`)}
+///     \cgalParamType{`double`, in [1, 100]}
+///     \cgalParamDefault{1: the same spacing everywhere}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{stiffening_rounds}
 ///     \cgalParamDescription{the most rounds of stiffening where the map folds}
 ///     \cgalParamType{`int`, in [0, 64]}
@@ -466,12 +500,23 @@ Field_aligned_quad_remeshing_result field_aligned_quad_remeshing(const TriangleM
   if(!std::isfinite(h) || !(h > 0.) || area / (h * h) > 1e7)
     throw Invalid_parameter("target_edge_length", "must be finite and positive and give at most 10^7 quads, got " +
                                                     std::to_string(h));
+  const double ratio = choose_parameter(get_parameter(np, internal_np::edge_length_ratio), 1.);
+  if(!(ratio >= 1. && ratio <= 100.))
+    throw Invalid_parameter("edge_length_ratio", "must lie in [1, 100], got " + std::to_string(ratio));
   // (the switches first: set_field() then factors once)
   const double smoothing = internal::require_nonnegative(
     "boundary_smoothing_length", choose_parameter(get_parameter(np, internal_np::boundary_smoothing_length), 0.));
   bsp.set_lattice_branch_points(true);
   if(bsp.topology().boundary.size() != 0)
     bsp.set_boundary_on_level_lines(true, smoothing);
+  if(ratio > 1.)
+  {
+    const internal::Quad_sizing sizing =
+      internal::curvature_adapted_frequency_scale(bsp.indices(), bsp.vertex_point_map(), h, ratio);
+    const auto& idx = bsp.indices();
+    bsp.set_frequency_scale(boost::make_function_property_map<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>(
+      [&](typename boost::graph_traits<TriangleMesh>::vertex_descriptor v) { return sizing.scale[idx.index(v)]; }));
+  }
   bsp.set_field(field, 1. / h); // throws where the field runs along the boundary
   bsp.solve();
   // (the parameters it reads: the rounds and the visitor)

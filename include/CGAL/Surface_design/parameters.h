@@ -67,6 +67,7 @@ enum all_quads_t { all_quads };
 enum curvature_adaptation_t { curvature_adaptation };
 enum feature_snapping_t { feature_snapping };
 enum stiffening_rounds_t { stiffening_rounds };
+enum edge_length_ratio_t { edge_length_ratio };
 } // namespace internal_np
 
 /// \ingroup PkgSurfaceDesignRef
@@ -147,6 +148,7 @@ CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(all_quads)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(curvature_adaptation)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(feature_snapping)
 CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(stiffening_rounds)
+CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER(edge_length_ratio)
 
 #undef CGAL_SURFACE_DESIGN_ADD_NAMED_PARAMETER
 
