@@ -7,6 +7,8 @@
 #ifndef CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_SHIFT_INVERT_LANCZOS_H
 #define CGAL_SURFACE_DESIGN_INTERNAL_SOLVERS_SHIFT_INVERT_LANCZOS_H
 
+#include <CGAL/Surface_design/internal/Solvers/large_buffer.h>
+
 #include <Eigen/Dense>
 
 #include <cmath>
@@ -46,7 +48,7 @@ Lanczos_result largest_eigenvectors_by_group(Solve&& solve, const Eigen::VectorX
   const Eigen::Index N = mass.size();
   // one group (a connected mesh): plain vectorized products
   const bool single = G == 1;
-  auto dots = [&](const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  auto dots = [&](const auto& a, const auto& b) {
     std::vector<double> d(G, 0.);
     if(single)
       d[0] = mass.cwiseProduct(a).dot(b);
@@ -55,14 +57,14 @@ Lanczos_result largest_eigenvectors_by_group(Solve&& solve, const Eigen::VectorX
         d[group_of_row[std::size_t(r)]] += mass[r] * a[r] * b[r];
     return d;
   };
-  auto scale_by_group = [&](Eigen::VectorXd& a, const std::vector<double>& s) {
+  auto scale_by_group = [&](auto&& a, const std::vector<double>& s) {
     if(single)
       a *= s[0];
     else
       for(Eigen::Index r = 0; r < N; ++r)
         a[r] *= s[group_of_row[std::size_t(r)]];
   };
-  auto subtract_by_group = [&](Eigen::VectorXd& w, const std::vector<double>& c, const Eigen::VectorXd& q) {
+  auto subtract_by_group = [&](auto&& w, const std::vector<double>& c, const auto& q) {
     if(single)
       w -= c[0] * q;
     else
@@ -82,27 +84,32 @@ Lanczos_result largest_eigenvectors_by_group(Solve&& solve, const Eigen::VectorX
   if(max_basis < 2)
     max_basis = 2;
 
-  std::vector<Eigen::VectorXd> q;
+  // the basis in one buffer of max_basis columns (huge pages where it is large: a fresh 4 kB page
+  // costs as much as the products on it on some virtual machines), the work vectors reused
+  Large_buffer<double> basis;
+  basis.resize_uninitialized(std::size_t(N) * max_basis);
+  auto q = [&](std::size_t i) { return Eigen::Map<Eigen::VectorXd>(basis.data() + std::size_t(N) * i, N); };
+  Eigen::VectorXd w(N), rhs(N);
   std::vector<Eigen::MatrixXd> h(G);
   std::vector<bool> done(G, false);
   while(true)
   {
-    q.assign(1, start);
+    q(0) = start;
     for(auto& hg : h)
       hg = Eigen::MatrixXd::Zero(Eigen::Index(max_basis), Eigen::Index(max_basis));
     std::vector<Eigen::VectorXd> ritz(G);
     for(std::size_t j = 0;; ++j)
     {
-      Eigen::VectorXd w(N);
-      solve(Eigen::VectorXd(mass.cwiseProduct(q[j])), w);
+      rhs = mass.cwiseProduct(q(j));
+      solve(rhs, w);
       ++out.solves;
       for(int pass = 0; pass < 2; ++pass)
         for(std::size_t i = 0; i <= j; ++i)
         {
-          const std::vector<double> c = dots(q[i], w);
+          const std::vector<double> c = dots(q(i), w);
           for(std::size_t g = 0; g < G; ++g)
             h[g](Eigen::Index(i), Eigen::Index(j)) += c[g];
-          subtract_by_group(w, c, q[i]);
+          subtract_by_group(w, c, q(i));
         }
       const std::vector<double> beta2 = dots(w, w);
 
@@ -134,7 +141,7 @@ Lanczos_result largest_eigenvectors_by_group(Solve&& solve, const Eigen::VectorX
           std::vector<double> c(G, 0.);
           for(std::size_t g = 0; g < G; ++g)
             c[g] = active[g] ? -ritz[g][Eigen::Index(i)] : 0.;
-          subtract_by_group(x, c, q[i]);
+          subtract_by_group(x, c, q(i));
         }
         scale_by_group(x, inverse_norms(dots(x, x)));
         out.x = x;
@@ -144,7 +151,7 @@ Lanczos_result largest_eigenvectors_by_group(Solve&& solve, const Eigen::VectorX
         if(active[g])
           h[g](Eigen::Index(j + 1), Eigen::Index(j)) = std::sqrt((std::max)(beta2[g], 0.));
       scale_by_group(w, inverse_norms(beta2)); // an exhausted group (beta = 0) continues with zeros
-      q.push_back(std::move(w));
+      q(j + 1) = w;
     }
     if(out.converged || out.solves >= max_solves)
       return out;
