@@ -1798,7 +1798,7 @@ Mesh ellipsoid(std::size_t n, double a)
   return mesh;
 }
 
-TEMPLATE_TEST_CASE("A frequency scale: constant, it is the frequency; varying, the targets' trapezoid rule",
+TEMPLATE_TEST_CASE("A frequency scale: constant, it is the frequency, and varying, the targets' trapezoid rule",
                    "[field_aligned_quads][sizing]", SD_MESH_TYPES)
 {
   using Mesh = TestType;

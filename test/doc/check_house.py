@@ -10,7 +10,9 @@
    headers: never another package's folder nor a public algorithm header;
 4. no installed header (include/CGAL/Surface_design/**.h) exceeds 1000 lines;
 5. the programs and the manuals' examples (every .cpp and .h under examples/) use public headers
-   only: no include under CGAL/Surface_design/internal/ and no name qualified with internal::.
+   only: no include under CGAL/Surface_design/internal/ and no name qualified with internal::;
+6. no test name of test/*.cpp holds a ';': CTest's discovery splits the name there and registers
+   halves that match no test, which then fail.
 Comments are ignored.
 
 Usage: check_house.py PROJECT_ROOT      (exit 1 naming each offending line)
@@ -23,6 +25,7 @@ import tempfile
 
 INCLUDE = re.compile(r'#\s*include\s*[<"]CGAL/Surface_design/([^>"]+)[>"]')
 QUOTED = re.compile(r'#\s*include\s*"([^"]+)"')
+TEST_NAME = re.compile(r'\b(?:TEMPLATE_)?TEST_CASE\s*\(\s*"((?:[^"\\]|\\.)*)"')
 QUALIFIED = re.compile(r'\binternal::|namespace\s+\w+\s*=\s*[\w:]*\binternal\b|using\s+namespace\s+[\w:]*\binternal\b')
 TYPE_HEADERS = {"exceptions.h", "parameters.h", "edge_weighting.h", "developability_energy.h"}
 MAX_LINES = 1000
@@ -103,6 +106,12 @@ def offenders(root):
             target = included(path, code, headers)
             if (target and target.startswith("internal/")) or QUALIFIED.search(code):
                 found.append("%s:%d: uses the library's internals: %s" % (os.path.relpath(path, root), number, line.strip()))
+    for path in files(os.path.join(root, "test"), (".cpp",)):
+        for number, code, line in code_lines(path):
+            m = TEST_NAME.search(code)
+            if m and ";" in m.group(1):
+                found.append("%s:%d: a test name with ';' (CTest splits it there): %s"
+                             % (os.path.relpath(path, root), number, m.group(1)))
     return found
 
 
@@ -114,7 +123,8 @@ def self_test():
                                                             "#include <CGAL/Surface_design/internal/Pkg/d.h>\n",
             "include/CGAL/Surface_design/algorithm.h": "#include <CGAL/Surface_design/internal/Pkg/c.h>\n",
             "examples/Programs/p.cpp": "#include <CGAL/Surface_design/algorithm.h>\nint x; // internal:: here is a comment\n"
-                                       "/* internal::g()\n   still internal:: */ int y;\n"}
+                                       "/* internal::g()\n   still internal:: */ int y;\n",
+            "test/t.cpp": 'TEMPLATE_TEST_CASE("a name, with commas: and colons", "[t]", int) {}\n'}
     cases = [("a good tree", {}, False),
              ("the wing includes the core", {"include/CGAL/Surface_design/internal/Solvers/a.h":
                                              "#include <CGAL/Surface_design/internal/Core/b.h>\n"}, True),
@@ -139,7 +149,8 @@ def self_test():
              ("an example uses the internal namespace", {"examples/Pkg/e.cpp":
                                                          "using namespace CGAL::Surface_design::internal;\n"}, True),
              ("an example includes an internal header by a quoted path", {"examples/Pkg/e.cpp":
-                                                                          '#include "../../include/CGAL/Surface_design/internal/Core/b.h"\n'}, True)]
+                                                                          '#include "../../include/CGAL/Surface_design/internal/Core/b.h"\n'}, True),
+             ("a test name with a semicolon", {"test/t.cpp": 'TEST_CASE("constant; varying", "[t]") {}\n'}, True)]
     ok = True
     for title, change, bad in cases:
         tree = dict(good)
@@ -167,7 +178,7 @@ def main():
         print(line)
     if not found:
         print("the layout holds: the wing and the core include nothing above them, no package includes another, "
-              "no header exceeds %d lines, examples/ uses public headers only" % MAX_LINES)
+              "no header exceeds %d lines, examples/ uses public headers only, no test name holds ';'" % MAX_LINES)
     return 1 if found else 0
 
 
