@@ -1868,6 +1868,36 @@ TEMPLATE_TEST_CASE("A frequency scale: constant, it is the frequency, and varyin
   CHECK(scaled.target_one_form() == before);
   scaled.clear_frequency_scale();
   CHECK(scaled.frequency_scale(*vertices(torus).begin()) == 1.);
+
+  // with cones and lattice branch points, the spokes' targets too: a constant scale solves as the
+  // frequency it multiplies (the torus has no cone, hence no spoke)
+  const Mesh pebble = test::load_mesh<Mesh>("pebble_1k.off");
+  const auto pebble_field = smoothest_cross_field(pebble);
+  REQUIRE(cones_of(pebble, pebble_field).size() > 0);
+  const double f = 1. / std::sqrt(surface_area(pebble) / 300.);
+  std::map<vertex_descriptor, double> constant;
+  for(auto v : vertices(pebble))
+    constant[v] = 1.7;
+  SD::Branched_stripe_parameterizer with_scale(pebble, SD::parameters::symmetry_order(4));
+  SD::Branched_stripe_parameterizer with_frequency(pebble, SD::parameters::symmetry_order(4));
+  with_scale.set_lattice_branch_points(true);
+  with_frequency.set_lattice_branch_points(true);
+  with_scale.set_frequency_scale(boost::make_assoc_property_map(constant));
+  with_scale.set_field(pebble_field.map(), f);
+  with_frequency.set_field(pebble_field.map(), 1.7 * f);
+  with_scale.solve();
+  with_frequency.solve();
+  const auto& ya = with_scale.one_form();
+  const auto& yb = with_frequency.one_form();
+  REQUIRE(ya.size() == yb.size());
+  double worst = 0., largest = 0.;
+  for(std::size_t e = 0; e < ya.size(); ++e)
+  {
+    worst = (std::max)(worst, (ya[e] - yb[e]).cwiseAbs().maxCoeff());
+    largest = (std::max)(largest, yb[e].cwiseAbs().maxCoeff());
+  }
+  CHECK(largest > 0.1);
+  CHECK(worst <= 1e-9 * largest);
 }
 
 TEMPLATE_TEST_CASE("Curvature-adapted sizing: the curvature of a sphere and an ellipsoid, the spacing's bounds, "
@@ -1893,6 +1923,18 @@ TEMPLATE_TEST_CASE("Curvature-adapted sizing: the curvature of a sphere and an e
   for(double s : SDI::curvature_adapted_frequency_scale(sphere_idx, vpm, 0.3, 4.).scale)
     CHECK(std::abs(s - 1.) < 0.05);
   for(double s : SDI::curvature_adapted_frequency_scale(sphere_idx, vpm, 0.3, 1.).scale)
+    CHECK(s == 1.);
+  // a plane, tilted: its dihedral angles are rounding noise (about 1e-15), which must not size it
+  Mesh plate;
+  SD::make_grid(plate, 20, 20, 0.3);
+  auto plate_vpm = get(CGAL::vertex_point, plate);
+  for(auto v : vertices(plate))
+  {
+    const auto p = get(plate_vpm, v);
+    put(plate_vpm, v, Point_of<Mesh>(0.6 * p.x() + 0.3 * p.y(), 0.7 * p.y() - 0.2 * p.x(), 0.5 * p.x() + 0.4 * p.y()));
+  }
+  const SDI::Mesh_indices<Mesh> plate_idx(plate);
+  for(double s : SDI::curvature_adapted_frequency_scale(plate_idx, plate_vpm, 0.1, 4.).scale)
     CHECK(s == 1.);
 
   // the ellipsoid (3, 1, 1): curvature 3 at the tips, 1 on the equator
@@ -1941,6 +1983,25 @@ TEMPLATE_TEST_CASE("Curvature-adapted sizing: the curvature of a sphere and an e
       steepest = (std::max)(steepest, std::abs(h / s[i] - h / s[j]) / d);
     }
     CHECK(steepest <= grading * 1.002);
+  }
+  // without grading, the scale is sqrt(kappa) up to a constant wherever the bounds do not bind
+  // (kappa at the scale of h, as the sizing measures it): s^2 / kappa the same at every such vertex
+  {
+    const std::vector<double> kappa_h = SDI::largest_curvature_magnitudes(idx, egg_vpm, h);
+    const std::vector<double> s = SDI::curvature_adapted_frequency_scale(idx, egg_vpm, h, 4., 1e9).scale;
+    const auto [lo, hi] = std::minmax_element(s.begin(), s.end());
+    double least = std::numeric_limits<double>::infinity(), most = 0.;
+    std::size_t free = 0;
+    for(std::size_t v = 0; v < s.size(); ++v)
+      if(s[v] > *lo * (1. + 1e-9) && s[v] < *hi * (1. - 1e-9))
+      {
+        ++free;
+        least = (std::min)(least, s[v] * s[v] / kappa_h[v]);
+        most = (std::max)(most, s[v] * s[v] / kappa_h[v]);
+      }
+    CAPTURE(free, least, most);
+    CHECK(free > s.size() / 4);
+    CHECK(most <= least * (1. + 1e-9));
   }
 }
 

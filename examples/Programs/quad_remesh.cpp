@@ -74,7 +74,7 @@ const char* usage =
   "                        degrees or more within S h are kept\n"
   "  --edge-length-ratio R curvature-adapted sizing: the spacing follows 1 / sqrt(curvature), an even\n"
   "                        chord error, with the largest R times the smallest (R in [1, 100]; default\n"
-  "                        1: uniform); the mean stays h, the face count about the same\n"
+  "                        1: uniform), as many faces as h everywhere would give\n"
   "  --stiffening-rounds R rounds of local stiffening where the map folds (default 10, R in [0, 64])\n"
   "  --no-input-remeshing  fail where the input's own triangles do not give the quads (given cones\n"
   "                        go, on the remeshed input, to the faces nearest theirs)\n"

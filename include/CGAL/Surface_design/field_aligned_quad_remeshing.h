@@ -46,8 +46,10 @@ struct Field_aligned_quad_remeshing_result
   std::size_t folded_faces = 0;        ///< faces where the last map folds (its lines may still be a quad mesh)
   long euler_characteristic = 0;       ///< V - E + F of the result: that of the input
   std::size_t boundary_loops = 0;      ///< of the result: the input's, each a line of the quads
-  double edge_length = 0.;             ///< the spacing h of the lines (their mean, with `edge_length_ratio`)
-  /// the range of the local spacing (h without `edge_length_ratio`)
+  /// the spacing h of the lines (with `edge_length_ratio`: the uniform spacing of the same count of quads)
+  double edge_length = 0.;
+  /// the range of the local spacing prescribed (h without `edge_length_ratio`; the map's own
+  /// spacing departs from it a little where the least squares spread the curl)
   double smallest_edge_length = 0., largest_edge_length = 0.;
   /// with `feature_snapping(true)`: the input's interior vertices and crease points farther than
   /// h / 4 from the quads, and the quads' vertices moved onto them
@@ -423,11 +425,13 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
 ///     \cgalParamDescription{curvature-adapted sizing: the largest local spacing over the smallest.
 ///                           Above 1 the spacing follows 1 / sqrt(kappa) (kappa: the largest absolute
 ///                           principal curvature, smoothed at the scale of h), an even chord error,
-///                           within that ratio, grows by at most a quarter of the distance, and keeps
-///                           h as its mean (about as many quads; see
+///                           within that ratio, grows by at most a quarter of the distance, and is
+///                           normalized to as many quads as h everywhere would give (the mean spacing
+///                           is then a little above h; see
 ///                           `Branched_stripe_parameterizer::set_frequency_scale()`)}
 ///     \cgalParamType{`double`, in [1, 100]}
 ///     \cgalParamDefault{1: the same spacing everywhere}
+///     \cgalParamExtra{throws `Invalid_parameter` if it is outside [1, 100] or not finite}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{stiffening_rounds}
 ///     \cgalParamDescription{the most rounds of stiffening where the map folds}
@@ -472,7 +476,7 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
 /// \cgalNamedParamsEnd
 ///
 /// \throws Invalid_mesh on bad input; Invalid_parameter (h not finite and positive, more than
-///         10^7 quads, rounds out of range, a field vector not finite or normal to the surface);
+///         10^7 quads, rounds out of range, `edge_length_ratio` outside [1, 100], a field vector not finite or normal to the surface);
 ///         Invalid_constraints (cones that no quad mesh has: no windings put them all on the
 ///         lattice);
 ///         Remeshing_failure when the lines do not form such a quad mesh (the map still folds:

@@ -128,8 +128,9 @@ struct Quad_sizing
 /// times the finest (the finest: at the area-weighted 98th percentile of the curvature, so that a
 /// few spikes do not set it), graded so that it grows by at most `grading` per unit length
 /// (h_u <= h_v + grading |uv|: no abrupt change for the map to absorb), and the scale normalized
-/// so that sum_v A_v s_v^2 = area: about as many quads as with h everywhere. A surface with no
-/// curvature, or `ratio` 1, gives 1 everywhere.
+/// so that sum_v A_v s_v^2 = area: about as many quads as with h everywhere (h is then the
+/// uniform spacing of the same count, not the mean spacing, which is larger). A surface with no
+/// curvature at the scale of h, or `ratio` 1, gives 1 everywhere.
 template <class Indices, class VertexPointMap>
 Quad_sizing curvature_adapted_frequency_scale(const Indices& idx, const VertexPointMap& vpm, double h, double ratio,
                                               double grading = 0.25)
@@ -153,7 +154,9 @@ Quad_sizing curvature_adapted_frequency_scale(const Indices& idx, const VertexPo
     if(cumulated >= 0.98 * total_area)
       break;
   }
-  if(!(top > 0.))
+  // no curvature at the scale of h (a sagitta below 1e-7 h: a plane, tilted or not, whose
+  // dihedral angles are rounding noise): uniform spacing
+  if(!(top * h > 1e-6))
     return out;
   // relative density g = sqrt(kappa / top), in [1 / ratio, 1]
   std::vector<double> s(nv);
@@ -202,11 +205,12 @@ Quad_sizing curvature_adapted_frequency_scale(const Indices& idx, const VertexPo
   };
   // the normalization after the grading coarsens everything a little, and the grading may then
   // bind again: alternate until the normalization changes the spacing by less than 0.1% (the
-  // slope of the spacing is then at most 1.001 times `grading`)
-  for(int round = 0; round < 20; ++round)
+  // slope of the spacing is then at most 1.001 times `grading`); after 20 rounds, the last
+  // normalization stands (the count of quads is the promise, the slope a little steeper)
+  for(int round = 0;; ++round)
   {
     const double grown = normalize();
-    if(round > 0 && grown < 1.001)
+    if((round > 0 && grown < 1.001) || round == 20)
       break;
     grade();
   }

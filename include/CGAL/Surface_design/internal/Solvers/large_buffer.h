@@ -60,10 +60,15 @@ public:
   /// values are known to be zero (fresh pages from the kernel).
   bool resize_uninitialized(std::size_t n)
   {
-    m_size = n;
     if(n <= m_capacity)
+    {
+      m_size = n;
       return false;
-    release();
+    }
+    release(); // on a failure below, the buffer is left empty
+    m_size = 0;
+    if(n > (SIZE_MAX - 2 * huge_page) / sizeof(T))
+      throw std::bad_alloc();
     const std::size_t bytes = n * sizeof(T);
 #if defined(__linux__) && defined(MAP_ANONYMOUS)
     if(bytes >= mapped_from)
@@ -81,6 +86,7 @@ public:
       madvise(reinterpret_cast<void*>(aligned), length - (aligned - address), MADV_HUGEPAGE); // advice only
 #endif
       m_capacity = (length - (aligned - address)) / sizeof(T);
+      m_size = n;
       return true;
     }
 #endif
@@ -88,6 +94,7 @@ public:
     if(m_data == nullptr)
       throw std::bad_alloc();
     m_capacity = n;
+    m_size = n;
     return false;
   }
 
