@@ -41,6 +41,9 @@ struct Machine_info
   bool cholmod = false;
   std::string cholmod_version; ///< empty without CHOLMOD
   std::string date;            ///< UTC, ISO 8601
+  /// the environment's GLIBC_TUNABLES, or "" (`stripe_peer_comparison.py --warm-heap` sets the
+  /// allocator's thresholds there: pages kept between calls, README "Stripes on line fields")
+  std::string allocator_tunables;
 };
 
 namespace machine_info_detail {
@@ -124,6 +127,8 @@ inline Machine_info machine_info()
   if(gmtime_r(&now, &utc))
     std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", &utc);
   m.date = date;
+  if(const char* tunables = std::getenv("GLIBC_TUNABLES"))
+    m.allocator_tunables = tunables;
   return m;
 }
 

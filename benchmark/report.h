@@ -235,7 +235,8 @@ inline bool write_json(const std::string& path, const Machine_info& machine,
       << "    \"cholmod_available\": " << (machine.cholmod ? "true" : "false") << ",\n"
       << "    \"cholmod_version\": "
       << (machine.cholmod ? str(machine.cholmod_version) : std::string("null")) << ",\n"
-      << "    \"date\": " << str(machine.date) << "\n  },\n";
+      << "    \"date\": " << str(machine.date) << ",\n"
+      << "    \"glibc_tunables\": " << str(machine.allocator_tunables) << "\n  },\n";
   out << "  \"settings\": {\"warmup\": " << settings.warmup << ", \"runs\": " << settings.runs
       << ", \"command\": " << str(command_line) << "},\n";
 
