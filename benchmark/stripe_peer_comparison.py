@@ -20,12 +20,13 @@ the driver against it with -O3 (once; kept in BUILD_DIR/benchmark/geometry_centr
 Both programs run one after the other on an otherwise idle machine, R runs each after a warm-up
 (default 5), medians reported.
 
---warm-heap runs both programs with glibc's allocator told to keep freed memory (GLIBC_TUNABLES
-glibc.malloc.mmap_threshold at 32 MB, the largest it takes, and trim_threshold at 1 GB), so that a run after the warm-up reuses
-pages already mapped instead of faulting in fresh ones: the steady state of a program that calls
-the library again and again (the editor). Without it, glibc returns every large block to the
-kernel when it is freed, and every run pays the kernel's zeroing of its fresh pages (about 12 us
-per 4 kB page on the development VM; 5 700 pages per smoothest line field at 60k faces).
+--warm-heap runs both programs with glibc's allocator told to keep freed memory (GLIBC_TUNABLES:
+glibc.malloc.mmap_threshold at 32 MB, the largest it takes, and trim_threshold at 1 GB), so that
+a run after the warm-up reuses pages already mapped instead of faulting in fresh ones: repeated
+use. Without it, glibc gives large freed blocks back to the kernel, and a run pays the kernel's
+zeroing of its fresh pages (about 12 us per 4 kB page on the development VM; 11 000 pages per
+line_field_stripes call on bunny_60k). A long-running program such as the editor's server mostly
+reuses its pages either way (glibc raises its thresholds to the blocks it has seen freed).
 """
 import json
 import os

@@ -476,7 +476,8 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
 /// \cgalNamedParamsEnd
 ///
 /// \throws Invalid_mesh on bad input; Invalid_parameter (h not finite and positive, more than
-///         10^7 quads, rounds out of range, `edge_length_ratio` outside [1, 100], a field vector not finite or normal to the surface);
+///         10^7 quads, rounds out of range, `edge_length_ratio` outside [1, 100], a field vector
+///         not finite or normal to the surface);
 ///         Invalid_constraints (cones that no quad mesh has: no windings put them all on the
 ///         lattice);
 ///         Remeshing_failure when the lines do not form such a quad mesh (the map still folds:
