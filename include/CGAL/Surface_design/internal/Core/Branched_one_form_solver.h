@@ -801,6 +801,64 @@ private:
     return y;
   }
 
+  // W y of a sparse form y (sorted by edge), sparse and sorted: its support and the edges of the
+  // branch faces whose spokes it reaches (as weighted_residual(), omega null)
+  Sparse_form weighted_sparse(const Sparse_form& y) const
+  {
+    Sparse_form out;
+    out.reserve(y.size());
+    for(const auto& [e, v] : y)
+      out.emplace_back(e, m_weight[e] * v);
+    if(!m_spokes)
+      return out;
+    auto value = [&y](std::size_t e) {
+      const auto it = std::lower_bound(y.begin(), y.end(), e, [](const auto& entry, std::size_t x) { return entry.first < x; });
+      return it != y.end() && it->first == e ? it->second : Value(Value::Zero());
+    };
+    const std::size_t own = out.size();
+    for(const Branch& b : m_branch)
+    {
+      const std::array<Value, 3> yb{value(b.edge[0]), value(b.edge[1]), value(b.edge[2])};
+      if(yb[0].isZero() && yb[1].isZero() && yb[2].isZero())
+        continue;
+      for(std::size_t k = 0; k < 3; ++k)
+      {
+        Value r = Value::Zero();
+        for(std::size_t j = 0; j < 3; ++j)
+          r += b.R[k][j] * yb[j];
+        r *= b.spoke_weight[k];
+        for(std::size_t j = 0; j < 3; ++j)
+          out.emplace_back(b.edge[j], b.R[k][j].transpose() * r);
+      }
+    }
+    if(out.size() == own)
+      return out;
+    // sorted, one entry per edge
+    std::stable_sort(out.begin(), out.end(), [](const auto& p, const auto& q) { return p.first < q.first; });
+    std::size_t last = 0;
+    for(std::size_t i = 1; i < out.size(); ++i)
+      if(out[i].first == out[last].first)
+        out[last].second += out[i].second;
+      else
+        out[++last] = out[i];
+    out.resize(last + 1);
+    return out;
+  }
+
+  // <x, y> of two sparse forms sorted by edge
+  static double sparse_sparse_dot(const Sparse_form& x, const Sparse_form& y)
+  {
+    double s = 0.;
+    for(std::size_t i = 0, j = 0; i < x.size() && j < y.size();)
+      if(x[i].first < y[j].first)
+        ++i;
+      else if(y[j].first < x[i].first)
+        ++j;
+      else
+        s += x[i++].second.dot(y[j++].second);
+    return s;
+  }
+
   // <eta, x> for x = weighted_residual(...)
   static double sparse_dot(const Sparse_form& eta, const std::vector<Value>& x)
   {
@@ -845,23 +903,54 @@ private:
     Eigen::MatrixXd all_potentials(keep_potentials ? Eigen::Index(nv * d) : 0, keep_potentials ? Eigen::Index(m) : 0);
     // the potentials of the directions solved by blocks of right-hand sides (a supernodal
     // factorization reads its factor once per block)
+    // The directions are sparse (paths of the dual forest, chains), and so is W eta_j: with the
+    // potential f_k of direction k (L f_k = -d_P^T W eta_k), its harmonic part is
+    // xi_k = eta_k + d_P f_k and the Gram entry <eta_j, W xi_k> = <W eta_j, eta_k + d_P f_k>, a sum
+    // over the support of W eta_j; the right-hand sides are scattered from it too.
+    std::vector<Sparse_form> w_eta(m);
+    for_each_index(m, true, [&](std::size_t j) { w_eta[j] = weighted_sparse(eta[j]); });
     Eigen::MatrixXd rhs, potentials;
     for(std::size_t k0 = 0; k0 < m; k0 += solve_block)
     {
       const std::size_t width = (std::min)(solve_block, m - k0);
-      rhs.resize(Eigen::Index(nv * d), Eigen::Index(width));
+      rhs.setZero(Eigen::Index(nv * d), Eigen::Index(width));
       for_each_index(width, true, [&](std::size_t c) {
-        rhs.col(Eigen::Index(c)) = potential_rhs(dense_form(eta[k0 + c], ne), nullptr);
+        auto b = rhs.col(Eigen::Index(c));
+        for(const auto& [e, x] : w_eta[k0 + c]) // b = -d_P^T (W eta)
+        {
+          const Value xj = m_P[e].transpose() * x;
+          for(std::size_t a = 0; a < d; ++a)
+          {
+            b[Eigen::Index(m_ends[e].first * d + a)] += x[Eigen::Index(a)];
+            b[Eigen::Index(m_ends[e].second * d + a)] -= xj[Eigen::Index(a)];
+          }
+        }
+        for(std::size_t i = 0; i < m_fixed.size(); ++i)
+          if(m_fixed[i])
+            b[Eigen::Index(i)] = 0.;
       });
       m_system.solve_many(rhs, potentials);
       if(keep_potentials)
         all_potentials.middleCols(Eigen::Index(k0), Eigen::Index(width)) = potentials;
       for_each_index(width, true, [&](std::size_t c) {
         const std::size_t k = k0 + c;
-        const std::vector<Value> xi = one_form_of_potential(dense_form(eta[k], ne), potentials.col(Eigen::Index(c)), nullptr);
-        const std::vector<Value> w_xi = weighted_residual(xi, nullptr);
+        const auto f = potentials.col(Eigen::Index(c));
         for(std::size_t j = 0; j < m; ++j)
-          full(Eigen::Index(j), Eigen::Index(k)) = sparse_dot(eta[j], w_xi);
+        {
+          double sum = sparse_sparse_dot(w_eta[j], eta[k]);
+          for(const auto& [e, x] : w_eta[j]) // <W eta_j, d_P f_k>
+          {
+            const auto [first, second] = m_ends[e];
+            for(std::size_t a = 0; a < d; ++a)
+            {
+              double dp = -f[Eigen::Index(first * d + a)];
+              for(std::size_t b = 0; b < d; ++b)
+                dp += m_P[e](Eigen::Index(a), Eigen::Index(b)) * f[Eigen::Index(second * d + b)];
+              sum += x[Eigen::Index(a)] * dp;
+            }
+          }
+          full(Eigen::Index(j), Eigen::Index(k)) = sum;
+        }
       });
     }
     full = 0.5 * (full + full.transpose()).eval();
