@@ -13,6 +13,7 @@
 #include <CGAL/Surface_design/internal/Core/cover_constraints.h>
 #include <CGAL/Surface_design/internal/Core/direction_field_cover.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
+#include <CGAL/Surface_design/internal/Core/sparse_one_forms.h>
 #include <CGAL/Surface_design/internal/Core/topology.h>
 #include <CGAL/Surface_design/internal/Solvers/Factored_system.h>
 #include <CGAL/Surface_design/internal/Solvers/integer_quadratic.h>
@@ -791,81 +792,32 @@ private:
     return y;
   }
 
-  using Sparse_form = std::vector<std::pair<std::size_t, Value>>;
+  using Sparse_form = Sparse_one_form; // sparse_one_forms.h
 
-  static std::vector<Value> dense_form(const Sparse_form& sparse, std::size_t ne)
-  {
-    std::vector<Value> y(ne, Value::Zero());
-    for(const auto& [e, v] : sparse)
-      y[e] = v;
-    return y;
-  }
-
-  // W y of a sparse form y (sorted by edge), sparse and sorted: its support and the edges of the
-  // branch faces whose spokes it reaches (as weighted_residual(), omega null)
+  // W y of a sparse form y, sparse: its support and the edges of the branch faces whose spokes it
+  // reaches (as weighted_residual(), omega null)
   Sparse_form weighted_sparse(const Sparse_form& y) const
   {
     Sparse_form out;
     out.reserve(y.size());
     for(const auto& [e, v] : y)
       out.emplace_back(e, m_weight[e] * v);
-    if(!m_spokes)
-      return out;
-    auto value = [&y](std::size_t e) {
-      const auto it = std::lower_bound(y.begin(), y.end(), e, [](const auto& entry, std::size_t x) { return entry.first < x; });
-      return it != y.end() && it->first == e ? it->second : Value(Value::Zero());
-    };
-    const std::size_t own = out.size();
-    for(const Branch& b : m_branch)
+    for(std::size_t i = 0; m_spokes && i < m_branch.size(); ++i)
     {
-      const std::array<Value, 3> yb{value(b.edge[0]), value(b.edge[1]), value(b.edge[2])};
+      const Branch& b = m_branch[i];
+      const std::array<Value, 3> yb{sparse_value(y, b.edge[0]), sparse_value(y, b.edge[1]), sparse_value(y, b.edge[2])};
       if(yb[0].isZero() && yb[1].isZero() && yb[2].isZero())
         continue;
       for(std::size_t k = 0; k < 3; ++k)
       {
-        Value r = Value::Zero();
-        for(std::size_t j = 0; j < 3; ++j)
-          r += b.R[k][j] * yb[j];
-        r *= b.spoke_weight[k];
+        const Value r = b.spoke_weight[k] * (b.R[k][0] * yb[0] + b.R[k][1] * yb[1] + b.R[k][2] * yb[2]);
         for(std::size_t j = 0; j < 3; ++j)
           out.emplace_back(b.edge[j], b.R[k][j].transpose() * r);
       }
     }
-    if(out.size() == own)
-      return out;
-    // sorted, one entry per edge
-    std::stable_sort(out.begin(), out.end(), [](const auto& p, const auto& q) { return p.first < q.first; });
-    std::size_t last = 0;
-    for(std::size_t i = 1; i < out.size(); ++i)
-      if(out[i].first == out[last].first)
-        out[last].second += out[i].second;
-      else
-        out[++last] = out[i];
-    out.resize(last + 1);
+    if(out.size() > y.size())
+      sort_and_merge(out);
     return out;
-  }
-
-  // <x, y> of two sparse forms sorted by edge
-  static double sparse_sparse_dot(const Sparse_form& x, const Sparse_form& y)
-  {
-    double s = 0.;
-    for(std::size_t i = 0, j = 0; i < x.size() && j < y.size();)
-      if(x[i].first < y[j].first)
-        ++i;
-      else if(y[j].first < x[i].first)
-        ++j;
-      else
-        s += x[i++].second.dot(y[j++].second);
-    return s;
-  }
-
-  // <eta, x> for x = weighted_residual(...)
-  static double sparse_dot(const Sparse_form& eta, const std::vector<Value>& x)
-  {
-    double s = 0.;
-    for(const auto& [e, v] : eta)
-      s += v.dot(x[e]);
-    return s;
   }
 
   // The free directions eta_j (sparse), their Gram matrix through the harmonic parts, and the
@@ -937,7 +889,7 @@ private:
         const auto f = potentials.col(Eigen::Index(c));
         for(std::size_t j = 0; j < m; ++j)
         {
-          double sum = sparse_sparse_dot(w_eta[j], eta[k]);
+          double sum = sparse_dot(w_eta[j], eta[k]);
           for(const auto& [e, x] : w_eta[j]) // <W eta_j, d_P f_k>
           {
             const auto [first, second] = m_ends[e];
