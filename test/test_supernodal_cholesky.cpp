@@ -157,8 +157,8 @@ TEST_CASE("Supernodal Cholesky: every pattern", "[supernodal]")
     REQUIRE(amd.info() == Eigen::Success);
     require_same_solutions(amd, Eigen::SimplicialLDLT<Real_matrix>(a), a);
     // the ordering, computed by AMD from the pattern of the lower triangle alone, is as good as
-    // the one Eigen's AMDOrdering computes from the whole matrix (the same fill and flops; AMD
-    // may order indistinguishable unknowns otherwise, as the rows of a column come in another
+    // the one Eigen's AMDOrdering computes from the whole matrix (the same fill and flops; the
+    // permutation may differ where AMD breaks ties, as the rows of a column come in another
     // order): real and complex, one triangle stored or both, explicit zeros in the pattern
     auto require_eigen_amd = [](const auto& m) {
       using Matrix = std::decay_t<decltype(m)>;
