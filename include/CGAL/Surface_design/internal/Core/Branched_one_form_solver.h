@@ -749,23 +749,49 @@ private:
   // d_P^T W (omega - ystar) (omega = 0 when null), 0 at pinned vertices
   Eigen::VectorXd potential_rhs(const std::vector<Value>& ystar, const std::vector<Value>* omega) const
   {
-    const std::size_t d = std::size_t(m_cover.d), ne = ystar.size();
     Eigen::VectorXd b = Eigen::VectorXd::Zero(Eigen::Index(m_fixed.size()));
     const std::vector<Value> residual = weighted_residual(ystar, omega);
-    for(std::size_t e = 0; e < ne; ++e)
+    for(std::size_t e = 0; e < residual.size(); ++e)
+      subtract_codifferential(e, residual[e], b);
+    zero_fixed_rows(b);
+    return b;
+  }
+
+  // b -= d_P^T x for x on edge e alone
+  template <class Vector>
+  void subtract_codifferential(std::size_t e, const Value& x, Vector&& b) const
+  {
+    const std::size_t d = std::size_t(m_cover.d);
+    const Value xj = m_P[e].transpose() * x;
+    for(std::size_t a = 0; a < d; ++a)
     {
-      const Value x = -residual[e];
-      const Value xj = m_P[e].transpose() * x;
-      for(std::size_t a = 0; a < d; ++a)
-      {
-        b[Eigen::Index(m_ends[e].first * d + a)] -= x[Eigen::Index(a)];
-        b[Eigen::Index(m_ends[e].second * d + a)] += xj[Eigen::Index(a)];
-      }
+      b[Eigen::Index(m_ends[e].first * d + a)] += x[Eigen::Index(a)];
+      b[Eigen::Index(m_ends[e].second * d + a)] -= xj[Eigen::Index(a)];
     }
+  }
+  template <class Vector>
+  void zero_fixed_rows(Vector&& b) const
+  {
     for(std::size_t i = 0; i < m_fixed.size(); ++i)
       if(m_fixed[i])
         b[Eigen::Index(i)] = 0.;
-    return b;
+  }
+
+  // the values of the potential f (d per vertex) at vertex v, 0 on unused sheets
+  template <class Potential>
+  Value potential_value(const Potential& f, std::size_t v) const
+  {
+    const std::size_t d = std::size_t(m_cover.d);
+    Value x = Value::Zero();
+    for(std::size_t a = 0; a < d; ++a)
+      x[Eigen::Index(a)] = f[Eigen::Index(v * d + a)];
+    return x;
+  }
+  // (d_P f) on edge e
+  template <class Potential>
+  Value differential(const Potential& f, std::size_t e) const
+  {
+    return m_P[e] * potential_value(f, m_ends[e].second) - potential_value(f, m_ends[e].first);
   }
 
   // y = ystar + d_P f, and f per vertex in `potential`
@@ -773,21 +799,14 @@ private:
   std::vector<Value> one_form_of_potential(const std::vector<Value>& ystar, const Potential& f,
                                            std::vector<Value>* potential) const
   {
-    const std::size_t d = std::size_t(m_cover.d), ne = ystar.size();
-    auto value = [&](std::size_t v) {
-      Value x = Value::Zero();
-      for(std::size_t a = 0; a < d; ++a)
-        x[Eigen::Index(a)] = f[Eigen::Index(v * d + a)];
-      return x;
-    };
-    std::vector<Value> y(ne);
-    for(std::size_t e = 0; e < ne; ++e)
-      y[e] = ystar[e] + m_P[e] * value(m_ends[e].second) - value(m_ends[e].first);
+    std::vector<Value> y(ystar.size());
+    for(std::size_t e = 0; e < y.size(); ++e)
+      y[e] = ystar[e] + m_P[e] * potential_value(f, m_ends[e].second) - potential_value(f, m_ends[e].first);
     if(potential)
     {
       potential->resize(m_idx.number_of_vertices());
       for(std::size_t v = 0; v < potential->size(); ++v)
-        (*potential)[v] = value(v);
+        (*potential)[v] = potential_value(f, v);
     }
     return y;
   }
@@ -867,19 +886,10 @@ private:
       const std::size_t width = (std::min)(solve_block, m - k0);
       rhs.setZero(Eigen::Index(nv * d), Eigen::Index(width));
       for_each_index(width, true, [&](std::size_t c) {
-        auto b = rhs.col(Eigen::Index(c));
-        for(const auto& [e, x] : w_eta[k0 + c]) // b = -d_P^T (W eta)
-        {
-          const Value xj = m_P[e].transpose() * x;
-          for(std::size_t a = 0; a < d; ++a)
-          {
-            b[Eigen::Index(m_ends[e].first * d + a)] += x[Eigen::Index(a)];
-            b[Eigen::Index(m_ends[e].second * d + a)] -= xj[Eigen::Index(a)];
-          }
-        }
-        for(std::size_t i = 0; i < m_fixed.size(); ++i)
-          if(m_fixed[i])
-            b[Eigen::Index(i)] = 0.;
+        auto b = rhs.col(Eigen::Index(c)); // -d_P^T (W eta)
+        for(const auto& [e, x] : w_eta[k0 + c])
+          subtract_codifferential(e, x, b);
+        zero_fixed_rows(b);
       });
       m_system.solve_many(rhs, potentials);
       if(keep_potentials)
@@ -891,16 +901,7 @@ private:
         {
           double sum = sparse_dot(w_eta[j], eta[k]);
           for(const auto& [e, x] : w_eta[j]) // <W eta_j, d_P f_k>
-          {
-            const auto [first, second] = m_ends[e];
-            for(std::size_t a = 0; a < d; ++a)
-            {
-              double dp = -f[Eigen::Index(first * d + a)];
-              for(std::size_t b = 0; b < d; ++b)
-                dp += m_P[e](Eigen::Index(a), Eigen::Index(b)) * f[Eigen::Index(second * d + b)];
-              sum += x[Eigen::Index(a)] * dp;
-            }
-          }
+            sum += x.dot(differential(f, e));
           full(Eigen::Index(j), Eigen::Index(k)) = sum;
         }
       });
