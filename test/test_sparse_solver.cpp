@@ -338,31 +338,3 @@ TEST_CASE("Default solver: indefinite and singular systems fail with both factor
   }
 }
 
-TEST_CASE("Triplet assembly: one pattern filled again, a new pattern sorted again", "[solver]")
-{
-  using Triplet = Eigen::Triplet<double>;
-  std::mt19937 rng(7);
-  std::uniform_int_distribution<int> index(0, 29);
-  std::uniform_real_distribution<double> value(-1., 1.);
-  std::vector<Triplet> t;
-  for(int k = 0; k < 400; ++k) // many duplicates: 400 entries in at most 900 positions
-    t.emplace_back(index(rng), index(rng), value(rng));
-  auto reference = [](const std::vector<Triplet>& triplets, int rows, int cols) {
-    SD::internal::Sparse_matrix a(rows, cols);
-    a.setFromTriplets(triplets.begin(), triplets.end());
-    return Eigen::MatrixXd(a);
-  };
-  SD::internal::Triplet_assembler assembler;
-  CHECK((Eigen::MatrixXd(assembler.assemble(t, 30, 30)) - reference(t, 30, 30)).norm() == 0.);
-  // the same positions, other values (a duplicate's share changes the sum of its slot)
-  for(Triplet& x : t)
-    x = Triplet(x.row(), x.col(), 3. * value(rng));
-  const SD::internal::Sparse_matrix again = assembler.assemble(t, 30, 30);
-  CHECK(again.isCompressed());
-  CHECK((Eigen::MatrixXd(again) - reference(t, 30, 30)).norm() <= 1e-14);
-  // one position moved, and another size: analysed again
-  t[17] = Triplet(t[17].row(), (t[17].col() + 1) % 30, 5.);
-  CHECK((Eigen::MatrixXd(assembler.assemble(t, 30, 30)) - reference(t, 30, 30)).norm() <= 1e-14);
-  t.emplace_back(34, 2, 1.);
-  CHECK((Eigen::MatrixXd(assembler.assemble(t, 35, 30)) - reference(t, 35, 30)).norm() <= 1e-14);
-}

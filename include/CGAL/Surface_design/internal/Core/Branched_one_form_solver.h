@@ -11,6 +11,7 @@
 #include <CGAL/assertions.h>
 #include <CGAL/Surface_design/internal/Core/angles.h>
 #include <CGAL/Surface_design/internal/Core/cover_constraints.h>
+#include <CGAL/Surface_design/internal/Core/dec.h>
 #include <CGAL/Surface_design/internal/Core/direction_field_cover.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/Core/sparse_one_forms.h>
@@ -27,6 +28,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -229,9 +231,7 @@ public:
       if(changed && m_potential_basis.cols() > 0)
       {
         // the potential is affine in ystar: add those of the moved directions instead of a second
-        // back-substitution (most solves move nearly every winding off the forest's particular
-        // solution; measured, median edit times: line fields at 60k faces 8.3 -> 5.4 ms, cross
-        // fields at 60k 31.9 -> 26.5 ms)
+        // back-substitution (median edits at 60k faces: line fields 8.3 -> 5.4 ms, cross 31.9 -> 26.5)
         const std::size_t d = std::size_t(m_cover.d);
         Eigen::VectorXd f = m_potential_basis * c.cast<double>();
         for(std::size_t v = 0; v < s.alpha.size(); ++v)
@@ -584,15 +584,15 @@ private:
         grow(head);
       }
 
-    // peeling steps, leaves first
+    // peeling steps, leaves first (a step per node but the roots, two others per triangle)
+    m_peel.reserve(order.size());
+    m_peel_others.reserve(2 * order.size());
     for(auto it = order.rbegin(); it != order.rend(); ++it)
     {
       const std::size_t f = *it;
       if(parent_edge_of[f] == npos)
         continue; // a root
-      Peel_step step;
-      step.face = f;
-      step.others_begin = m_peel_others.size();
+      Peel_step step{f, 0, Eigen::Matrix2d::Zero(), m_peel_others.size(), 0};
       Eigen::Matrix2d M = Eigen::Matrix2d::Identity();
       for(auto h : halfedges_around_face(halfedge(m_idx.face(f), tm), tm))
       {
@@ -654,6 +654,7 @@ private:
   // loops is trivial (a single vertex whose faces all branch is such a piece).
   void factor()
   {
+    const auto& tm = m_idx.mesh();
     const int d = m_cover.d;
     const std::size_t nv = m_idx.number_of_vertices();
     m_fixed.assign(nv * std::size_t(d), false);
@@ -661,56 +662,50 @@ private:
       m_fixed[v * std::size_t(d) + std::size_t(a)] = true;
     m_free_offset = pin_untwisted_pieces(m_weight, m_P, m_ends, d, m_fixed); // cover_constraints.h
 
-    std::vector<Eigen::Triplet<double>> entries;
-    entries.reserve(std::size_t(d * d) * (4 * m_weight.size()) + std::size_t(d) * nv);
-    auto add = [&](std::size_t i, std::size_t j, int a, int b, double value) {
-      if(m_fixed[i * std::size_t(d) + std::size_t(a)] || m_fixed[j * std::size_t(d) + std::size_t(b)])
-        value = 0.; // kept in the pattern
-      entries.emplace_back(Eigen::Index(i * std::size_t(d) + std::size_t(a)),
-                           Eigen::Index(j * std::size_t(d) + std::size_t(b)), value);
-    };
+    // L's blocks: (i, i), (j, j) += w I, (i, j) -= w P_e, (j, i) -= w P_e^T per edge e = (i, j); and per
+    // spoke w_k G_u^T G_v at (u, v), r_k = sum_j R[k][j] (P_e alpha_second - alpha_first) = sum_v G_v alpha_v
+    std::vector<Eigen::Matrix2d> diagonal(nv, Eigen::Matrix2d::Zero());
     for(std::size_t e = 0; e < m_weight.size(); ++e)
-    {
-      const auto [i, j] = m_ends[e];
-      const double w = m_weight[e];
-      for(int a = 0; a < d; ++a)
-        for(int b = 0; b < d; ++b)
+      for(std::size_t v : {m_ends[e].first, m_ends[e].second})
+        diagonal[v].diagonal().array() += m_weight[e];
+    std::map<std::size_t, Eigen::Matrix2d> spoke_blocks; // per halfedge from u to v, their sum
+    for(std::size_t b = 0; m_spokes && b < m_branch.size(); ++b)
+      for(std::size_t k = 0; k < 3; ++k)
+      {
+        const Branch& br = m_branch[b];
+        std::array<std::pair<std::size_t, Eigen::Matrix2d>, 6> G;
+        for(std::size_t j = 0; j < 3; ++j)
         {
-          const double diag = a == b ? w : 0.;
-          add(i, i, a, b, diag);
-          add(j, j, a, b, diag);
-          add(i, j, a, b, -w * m_P[e](a, b));
-          add(j, i, b, a, -w * m_P[e](a, b));
+          const std::size_t e = br.edge[j];
+          G[2 * j] = {m_ends[e].second, br.R[k][j] * m_P[e]};
+          G[2 * j + 1] = {m_ends[e].first, -br.R[k][j]};
         }
-    }
-    // the spokes: r_k = sum_j R[k][j] (P_e alpha_second - alpha_first) = sum_v G_v alpha_v over the
-    // face's corners, and L += w_k G^T G
-    if(m_spokes)
-      for(const Branch& br : m_branch)
-        for(std::size_t k = 0; k < 3; ++k)
-        {
-          std::array<std::pair<std::size_t, Eigen::Matrix2d>, 6> G;
-          for(std::size_t j = 0; j < 3; ++j)
+        for(const auto& [u, Gu] : G)
+          for(const auto& [v, Gv] : G)
           {
-            const std::size_t e = br.edge[j];
-            G[2 * j] = {m_ends[e].second, br.R[k][j] * m_P[e]};
-            G[2 * j + 1] = {m_ends[e].first, -br.R[k][j]};
+            const Eigen::Matrix2d block = br.spoke_weight[k] * Gu.transpose() * Gv;
+            if(u == v)
+              diagonal[u] += block;
+            for(auto h : halfedges_around_face(halfedge(m_idx.face(br.face), tm), tm))
+              for(auto g : {h, opposite(h, tm)})
+                if(u != v && m_idx.source_index(g) == u && m_idx.target_index(g) == v)
+                  spoke_blocks.emplace(m_idx.index(g), Eigen::Matrix2d::Zero()).first->second += block;
           }
-          const double w = br.spoke_weight[k];
-          for(const auto& [u, Gu] : G)
-            for(const auto& [v, Gv] : G)
-            {
-              const Eigen::Matrix2d block = w * Gu.transpose() * Gv;
-              for(int a = 0; a < d; ++a)
-                for(int b = 0; b < d; ++b)
-                  add(u, v, a, b, block(a, b));
-            }
-        }
-    for(std::size_t i = 0; i < nv * std::size_t(d); ++i)
-      if(m_fixed[i])
-        entries.emplace_back(Eigen::Index(i), Eigen::Index(i), 1.);
-    const Eigen::Index size = Eigen::Index(nv * std::size_t(d));
-    m_system.factor(m_assembler.assemble(entries, size, size)); // set_weights(): the pattern again
+      }
+    Sparse_matrix L = assemble_vertex_block_matrix( // (dec.h)
+      m_idx, d,
+      [&](std::size_t h) {
+        const Eigen::Matrix2d block = -m_weight[m_idx.edge_index(m_idx.halfedge(h))] * transition_along(h);
+        const auto it = spoke_blocks.find(h);
+        return it == spoke_blocks.end() ? block : Eigen::Matrix2d(block + it->second);
+      },
+      [&](std::size_t v) { return diagonal[v]; });
+    // a pinned value: its row and column those of the identity
+    for(Eigen::Index c = 0; c < L.outerSize(); ++c)
+      for(Sparse_matrix::InnerIterator it(L, c); it; ++it)
+        if(m_fixed[std::size_t(it.row())] || m_fixed[std::size_t(c)])
+          it.valueRef() = it.row() == c ? 1. : 0.;
+    m_system.factor(std::move(L));
   }
 
   // y* = 2 pi m*: the free edges at `free_values` (zero elsewhere off the forest), the forest
@@ -850,21 +845,26 @@ private:
     const std::size_t m = number_of_directions(), ne = m_idx.number_of_edges();
     std::vector<Sparse_form> eta(m);
     std::vector<std::vector<Face_index>> curls(m);
-    for_each_index(m, true, [&](std::size_t j) {
-      std::vector<Value> y(ne, Value::Zero());
-      if(j < m_free.size())
+    for_each_index(2, true, [&](std::size_t half) { // one one-form per half, reused
+      std::vector<Value> y(ne);
+      for(std::size_t j = half * m / 2; j < (half + 1) * m / 2; ++j)
       {
-        y[m_free[j].edge][m_free[j].sheet] = two_pi;
-        if(m_free[j].partner != npos) // a loop's winding and its Stokes partner's
-          y[m_free[j].partner][m_free[j].partner_sheet] = m_free[j].partner_sign * two_pi;
-        y = peel(std::move(y), nullptr);
+        std::fill(y.begin(), y.end(), Value::Zero());
+        if(j < m_free.size())
+        {
+          y[m_free[j].edge][m_free[j].sheet] = two_pi;
+          if(m_free[j].partner != npos) // a loop's winding and its Stokes partner's
+            y[m_free[j].partner][m_free[j].partner_sheet] = m_free[j].partner_sign * two_pi;
+          y = peel(std::move(y), nullptr);
+        }
+        else // exact: no face to meet
+          for(const auto& [e, x] : m_chain_eta[j - m_free.size()])
+            y[e] = x;
+        curls[j] = branch_curls(y);
+        for(std::size_t e = 0; e < ne; ++e)
+          if(!y[e].isZero())
+            eta[j].emplace_back(e, y[e]);
       }
-      else // exact: no face to meet
-        y = dense_form(m_chain_eta[j - m_free.size()], ne);
-      curls[j] = branch_curls(y);
-      for(std::size_t e = 0; e < ne; ++e)
-        if(!y[e].isZero())
-          eta[j].emplace_back(e, y[e]);
     });
     Eigen::MatrixXd full = Eigen::MatrixXd::Zero(Eigen::Index(m), Eigen::Index(m));
     // the potentials of the directions (the responses to them), kept for the kept directions when
@@ -872,9 +872,8 @@ private:
     const std::size_t d = std::size_t(m_cover.d), nv = m_idx.number_of_vertices();
     const bool keep_potentials = m * nv * d <= potential_budget;
     Eigen::MatrixXd all_potentials(keep_potentials ? Eigen::Index(nv * d) : 0, keep_potentials ? Eigen::Index(m) : 0);
-    // the potentials of the directions solved by blocks of right-hand sides (a supernodal
-    // factorization reads its factor once per block)
-    // The directions are sparse (paths of the dual forest, chains), and so is W eta_j: with the
+    // The potentials are solved by blocks of right-hand sides (a supernodal factorization reads its
+    // factor once per block). The directions are sparse (paths of the dual forest, chains), and so is W eta_j: with the
     // potential f_k of direction k (L f_k = -d_P^T W eta_k), its harmonic part is
     // xi_k = eta_k + d_P f_k and the Gram entry <eta_j, W xi_k> = <W eta_j, eta_k + d_P f_k>, a sum
     // over the support of W eta_j; the right-hand sides are scattered from it too.
@@ -891,12 +890,13 @@ private:
           subtract_codifferential(e, x, b);
         zero_fixed_rows(b);
       });
-      m_system.solve_many(rhs, potentials);
-      if(keep_potentials)
+      Eigen::MatrixXd& solved = width == m && keep_potentials ? all_potentials : potentials; // one block: no copy
+      m_system.solve_many(rhs, solved);
+      if(keep_potentials && width < m)
         all_potentials.middleCols(Eigen::Index(k0), Eigen::Index(width)) = potentials;
       for_each_index(width, true, [&](std::size_t c) {
         const std::size_t k = k0 + c;
-        const auto f = potentials.col(Eigen::Index(c));
+        const auto f = solved.col(Eigen::Index(c));
         for(std::size_t j = 0; j < m; ++j)
         {
           double sum = sparse_dot(w_eta[j], eta[k]);
@@ -918,9 +918,10 @@ private:
     m_Q = std::move(Q);
     m_eta = std::move(eta);
     m_direction_curl = std::move(curls);
-    m_potential_basis.resize(keep_potentials ? all_potentials.rows() : 0, keep_potentials ? Eigen::Index(kept.size()) : 0);
-    for(std::size_t j = 0; keep_potentials && j < kept.size(); ++j)
-      m_potential_basis.col(Eigen::Index(j)) = all_potentials.col(Eigen::Index(kept[j]));
+    for(std::size_t j = 0; keep_potentials && j < kept.size(); ++j) // kept[j] >= j: in place
+      all_potentials.col(Eigen::Index(j)) = all_potentials.col(Eigen::Index(kept[j]));
+    all_potentials.conservativeResize(Eigen::NoChange, keep_potentials ? Eigen::Index(kept.size()) : 0);
+    m_potential_basis = std::move(all_potentials);
     m_kept = std::move(kept);
     m_basis_ready = true;
   }
@@ -968,7 +969,6 @@ private:
   std::vector<Peel_step> m_peel;
   std::vector<Peel_other> m_peel_others;
   std::vector<Free_direction> m_free;
-  Triplet_assembler m_assembler;
   bool m_basis_ready = false;
   std::vector<Sparse_form> m_eta;
   std::vector<std::size_t> m_kept;

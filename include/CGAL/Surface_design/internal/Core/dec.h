@@ -6,6 +6,7 @@
 #ifndef CGAL_SURFACE_DESIGN_INTERNAL_CORE_DEC_H
 #define CGAL_SURFACE_DESIGN_INTERNAL_CORE_DEC_H
 
+#include <CGAL/assertions.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/Solvers/sparse_types.h>
 
@@ -126,6 +127,70 @@ Eigen::SparseMatrix<Scalar> assemble_vertex_matrix(const Indices& idx, const Off
     }
   }
   m.makeCompressed();
+  return m;
+}
+
+/// The same on `d` values per vertex (d = 1 or 2): row/column `v d + a` is value `a` of vertex
+/// `v`, and every block of `assemble_vertex_matrix()`'s pattern is a full d x d block: block
+/// (source(h), target(h)) = the top-left d x d part of `off_diagonal(h)` for every halfedge h
+/// (two edges joining the same vertices add up), block (v, v) = that of `diagonal(v)`, both
+/// returning a 2 x 2 matrix. Written straight into compressed storage, the rows of every column
+/// sorted: the pattern depends on the connectivity and d only, whatever the values (zeros stay).
+template <class Indices, class OffDiagonal, class Diagonal>
+Sparse_matrix assemble_vertex_block_matrix(const Indices& idx, int d, const OffDiagonal& off_diagonal,
+                                           const Diagonal& diagonal)
+{
+  CGAL_precondition(d == 1 || d == 2);
+  const auto& tm = idx.mesh();
+  const std::size_t nv = idx.number_of_vertices(), ud = std::size_t(d);
+  // per vertex v, (row vertex, halfedge into v) sorted by row vertex, with (v, npos) for block
+  // (v, v); `blocks` counts the distinct row vertices (prefix sums)
+  std::vector<std::pair<std::size_t, std::size_t>> incoming;
+  incoming.reserve(idx.number_of_halfedges() + nv);
+  std::vector<std::size_t> begin(nv + 1, 0), blocks(nv + 1, 0);
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    const std::size_t start = incoming.size();
+    incoming.emplace_back(v, npos);
+    for(auto h : halfedges_around_target(idx.vertex(v), tm))
+      incoming.emplace_back(idx.source_index(h), idx.index(h));
+    std::sort(incoming.begin() + std::ptrdiff_t(start), incoming.end());
+    std::size_t distinct = 0;
+    for(std::size_t k = start; k < incoming.size(); ++k)
+      distinct += k == start || incoming[k].first != incoming[k - 1].first;
+    begin[v + 1] = incoming.size();
+    blocks[v + 1] = blocks[v] + distinct;
+  }
+  const std::size_t n = nv * ud;
+  Sparse_matrix m{Eigen::Index(n), Eigen::Index(n)};
+  m.resizeNonZeros(Eigen::Index(blocks[nv] * ud * ud));
+  int* outer = m.outerIndexPtr();
+  int* inner = m.innerIndexPtr();
+  double* value = m.valuePtr();
+  for(std::size_t v = 0; v < nv; ++v)
+    for(std::size_t b = 0; b < ud; ++b) // column v d + b holds d rows per row vertex
+      outer[v * ud + b] = int((blocks[v] * ud + b * (blocks[v + 1] - blocks[v])) * ud);
+  outer[n] = int(blocks[nv] * ud * ud);
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    std::size_t slot = 0; // the row vertex's position in the column
+    for(std::size_t k = begin[v]; k < begin[v + 1]; ++k)
+    {
+      const auto [u, h] = incoming[k];
+      const bool repeated = k > begin[v] && u == incoming[k - 1].first; // a second edge (u, v)
+      if(!repeated && k > begin[v])
+        ++slot;
+      const Eigen::Matrix2d block = h == npos ? Eigen::Matrix2d(diagonal(v)) : Eigen::Matrix2d(off_diagonal(h));
+      for(std::size_t b = 0; b < ud; ++b)
+        for(std::size_t a = 0; a < ud; ++a)
+        {
+          const std::size_t position = std::size_t(outer[v * ud + b]) + slot * ud + a;
+          inner[position] = int(u * ud + a);
+          value[position] = repeated ? value[position] + block(Eigen::Index(a), Eigen::Index(b))
+                                     : block(Eigen::Index(a), Eigen::Index(b));
+        }
+    }
+  }
   return m;
 }
 
