@@ -338,3 +338,28 @@ TEST_CASE("Default solver: indefinite and singular systems fail with both factor
   }
 }
 
+
+TEMPLATE_TEST_CASE("solve_many in place (one matrix for B and X) equals the solve into another matrix", "[solver]",
+                   SD_SOLVER_TYPES)
+{
+  // bunny_1k: the default solver's simplicial side; the 142^2 grid: its supernodal side
+  const test::Surface_mesh mesh = test::load_mesh<test::Surface_mesh>("bunny_1k.off");
+  for(const SDI::Sparse_matrix& a : {screened_laplacian(mesh, 1e-2), test::triangulated_grid(142)})
+  {
+    INFO(a.rows() << " unknowns");
+    SDI::Factored_system<TestType> system(TestType(), "test system");
+    system.factor(SDI::Sparse_matrix(a));
+    for(const Eigen::Index k : {1, 2, 5})
+    {
+      INFO(k << " right-hand sides");
+      Eigen::MatrixXd b(a.rows(), k);
+      for(Eigen::Index c = 0; c < k; ++c)
+        b.col(c) = random_vector(a.rows(), unsigned(10 + c));
+      Eigen::MatrixXd x, y = b;
+      system.solve_many(b, x);
+      system.solve_many(y, y);
+      CHECK((x - y).norm() == 0.);
+      CHECK((a * y - b).norm() <= 1e-10 * a.norm() * y.norm());
+    }
+  }
+}

@@ -879,21 +879,21 @@ private:
     // over the support of W eta_j; the right-hand sides are scattered from it too.
     std::vector<Sparse_form> w_eta(m);
     for_each_index(m, true, [&](std::size_t j) { w_eta[j] = weighted_sparse(eta[j]); });
-    Eigen::MatrixXd rhs, potentials;
+    Eigen::MatrixXd block; // a block of right-hand sides, solved in place (one block: all_potentials)
     for(std::size_t k0 = 0; k0 < m; k0 += solve_block)
     {
       const std::size_t width = (std::min)(solve_block, m - k0);
-      rhs.setZero(Eigen::Index(nv * d), Eigen::Index(width));
+      Eigen::MatrixXd& solved = width == m && keep_potentials ? all_potentials : block;
+      solved.setZero(Eigen::Index(nv * d), Eigen::Index(width));
       for_each_index(width, true, [&](std::size_t c) {
-        auto b = rhs.col(Eigen::Index(c)); // -d_P^T (W eta)
+        auto b = solved.col(Eigen::Index(c)); // -d_P^T (W eta)
         for(const auto& [e, x] : w_eta[k0 + c])
           subtract_codifferential(e, x, b);
         zero_fixed_rows(b);
       });
-      Eigen::MatrixXd& solved = width == m && keep_potentials ? all_potentials : potentials; // one block: no copy
-      m_system.solve_many(rhs, solved);
+      m_system.solve_many(solved, solved);
       if(keep_potentials && width < m)
-        all_potentials.middleCols(Eigen::Index(k0), Eigen::Index(width)) = potentials;
+        all_potentials.middleCols(Eigen::Index(k0), Eigen::Index(width)) = block;
       for_each_index(width, true, [&](std::size_t c) {
         const std::size_t k = k0 + c;
         const auto f = solved.col(Eigen::Index(c));

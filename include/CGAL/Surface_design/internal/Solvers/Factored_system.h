@@ -159,7 +159,10 @@ public:
 
   /// Solves A X = B for every column of B. Traits that expose an Eigen solver (`solver()`, as
   /// `CGAL::Eigen_solver_traits` does) solve all columns in one call, which lets a supernodal
-  /// factorization read its factor once for all of them; others solve column by column.
+  /// factorization read its factor once for all of them; others solve column by column. `b` and
+  /// `x` may be one matrix (solved in place): every solver of the library reads all of B before it
+  /// writes X (the supernodal one per half of the columns; Eigen's simplicial one permutes in place,
+  /// CHOLMOD solves into its own buffer).
   /// \throws Linear_solver_failure as `solve()`
   void solve_many(const Eigen::MatrixXd& b, Eigen::MatrixXd& x)
   {
