@@ -584,15 +584,14 @@ private:
         grow(head);
       }
 
-    // peeling steps, leaves first (a step per node but the roots, two others per triangle)
-    m_peel.reserve(order.size());
-    m_peel_others.reserve(2 * order.size());
+    m_peel.reserve(order.size()); // peeling steps, leaves first: one per node but the roots,
+    m_peel_others.reserve(2 * order.size()); // with the two other edges of its triangle
     for(auto it = order.rbegin(); it != order.rend(); ++it)
     {
       const std::size_t f = *it;
       if(parent_edge_of[f] == npos)
         continue; // a root
-      Peel_step step{f, 0, Eigen::Matrix2d::Zero(), m_peel_others.size(), 0};
+      Peel_step step{std::uint32_t(f), 0, std::uint32_t(m_peel_others.size()), 0, Sign_matrix::Zero()};
       Eigen::Matrix2d M = Eigen::Matrix2d::Identity();
       for(auto h : halfedges_around_face(halfedge(m_idx.face(f), tm), tm))
       {
@@ -601,14 +600,14 @@ private:
         const Eigen::Matrix2d C = m_idx.orientation_sign(h) > 0 ? M : Eigen::Matrix2d(-M * m_P[e].transpose());
         if(e == parent_edge_of[f])
         {
-          step.parent = e;
-          step.parent_inverse = C.transpose(); // C is a signed permutation
+          step.parent = std::uint32_t(e);
+          step.parent_inverse = C.transpose().cast<std::int8_t>(); // C is a signed permutation
         }
         else
-          m_peel_others.push_back({e, C});
+          m_peel_others.push_back({std::uint32_t(e), C.cast<std::int8_t>()});
         M = M * transition_along(hi);
       }
-      step.others_end = m_peel_others.size();
+      step.others_end = std::uint32_t(m_peel_others.size());
       m_peel.push_back(step);
     }
     // The free edges, with one of odd matching per component last (cross fields): the global
@@ -718,8 +717,8 @@ private:
       if(k)
         target = two_pi * (*k)[step.face].template cast<double>();
       for(std::size_t i = step.others_begin; i < step.others_end; ++i)
-        target -= m_peel_others[i].coefficient * y[m_peel_others[i].edge];
-      y[step.parent] = step.parent_inverse * target;
+        target -= m_peel_others[i].coefficient.template cast<double>() * y[m_peel_others[i].edge];
+      y[step.parent] = step.parent_inverse.template cast<double>() * target;
       if(m_cover.d == 1)
         y[step.parent][1] = 0.;
     }
@@ -936,16 +935,17 @@ private:
   };
   static constexpr std::size_t potential_budget = std::size_t(1) << 24; // doubles (128 MB)
   static constexpr std::size_t solve_block = 32;                        // right-hand sides per solve
+  // the peeling's signed permutations in bytes, indices in 32 bits (as Surface_mesh's): 8 and 20 bytes
+  using Sign_matrix = Eigen::Matrix<std::int8_t, 2, 2>;
   struct Peel_other
   {
-    std::size_t edge;
-    Eigen::Matrix2d coefficient;
+    std::uint32_t edge;
+    Sign_matrix coefficient;
   };
   struct Peel_step
   {
-    std::size_t face = 0, parent = 0;
-    Eigen::Matrix2d parent_inverse;
-    std::size_t others_begin = 0, others_end = 0;
+    std::uint32_t face, parent, others_begin, others_end;
+    Sign_matrix parent_inverse;
   };
 
   std::shared_ptr<const Indices> m_idx_ptr;
