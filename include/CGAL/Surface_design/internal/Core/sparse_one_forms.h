@@ -20,15 +20,6 @@ namespace internal {
 
 using Sparse_one_form = std::vector<std::pair<std::size_t, Eigen::Vector2d>>;
 
-/// The form on every one of `ne` edges.
-inline std::vector<Eigen::Vector2d> dense_form(const Sparse_one_form& sparse, std::size_t ne)
-{
-  std::vector<Eigen::Vector2d> y(ne, Eigen::Vector2d::Zero());
-  for(const auto& [e, v] : sparse)
-    y[e] = v;
-  return y;
-}
-
 /// The value on edge e (zero off the support).
 inline Eigen::Vector2d sparse_value(const Sparse_one_form& y, std::size_t e)
 {
