@@ -871,11 +871,11 @@ private:
     const std::size_t d = std::size_t(m_cover.d), nv = m_idx.number_of_vertices();
     const bool keep_potentials = m * nv * d <= potential_budget;
     Eigen::MatrixXd all_potentials(keep_potentials ? Eigen::Index(nv * d) : 0, keep_potentials ? Eigen::Index(m) : 0);
-    // The potentials are solved by blocks of right-hand sides (a supernodal factorization reads its
-    // factor once per block). The directions are sparse (paths of the dual forest, chains), and so is W eta_j: with the
-    // potential f_k of direction k (L f_k = -d_P^T W eta_k), its harmonic part is
-    // xi_k = eta_k + d_P f_k and the Gram entry <eta_j, W xi_k> = <W eta_j, eta_k + d_P f_k>, a sum
-    // over the support of W eta_j; the right-hand sides are scattered from it too.
+    // Potentials solved by blocks of right-hand sides (a supernodal factor is read once per block).
+    // The directions are sparse (dual forest paths, chains), and so is W eta_j: with the potential
+    // f_k of direction k (L f_k = -d_P^T W eta_k), its harmonic part is xi_k = eta_k + d_P f_k and
+    // the Gram entry <eta_j, W xi_k> = <W eta_j, eta_k + d_P f_k>, a sum over the support of W eta_j;
+    // the right-hand sides are scattered from it too.
     std::vector<Sparse_form> w_eta(m);
     for_each_index(m, true, [&](std::size_t j) { w_eta[j] = weighted_sparse(eta[j]); });
     Eigen::MatrixXd block; // a block of right-hand sides, solved in place (one block: all_potentials)
