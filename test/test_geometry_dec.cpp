@@ -262,7 +262,7 @@ TEMPLATE_TEST_CASE("The cotangent Laplacian: symmetric, PSD, constants in its ke
   }
 }
 
-TEMPLATE_TEST_CASE("Block assembly on d values per vertex equals the triplet sum, zeros kept in the pattern", "[dec]",
+TEMPLATE_TEST_CASE("Block pattern on d values per vertex: every fill equals the triplet sum, zeros kept", "[dec]",
                    SD_MESH_TYPES_WITH_IDS)
 {
   for(const std::string name : {"bunny_1k.off", "hemisphere.off", "bones.off", "mech-holes-shark.off"})
@@ -272,44 +272,49 @@ TEMPLATE_TEST_CASE("Block assembly on d values per vertex equals the triplet sum
       const TestType mesh = test::load_mesh<TestType>(name);
       SDI::Mesh_indices<TestType> idx(mesh);
       const std::size_t nv = idx.number_of_vertices(), nh = idx.number_of_halfedges();
+      const SDI::Vertex_block_pattern pattern(idx, d);
       std::mt19937 rng(11);
       std::uniform_real_distribution<double> value(-1., 1.);
       auto random_block = [&] { return Eigen::Matrix2d(Eigen::Matrix2d::NullaryExpr([&] { return value(rng); })); };
-      std::vector<Eigen::Matrix2d> off(nh), diagonal(nv);
-      for(auto& b : off)
-        b = random_block();
-      for(auto& b : diagonal)
-        b = random_block();
-      for(std::size_t h = 0; h < nh; h += 3) // zero blocks: their entries stay in the pattern
-        off[h].setZero();
-      const SDI::Sparse_matrix a = SDI::assemble_vertex_block_matrix(
-        idx, d, [&](std::size_t h) { return off[h]; }, [&](std::size_t v) { return diagonal[v]; });
-
-      std::vector<Eigen::Triplet<double>> t;
-      for(std::size_t h = 0; h < nh; ++h)
+      for(int fill = 0; fill < 2; ++fill) // the pattern filled twice, with other values
       {
-        const auto hd = idx.halfedge(h); // border halfedges too: their edges are in the pattern
-        for(int r = 0; r < d; ++r)
-          for(int c = 0; c < d; ++c)
-            t.emplace_back(int(idx.source_index(hd)) * d + r, int(idx.target_index(hd)) * d + c, off[h](r, c));
+        INFO("fill " << fill);
+        std::vector<Eigen::Matrix2d> off(nh), diagonal(nv);
+        for(auto& b : off)
+          b = random_block();
+        for(auto& b : diagonal)
+          b = random_block();
+        for(std::size_t h = std::size_t(fill); h < nh; h += 3) // zero blocks: their entries stay in the pattern
+          off[h].setZero();
+        const SDI::Sparse_matrix a =
+          pattern.fill([&](std::size_t h) { return off[h]; }, [&](std::size_t v) { return diagonal[v]; });
+
+        std::vector<Eigen::Triplet<double>> t;
+        for(std::size_t h = 0; h < nh; ++h)
+        {
+          const auto hd = idx.halfedge(h); // border halfedges too: their edges are in the pattern
+          for(int r = 0; r < d; ++r)
+            for(int c = 0; c < d; ++c)
+              t.emplace_back(int(idx.source_index(hd)) * d + r, int(idx.target_index(hd)) * d + c, off[h](r, c));
+        }
+        for(std::size_t v = 0; v < nv; ++v)
+          for(int r = 0; r < d; ++r)
+            for(int c = 0; c < d; ++c)
+              t.emplace_back(int(v) * d + r, int(v) * d + c, diagonal[v](r, c));
+        SDI::Sparse_matrix reference(a.rows(), a.cols());
+        reference.setFromTriplets(t.begin(), t.end());
+        REQUIRE(a.rows() == Eigen::Index(nv) * d);
+        REQUIRE(a.isCompressed());
+        CHECK((a - reference).norm() == 0.);
+        // the pattern: d x d blocks on the vertex adjacency and the diagonal, every column's rows
+        // strictly increasing (as compressed storage requires)
+        CHECK(std::size_t(a.nonZeros()) == std::size_t(d * d) * (nv + 2 * idx.number_of_edges()));
+        bool sorted = true;
+        for(Eigen::Index c = 0; c < a.outerSize(); ++c)
+          for(int k = a.outerIndexPtr()[c] + 1; k < a.outerIndexPtr()[c + 1]; ++k)
+            sorted = sorted && a.innerIndexPtr()[k - 1] < a.innerIndexPtr()[k];
+        CHECK(sorted);
       }
-      for(std::size_t v = 0; v < nv; ++v)
-        for(int r = 0; r < d; ++r)
-          for(int c = 0; c < d; ++c)
-            t.emplace_back(int(v) * d + r, int(v) * d + c, diagonal[v](r, c));
-      SDI::Sparse_matrix reference(a.rows(), a.cols());
-      reference.setFromTriplets(t.begin(), t.end());
-      REQUIRE(a.rows() == Eigen::Index(nv) * d);
-      REQUIRE(a.isCompressed());
-      CHECK((a - reference).norm() == 0.);
-      // the pattern: d x d blocks on the vertex adjacency and the diagonal, every column's rows
-      // strictly increasing (as compressed storage requires)
-      CHECK(std::size_t(a.nonZeros()) == std::size_t(d * d) * (nv + 2 * idx.number_of_edges()));
-      bool sorted = true;
-      for(Eigen::Index c = 0; c < a.outerSize(); ++c)
-        for(int k = a.outerIndexPtr()[c] + 1; k < a.outerIndexPtr()[c + 1]; ++k)
-          sorted = sorted && a.innerIndexPtr()[k - 1] < a.innerIndexPtr()[k];
-      CHECK(sorted);
     }
 }
 

@@ -691,16 +691,16 @@ private:
                   spoke_blocks.emplace(m_idx.index(g), Eigen::Matrix2d::Zero()).first->second += block;
           }
       }
-    Sparse_matrix L = assemble_vertex_block_matrix( // (dec.h)
-      m_idx, d,
+    if(m_block_pattern.empty()) // (dec.h) built once: set_weights() refills it
+      m_block_pattern = Vertex_block_pattern(m_idx, d);
+    Sparse_matrix L = m_block_pattern.fill(
       [&](std::size_t h) {
         const Eigen::Matrix2d block = -m_weight[m_idx.edge_index(m_idx.halfedge(h))] * transition_along(h);
         const auto it = spoke_blocks.find(h);
         return it == spoke_blocks.end() ? block : Eigen::Matrix2d(block + it->second);
       },
       [&](std::size_t v) { return diagonal[v]; });
-    // a pinned value: its row and column those of the identity
-    for(Eigen::Index c = 0; c < L.outerSize(); ++c)
+    for(Eigen::Index c = 0; c < L.outerSize(); ++c) // a pinned value: its row and column the identity's
       for(Sparse_matrix::InnerIterator it(L, c); it; ++it)
         if(m_fixed[std::size_t(it.row())] || m_fixed[std::size_t(c)])
           it.valueRef() = it.row() == c ? 1. : 0.;
@@ -935,8 +935,7 @@ private:
   };
   static constexpr std::size_t potential_budget = std::size_t(1) << 24; // doubles (128 MB)
   static constexpr std::size_t solve_block = 32;                        // right-hand sides per solve
-  // the peeling's signed permutations in bytes, indices in 32 bits (as Surface_mesh's): 8 and 20 bytes
-  using Sign_matrix = Eigen::Matrix<std::int8_t, 2, 2>;
+  using Sign_matrix = Eigen::Matrix<std::int8_t, 2, 2>; // peeling: signed permutations, 32-bit indices
   struct Peel_other
   {
     std::uint32_t edge;
@@ -969,6 +968,7 @@ private:
   std::vector<Peel_step> m_peel;
   std::vector<Peel_other> m_peel_others;
   std::vector<Free_direction> m_free;
+  Vertex_block_pattern m_block_pattern; // of L
   bool m_basis_ready = false;
   std::vector<Sparse_form> m_eta;
   std::vector<std::size_t> m_kept;

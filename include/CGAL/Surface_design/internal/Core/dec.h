@@ -130,69 +130,103 @@ Eigen::SparseMatrix<Scalar> assemble_vertex_matrix(const Indices& idx, const Off
   return m;
 }
 
-/// The same on `d` values per vertex (d = 1 or 2): row/column `v d + a` is value `a` of vertex
-/// `v`, and every block of `assemble_vertex_matrix()`'s pattern is a full d x d block: block
-/// (source(h), target(h)) = the top-left d x d part of `off_diagonal(h)` for every halfedge h
-/// (two edges joining the same vertices add up), block (v, v) = that of `diagonal(v)`, both
-/// returning a 2 x 2 matrix. Written straight into compressed storage, the rows of every column
-/// sorted: the pattern depends on the connectivity and d only, whatever the values (zeros stay).
-template <class Indices, class OffDiagonal, class Diagonal>
-Sparse_matrix assemble_vertex_block_matrix(const Indices& idx, int d, const OffDiagonal& off_diagonal,
-                                           const Diagonal& diagonal)
+/// The pattern of a matrix on `d` values per vertex (d = 1 or 2), and where each of its blocks
+/// lies: row/column `v d + a` is value `a` of vertex `v`, and every block of
+/// `assemble_vertex_matrix()`'s pattern is a full d x d block. Built once, it fills matrices of
+/// that pattern with other values without sorting anything again (a system whose weights change):
+/// written straight into compressed storage, the rows of every column sorted, the pattern depending
+/// on the connectivity and d only, whatever the values (zeros stay).
+class Vertex_block_pattern
 {
-  CGAL_precondition(d == 1 || d == 2);
-  const auto& tm = idx.mesh();
-  const std::size_t nv = idx.number_of_vertices(), ud = std::size_t(d);
-  // per vertex v, (row vertex, halfedge into v) sorted by row vertex, with (v, npos) for block
-  // (v, v); `blocks` counts the distinct row vertices (prefix sums)
-  std::vector<std::pair<std::size_t, std::size_t>> incoming;
-  incoming.reserve(idx.number_of_halfedges() + nv);
-  std::vector<std::size_t> begin(nv + 1, 0), blocks(nv + 1, 0);
-  for(std::size_t v = 0; v < nv; ++v)
+public:
+  Vertex_block_pattern() = default;
+
+  template <class Indices>
+  Vertex_block_pattern(const Indices& idx, int d) : m_d(std::size_t(d))
   {
-    const std::size_t start = incoming.size();
-    incoming.emplace_back(v, npos);
-    for(auto h : halfedges_around_target(idx.vertex(v), tm))
-      incoming.emplace_back(idx.source_index(h), idx.index(h));
-    std::sort(incoming.begin() + std::ptrdiff_t(start), incoming.end());
-    std::size_t distinct = 0;
-    for(std::size_t k = start; k < incoming.size(); ++k)
-      distinct += k == start || incoming[k].first != incoming[k - 1].first;
-    begin[v + 1] = incoming.size();
-    blocks[v + 1] = blocks[v] + distinct;
-  }
-  const std::size_t n = nv * ud;
-  Sparse_matrix m{Eigen::Index(n), Eigen::Index(n)};
-  m.resizeNonZeros(Eigen::Index(blocks[nv] * ud * ud));
-  int* outer = m.outerIndexPtr();
-  int* inner = m.innerIndexPtr();
-  double* value = m.valuePtr();
-  for(std::size_t v = 0; v < nv; ++v)
-    for(std::size_t b = 0; b < ud; ++b) // column v d + b holds d rows per row vertex
-      outer[v * ud + b] = int((blocks[v] * ud + b * (blocks[v + 1] - blocks[v])) * ud);
-  outer[n] = int(blocks[nv] * ud * ud);
-  for(std::size_t v = 0; v < nv; ++v)
-  {
-    std::size_t slot = 0; // the row vertex's position in the column
-    for(std::size_t k = begin[v]; k < begin[v + 1]; ++k)
+    CGAL_precondition(d == 1 || d == 2);
+    const auto& tm = idx.mesh();
+    const std::size_t nv = idx.number_of_vertices(), ud = m_d;
+    // per vertex v, (row vertex, halfedge into v) sorted by row vertex, with (v, npos) for block
+    // (v, v); `blocks` counts the distinct row vertices (prefix sums)
+    std::vector<std::pair<std::size_t, std::size_t>> incoming;
+    incoming.reserve(idx.number_of_halfedges() + nv);
+    std::vector<std::size_t> begin(nv + 1, 0), blocks(nv + 1, 0);
+    for(std::size_t v = 0; v < nv; ++v)
     {
-      const auto [u, h] = incoming[k];
-      const bool repeated = k > begin[v] && u == incoming[k - 1].first; // a second edge (u, v)
-      if(!repeated && k > begin[v])
-        ++slot;
-      const Eigen::Matrix2d block = h == npos ? Eigen::Matrix2d(diagonal(v)) : Eigen::Matrix2d(off_diagonal(h));
-      for(std::size_t b = 0; b < ud; ++b)
-        for(std::size_t a = 0; a < ud; ++a)
-        {
-          const std::size_t position = std::size_t(outer[v * ud + b]) + slot * ud + a;
-          inner[position] = int(u * ud + a);
-          value[position] = repeated ? value[position] + block(Eigen::Index(a), Eigen::Index(b))
-                                     : block(Eigen::Index(a), Eigen::Index(b));
-        }
+      const std::size_t start = incoming.size();
+      incoming.emplace_back(v, npos);
+      for(auto h : halfedges_around_target(idx.vertex(v), tm))
+        incoming.emplace_back(idx.source_index(h), idx.index(h));
+      std::sort(incoming.begin() + std::ptrdiff_t(start), incoming.end());
+      std::size_t distinct = 0;
+      for(std::size_t k = start; k < incoming.size(); ++k)
+        distinct += k == start || incoming[k].first != incoming[k - 1].first;
+      begin[v + 1] = incoming.size();
+      blocks[v + 1] = blocks[v] + distinct;
+    }
+    const std::size_t n = nv * ud;
+    m_pattern = Sparse_matrix(Eigen::Index(n), Eigen::Index(n));
+    m_pattern.resizeNonZeros(Eigen::Index(blocks[nv] * ud * ud));
+    int* outer = m_pattern.outerIndexPtr();
+    int* inner = m_pattern.innerIndexPtr();
+    std::fill_n(m_pattern.valuePtr(), blocks[nv] * ud * ud, 0.); // (nonZeros() reads outer: not yet)
+    for(std::size_t v = 0; v < nv; ++v)
+      for(std::size_t b = 0; b < ud; ++b) // column v d + b holds d rows per row vertex
+        outer[v * ud + b] = int((blocks[v] * ud + b * (blocks[v + 1] - blocks[v])) * ud);
+    outer[n] = int(blocks[nv] * ud * ud);
+    m_halfedge.assign(idx.number_of_halfedges(), {0, 0});
+    m_vertex.assign(nv, 0);
+    for(std::size_t v = 0; v < nv; ++v)
+    {
+      std::size_t slot = 0; // the row vertex's position in the column
+      for(std::size_t k = begin[v]; k < begin[v + 1]; ++k)
+      {
+        const auto [u, h] = incoming[k];
+        slot += k > begin[v] && u != incoming[k - 1].first; // the same slot for a second edge (u, v)
+        const std::size_t position = std::size_t(outer[v * ud]) + slot * ud;
+        (h == npos ? m_vertex[v] : m_halfedge[h].first) = position;
+        if(h != npos)
+          m_halfedge[h].second = v;
+        for(std::size_t b = 0; b < ud; ++b)
+          for(std::size_t a = 0; a < ud; ++a)
+            inner[std::size_t(outer[v * ud + b]) + slot * ud + a] = int(u * ud + a);
+      }
     }
   }
-  return m;
-}
+
+  bool empty() const { return m_d == 0; }
+
+  /// The matrix of this pattern with block (source(h), target(h)) = the top-left d x d part of
+  /// `off_diagonal(h)` for every halfedge index h (two edges joining the same vertices add up) and
+  /// block (v, v) = that of `diagonal(v)`, both returning a 2 x 2 matrix. Zeros stay in the pattern.
+  template <class OffDiagonal, class Diagonal>
+  Sparse_matrix fill(const OffDiagonal& off_diagonal, const Diagonal& diagonal) const
+  {
+    Sparse_matrix m = m_pattern;
+    double* value = m.valuePtr();
+    const int* outer = m.outerIndexPtr();
+    auto add = [&](std::size_t position, std::size_t column_vertex, const Eigen::Matrix2d& block) {
+      // column v d + 1 (d = 2) holds the same rows as column v d, `stride` entries further
+      const std::size_t first = column_vertex * m_d;
+      const std::size_t stride = m_d == 1 ? 0 : std::size_t(outer[first + 1] - outer[first]);
+      for(std::size_t b = 0; b < m_d; ++b)
+        for(std::size_t a = 0; a < m_d; ++a)
+          value[position + b * stride + a] += block(Eigen::Index(a), Eigen::Index(b));
+    };
+    for(std::size_t v = 0; v < m_vertex.size(); ++v)
+      add(m_vertex[v], v, Eigen::Matrix2d(diagonal(v)));
+    for(std::size_t h = 0; h < m_halfedge.size(); ++h)
+      add(m_halfedge[h].first, m_halfedge[h].second, Eigen::Matrix2d(off_diagonal(h)));
+    return m;
+  }
+
+private:
+  std::size_t m_d = 0;
+  Sparse_matrix m_pattern;                                // the values all 0
+  std::vector<std::pair<std::size_t, std::size_t>> m_halfedge; // per halfedge: (first entry of its block, column vertex)
+  std::vector<std::size_t> m_vertex;                       // per vertex: first entry of its diagonal block
+};
 
 /// The weighted graph Laplacian L = d0^T W d0 (|V| x |V|, symmetric), with W = diag(edge_weight).
 /// With cotangent weights it is the cotangent Laplacian, positive semi-definite on every triangle
