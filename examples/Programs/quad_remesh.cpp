@@ -14,7 +14,10 @@
 #include <CGAL/Surface_design/field_aligned_quad_remeshing.h>
 #include <CGAL/Surface_design/quad_mesh_quality.h>
 
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
+#include <CGAL/boost/graph/Face_filtered_graph.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
@@ -51,6 +54,9 @@ const char* usage =
   "  smoothed at 2h (--boundary-smoothing). Where the lines do not form such a mesh, h is tried 5%\n"
   "  smaller and 5% larger, then the input is remeshed isotropically at edge length h (its triangles'\n"
   "  shapes can fold the map: decimated meshes) and the whole tried again, before the program fails.\n"
+  "  Several connected components (without --singularity) are remeshed one by one, each with its own\n"
+  "  field and cones; one that gives no quads at h is tried at h / 1.25, h / 1.25^2, ... while that\n"
+  "  adds at most 5% to the mesh's quads (components smaller than a few quads).\n"
   "options of both methods:\n"
   "  --method harmonic|field\n"
   "  --edge-length H       target edge length (default: sqrt(area / 3000), about 3000 faces)\n"
@@ -323,6 +329,20 @@ Mesh read_input(const Options& o)
   return input;
 }
 
+// The surface area of a triangle mesh.
+double area(const Mesh& m)
+{
+  double a = 0.;
+  for(auto f : faces(m))
+  {
+    const auto hd = halfedge(f, m);
+    const Eigen::Vector3d p = eigen(m.point(source(hd, m))), q = eigen(m.point(target(hd, m))),
+                          r = eigen(m.point(target(next(hd, m), m)));
+    a += 0.5 * (q - p).cross(r - p).norm();
+  }
+  return a;
+}
+
 // --edge-length, or sqrt(area / N) with --target-faces N; 0 without either (the default).
 double edge_length(const Mesh& input, const Options& o)
 {
@@ -330,15 +350,7 @@ double edge_length(const Mesh& input, const Options& o)
     return o.edge_length;
   if(!(o.target_faces > 0.))
     return 0.;
-  double area = 0.;
-  for(auto f : faces(input))
-  {
-    const auto h = halfedge(f, input);
-    const Eigen::Vector3d a = eigen(input.point(source(h, input))), b = eigen(input.point(target(h, input))),
-                          c = eigen(input.point(target(next(h, input), input)));
-    area += 0.5 * (b - a).cross(c - a).norm();
-  }
-  return std::sqrt(area / o.target_faces);
+  return std::sqrt(area(input) / o.target_faces);
 }
 
 // The cross field on `surface` (with the given cones, or automatic) and its field-aligned quads at h,
@@ -582,6 +594,95 @@ std::map<long, int> carried_cones(const Mesh& from, const Mesh& to, const std::m
   return carried;
 }
 
+// The field-aligned quads of `surface` (the input or one of its connected components) at h: on its
+// own triangles (at h and h +- 5%), then, unless --no-input-remeshing, on the surface remeshed
+// isotropically at h; throws the last attempt's failure.
+template <class Traits>
+void quads_with_repair(const Mesh& input, const std::map<long, int>& cones, double h, const Options& o, Traits traits,
+                       Mesh& quads)
+{
+  try
+  {
+    field_aligned_quads(input, cones, h, o, traits, quads);
+  }
+  catch(const SD::Remeshing_failure& e)
+  {
+    if(!o.input_remeshing)
+      throw;
+    std::printf("  failed: %s\n", e.what());
+    std::printf("no quads on the input's triangles at h and h +- 5%%: the input remeshed isotropically at edge length "
+                "%.4g, and the field and the quads made again on it (--no-input-remeshing: fail instead)\n",
+                h);
+    std::fflush(stdout);
+    const Mesh remeshed = isotropically_remeshed(input, h, o.sharp_angle);
+    std::printf("  remeshed input: %zu vertices, %zu faces\n", std::size_t(num_vertices(remeshed)),
+                std::size_t(num_faces(remeshed)));
+    try
+    {
+      field_aligned_quads(remeshed, carried_cones(input, remeshed, cones), h, o, traits, quads);
+    }
+    catch(const std::exception& again)
+    {
+      throw std::runtime_error(std::string("on the remeshed input too: ") + again.what());
+    }
+  }
+}
+
+// The connected components of `input`, each a mesh of its own.
+std::vector<Mesh> connected_components(Mesh input)
+{
+  auto component = input.add_property_map<Mesh::Face_index, std::size_t>("f:quad_remesh_component", 0).first;
+  const std::size_t count = CGAL::Polygon_mesh_processing::connected_components(input, component);
+  std::vector<Mesh> parts(count);
+  if(count > 1)
+    for(std::size_t c = 0; c < count; ++c)
+      CGAL::copy_face_graph(CGAL::Face_filtered_graph<Mesh>(input, c, component), parts[c]);
+  return parts;
+}
+
+// Several connected components: each is remeshed on its own, with its own field and cones, so that
+// one component's failure at h does not fail the others (bones: 26 components, 21 give quads at
+// the h of 3000 quads, the 5 smallest only at a finer one). A component that gives no quads at h
+// (with its h +- 5% and its remeshed triangles) is tried at h / 1.25, h / 1.25^2, ... while that adds
+// at most 5% to the whole mesh's quads at h, so the face count stays near the target.
+template <class Traits>
+void quads_by_component(const std::vector<Mesh>& parts, double h, const Options& o, Traits traits, Mesh& quads)
+{
+  double total_area = 0.;
+  for(const Mesh& part : parts)
+    total_area += area(part);
+  const double total_quads = total_area / (h * h);
+  std::printf("%zu connected components, each remeshed on its own (its own field and cones)\n", parts.size());
+  for(std::size_t c = 0; c < parts.size(); ++c)
+  {
+    const double a = area(parts[c]);
+    std::printf("component %zu of %zu: %zu faces, about %.0f quads at h\n", c + 1, parts.size(),
+                std::size_t(num_faces(parts[c])), a / (h * h));
+    std::fflush(stdout);
+    Mesh part_quads;
+    for(double spacing = h;;)
+    {
+      try
+      {
+        quads_with_repair(parts[c], {}, spacing, o, traits, part_quads);
+        break;
+      }
+      catch(const std::exception& e)
+      {
+        const double finer = spacing / 1.25, added = a / (finer * finer) - a / (h * h);
+        if(added > 0.05 * total_quads)
+          throw std::runtime_error("component " + std::to_string(c + 1) + " of " + std::to_string(parts.size()) +
+                                   " (" + std::to_string(num_faces(parts[c])) + " faces) gives no quads: " + e.what());
+        std::printf("  component %zu: no quads at h = %.4g (%s); tried at %.4g (%.2f h), which adds about %.0f quads "
+                    "(at most 5%% of the mesh's)\n",
+                    c + 1, spacing, e.what(), finer, finer / h, added);
+        spacing = finer;
+      }
+    }
+    CGAL::copy_face_graph(part_quads, quads);
+  }
+}
+
 template <class Traits>
 int run_field(const Options& o, Traits traits)
 {
@@ -608,31 +709,12 @@ int run_field(const Options& o, Traits traits)
   }
 
   Mesh quads;
-  try
-  {
-    field_aligned_quads(input, o.cones, h, o, traits, quads);
-  }
-  catch(const SD::Remeshing_failure& e)
-  {
-    if(!o.input_remeshing)
-      throw;
-    std::printf("  failed: %s\n", e.what());
-    std::printf("no quads on the input's triangles at h and h +- 5%%: the input remeshed isotropically at edge length "
-                "%.4g, and the field and the quads made again on it (--no-input-remeshing: fail instead)\n",
-                h);
-    std::fflush(stdout);
-    const Mesh remeshed = isotropically_remeshed(input, h, o.sharp_angle);
-    std::printf("  remeshed input: %zu vertices, %zu faces\n", std::size_t(num_vertices(remeshed)),
-                std::size_t(num_faces(remeshed)));
-    try
-    {
-      field_aligned_quads(remeshed, carried_cones(input, remeshed, o.cones), h, o, traits, quads);
-    }
-    catch(const std::exception& again)
-    {
-      throw std::runtime_error(std::string("on the remeshed input too: ") + again.what());
-    }
-  }
+  // with given cones, one field over all the components (the cones are the whole mesh's)
+  const std::vector<Mesh> parts = o.cones.empty() ? connected_components(input) : std::vector<Mesh>{};
+  if(parts.size() > 1)
+    quads_by_component(parts, h, o, traits, quads);
+  else
+    quads_with_repair(input, o.cones, h, o, traits, quads);
   return report_and_write(input, quads, o, clock);
 }
 
