@@ -353,6 +353,47 @@ double edge_length(const Mesh& input, const Options& o)
   return std::sqrt(area(input) / o.target_faces);
 }
 
+// A face where the field turns by two quarter turns or more (two cones in one triangle: seen on
+// remeshed inputs, the triceratops and bones) is no vertex of a quad mesh, and no vertex-based
+// trivial connection has it, so the cones could not be separated. Its extra cones, of the same
+// sign, go one by one to the nearest face (across edges) without a cone and without a boundary
+// edge; the index sum, hence the trivial connection's existence, is kept. Returns the moves.
+template <class FaceIndexMap>
+std::size_t split_multiple_cones(const Mesh& mesh, FaceIndexMap index)
+{
+  std::size_t moved = 0;
+  for(auto f : faces(mesh))
+  {
+    int k = get(index, f);
+    if(std::abs(k) < 2)
+      continue;
+    const int sign = k > 0 ? 1 : -1;
+    std::vector<Mesh::Face_index> queue{f};
+    std::vector<bool> seen(num_faces(mesh), false);
+    seen[f] = true;
+    for(std::size_t next = 0; next < queue.size() && std::abs(k) >= 2; ++next)
+      for(auto hd : halfedges_around_face(halfedge(queue[next], mesh), mesh))
+      {
+        const auto g = face(opposite(hd, mesh), mesh);
+        if(g == Mesh::null_face() || seen[g])
+          continue;
+        seen[g] = true;
+        queue.push_back(g);
+        bool on_boundary = false;
+        for(auto gh : halfedges_around_face(halfedge(g, mesh), mesh))
+          on_boundary = on_boundary || CGAL::is_border(opposite(gh, mesh), mesh);
+        if(get(index, g) == 0 && !on_boundary && std::abs(k) >= 2)
+        {
+          put(index, g, sign);
+          k -= sign;
+          ++moved;
+        }
+      }
+    put(index, f, k);
+  }
+  return moved;
+}
+
 // The cross field on `surface` (with the given cones, or automatic) and its field-aligned quads at h,
 // then at h - 5% and h + 5%, into `quads`; throws the last attempt's Remeshing_failure.
 template <class Traits>
@@ -424,6 +465,12 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
                   aligned ? "smoothest aligned with the principal curvature directions" : "smoothest", cones);
       if(o.cone_distance <= 0. || o.sharp_angle > 0.)
         return cones;
+      if(const std::size_t split = split_multiple_cones(mesh, cone_map); split > 0)
+      {
+        std::printf("  %zu cones moved out of faces holding two quarter turns or more into the nearest faces without one\n",
+                    split);
+        cones += split;
+      }
       tc.set_indices(cone_map);
       try
       {

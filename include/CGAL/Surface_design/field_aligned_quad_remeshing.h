@@ -93,7 +93,9 @@ struct Field_aligned_quads_round
 /// boundary loop is a line too: the lines of the other family end on it, each at a vertex of
 /// valence 3, and at its corners (`boundary_corners()`: where the family normal to it switches)
 /// the quads have a vertex of valence 2 (an angle below 180 degrees) or 4 (above); the polygons
-/// traced outside the loops must be the input's holes, one per loop. Where
+/// traced outside the loops must be the input's holes, one per loop. A map whose level-0 lines
+/// are more than 3 times as long as the quad mesh's edges (sum_v 2 A_v s_v / h, A_v the vertex
+/// area, s_v the frequency scale) winds where it folds and is not extracted. Where
 /// it is not so, the faces where the map folds (`folded_faces()`) are stiffened (`stiffen()`,
 /// times 4, and the faces around them times 2 when the input has 1.5 triangles per quad or more)
 /// and `bsp` solved and extracted again, up to `stiffening_rounds` times (Bommes et al.
@@ -195,11 +197,16 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
   const internal::Quad_extraction_input surface = internal::quad_extraction_input(idx, bsp.vertex_point_map());
   const double h = 1. / bsp.frequency();
   // about sum_v A_v (s_v / h)^2 quads, s the frequency scale
-  double quads = 0.;
+  // and the length of the level-0 lines of such a quad mesh, sum_v 2 A_v s_v / h (two edges of
+  // length h / s per quad)
+  double quads = 0., line_length = 0.;
   {
     const std::vector<double> area = internal::vertex_areas(idx, internal::face_areas(idx, bsp.vertex_point_map()));
     for(auto v : vertices(bsp.mesh()))
+    {
       quads += area[idx.index(v)] * std::pow(bsp.frequency_scale(v) / h, 2);
+      line_length += 2. * area[idx.index(v)] * bsp.frequency_scale(v) / h;
+    }
   }
   if(quads > 1e7)
     throw Invalid_parameter("stripes_per_unit_length", "must give at most 10^7 quads (the spacing 1 / frequency is " +
@@ -259,9 +266,24 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
       result.initially_folded = folded.size();
     result.folded_faces = folded.size();
     const auto extraction_start = Clock::now();
-    q = internal::extract_quads(bsp.level_zero_polylines(), surface.normal, cones,
-                                1e-9 * std::sqrt(surface.area), 0., boundary, corners);
-    const std::string problem = internal::quad_extraction_problem(q, cone_index, chi, surface.normal, boundary_loops);
+    const std::vector<internal::Stripe_isoline_polyline> lines = bsp.level_zero_polylines();
+    // lines far longer than a quad mesh's wind back and forth where the map folds (the triceratops
+    // at 5 000 quads: 8.7 times, up to 8 466 pieces of line in one triangle, whose crossings,
+    // quadratic in that number, took the extraction 25 to 57 s per round); where the lines of the
+    // field's quads total about 1 (the shared meshes: 0.95 to 1.05), such a map is no quad mesh
+    double length = 0.;
+    for(const auto& line : lines)
+      for(std::size_t i = 0; i + 1 < line.points.size(); ++i)
+        length += (line.points[i + 1] - line.points[i]).norm();
+    std::string problem;
+    if(length > 3. * line_length)
+      problem = "the lines are " + std::to_string(int(std::lround(length / line_length))) +
+                " times as long as the quad mesh's edges (they wind where the map folds)";
+    else
+    {
+      q = internal::extract_quads(lines, surface.normal, cones, 1e-9 * std::sqrt(surface.area), 0., boundary, corners);
+      problem = internal::quad_extraction_problem(q, cone_index, chi, surface.normal, boundary_loops);
+    }
     extraction_seconds += seconds_since(extraction_start);
     bool go_on = true;
     internal::if_given(np, CGAL::internal_np::visitor, [&](const auto& visitor) {
