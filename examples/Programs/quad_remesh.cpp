@@ -465,12 +465,11 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
                   aligned ? "smoothest aligned with the principal curvature directions" : "smoothest", cones);
       if(o.cone_distance <= 0. || o.sharp_angle > 0.)
         return cones;
-      if(const std::size_t split = split_multiple_cones(mesh, cone_map); split > 0)
-      {
+      const std::size_t split = split_multiple_cones(mesh, cone_map);
+      if(split > 0)
         std::printf("  %zu cones moved out of faces holding two quarter turns or more into the nearest faces without one\n",
                     split);
-        cones += split;
-      }
+      cones += split;
       tc.set_indices(cone_map);
       try
       {
@@ -491,7 +490,7 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
       {
         std::printf("  cones kept where the field has them: no vertex-based trivial connection has them (%s)\n",
                     e.what());
-        return cones;
+        return cones - split; // the field is unchanged
       }
     };
     if(o.field != "auto")
