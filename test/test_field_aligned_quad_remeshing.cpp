@@ -1571,6 +1571,71 @@ TEMPLATE_TEST_CASE("The stiffening rounds give up where they do not unfold the m
   CHECK(num_faces(out) == 0);
 }
 
+TEMPLATE_TEST_CASE("A map whose lines wind where it folds is refused before its extraction", "[field_aligned_quads]",
+                   SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
+  // the triceratops (horns narrower than h) at 4 000 quads, with the cones quad_remesh makes of
+  // its smoothest cross field (at least h apart, none of -1/4 in a wide face): the trivial
+  // connection's first map folds in some 1 600 faces, where its level-0 lines wind back and
+  // forth (measured: 12 times as long as the quad mesh's edges). The plain smoothest field's map
+  // at the same h folds too, but its lines are not long: its failure is the check's.
+  const Mesh mesh = test::load_mesh<Mesh>("triceratops.off");
+  const double h = std::sqrt(surface_area(mesh) / 4000.);
+  const auto smoothest = smoothest_cross_field(mesh);
+  const auto raw = cones_of(mesh, smoothest);
+  std::map<face_descriptor, int> every;
+  for(auto f : faces(mesh))
+    every[f] = raw.count(f) ? raw.at(f) : 0;
+  SD::Trivial_connection<Mesh> tc(mesh, SD::parameters::symmetry_order(4));
+  tc.set_indices(boost::make_assoc_property_map(every));
+  tc.separate_singularities(h);
+  tc.move_singularities_from_wide_faces();
+  Field<Mesh> separated{&mesh, {}};
+  tc.field(separated.map());
+  // the ratio in the message of one extraction without stiffening (0 when it names none)
+  auto refusal = [&](const Field<Mesh>& field, std::string& what) {
+    Quad_mesh out;
+    SD::make_torus(out, 3, 3, 1., 0.3, false); // something the failure must leave as it is
+    const std::size_t before = num_faces(out);
+    std::vector<std::string> problems;
+    try
+    {
+      SD::field_aligned_quad_remeshing(mesh, field.map(), out,
+                                       SD::parameters::stiffening_rounds(0, SD::parameters::target_edge_length(h))
+                                         .visitor([&](const SD::Field_aligned_quads_round& r) {
+                                           problems.push_back(r.problem);
+                                           return true;
+                                         }));
+      FAIL("this map must be refused");
+    }
+    catch(const SD::Remeshing_failure& e)
+    {
+      what = e.what();
+    }
+    CHECK(num_faces(out) == before);
+    REQUIRE(problems.size() == 1); // one extraction, no round
+    CHECK(what.find(problems.front()) != std::string::npos);
+    const std::string key = "the lines are ";
+    const std::size_t at = problems.front().find(key);
+    if(at == std::string::npos)
+      return 0;
+    CHECK(problems.front().find("times as long as the quad mesh's edges (they wind where the map folds)") !=
+          std::string::npos);
+    return std::stoi(problems.front().substr(at + key.size()));
+  };
+  std::string what;
+  const int ratio = refusal(separated, what);
+  CHECK(ratio > 3);
+  CHECK(ratio < 30);
+  // the smoothest field itself: a map that folds, but its lines are measured short enough to be
+  // extracted, and the check says what is wrong with them
+  const int plain = refusal(smoothest, what);
+  CHECK(plain == 0);
+  CHECK(what.find("do not form the quad mesh of the field") != std::string::npos);
+}
+
 TEST_CASE("Graded stiffening: the ring factor applies to the faces around the given ones", "[field_aligned_quads]")
 {
   // stiffen(F, 1, r) is stiffen(R, r) with R the faces sharing a vertex with F (F among them), and
