@@ -479,7 +479,7 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
         const std::size_t moved = tc.move_singularities_from_wide_faces(); // of -1/4, see the manual
         if(moved > 0)
           std::printf("  %zu cones of -1/4 moved out of faces with an angle of 120 degrees or more\n", moved);
-        if(s.removed_pairs + s.moved + moved > 0)
+        if(split + s.removed_pairs + s.moved + moved > 0) // a split alone moves cones too
         {
           tc.field(out);
           std::printf("  the field is now the trivial connection with these %zu cones\n", cones - 2 * s.removed_pairs);
