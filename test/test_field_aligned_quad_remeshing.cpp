@@ -284,6 +284,73 @@ TEMPLATE_TEST_CASE("Field-aligned quads: pure quads whose irregular vertices are
   }
 }
 
+TEMPLATE_TEST_CASE("Field-aligned quads: the map's area in lattice cells is the quad count, and the remesher's "
+                   "spacing calibrated on it gives the asked number of quads",
+                   "[field_aligned_quads]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  // the torus, the eight (genus 2) and the hemisphere (a boundary on level lines, four cones), at
+  // targets where the map at the frequency 1 / h is 5.7%, 5.1% and 3.8% short of the asked quads
+  for(const auto& [name, quads] : {std::pair<std::string, double>{"torus", 900.}, {"eight.off", 700.},
+                                   {"hemisphere.off", 500.}})
+  {
+    CAPTURE(name);
+    const Mesh mesh = make_case<Mesh>(name);
+    const auto field = name == "hemisphere.off" ? boundary_cross_field(mesh) : smoothest_cross_field(mesh);
+    const double h = std::sqrt(surface_area(mesh) / quads);
+    // the map's area, read from the corners' (u, v), is an integer (set by the windings and the
+    // cones), and it is the count of the quads the extraction traces (an independent count)
+    SD::Branched_stripe_parameterizer bsp(mesh, SD::parameters::symmetry_order(4));
+    bsp.set_lattice_branch_points(true);
+    if(name == "hemisphere.off")
+      bsp.set_boundary_on_level_lines(true);
+    bsp.set_field(field.map(), 1. / h);
+    bsp.solve();
+    const double cells = bsp.map_area();
+    CHECK(std::abs(cells - std::round(cells)) < 1e-6 * cells);
+    const double raw_error = std::abs(std::round(cells) / quads - 1.);
+    CHECK(raw_error > 0.03);
+    Quad_mesh raw;
+    const auto r = SD::extract_field_aligned_quads(bsp, raw);
+    CHECK(double(r.faces) == std::round(bsp.map_area()));
+    // twice the frequency: about four times the cells
+    bsp.set_frequency(2. / h);
+    bsp.solve();
+    CHECK(std::abs(bsp.map_area() / (4. * cells) - 1.) < 0.1);
+
+    // the remesher scales the frequency until the map is within 2.5% of the asked cells, or keeps
+    // the closest of three maps: on the torus and the eight the quads land within 3% (the
+    // stiffening rounds may choose other windings); the hemisphere's maps near 500 cells have
+    // 432, 456, 481, 533, 560 (its boundary's winding moves them in steps of 5% to 10%), so its
+    // first map, 481, stays the closest
+    Quad_mesh out;
+    const auto calibrated = SD::field_aligned_quad_remeshing(mesh, field.map(), out, SD::parameters::target_edge_length(h));
+    CHECK(quad_mesh_problem(mesh, cones_of(mesh, field), out) == "");
+    CHECK(double(calibrated.faces) == double(num_faces(out)));
+    const double error = std::abs(double(calibrated.faces) / quads - 1.);
+    CHECK(error <= raw_error);
+    if(name != "hemisphere.off")
+    {
+      CHECK(error < 0.03);
+      CHECK(calibrated.edge_length < h); // the lines closer than h: the first map was smaller than asked
+    }
+    // extracted from a parameterizer at the remesher's spacing: the same quads
+    SD::Branched_stripe_parameterizer again(mesh, SD::parameters::symmetry_order(4));
+    again.set_lattice_branch_points(true);
+    if(name == "hemisphere.off")
+      again.set_boundary_on_level_lines(true);
+    again.set_field(field.map(), 1. / calibrated.edge_length);
+    Quad_mesh same;
+    CHECK(SD::extract_field_aligned_quads(again, same).faces == calibrated.faces);
+  }
+  // the map of a line field has no area in cells
+  const Mesh torus = make_case<Mesh>("torus");
+  SD::Branched_stripe_parameterizer lines(torus, SD::parameters::symmetry_order(2));
+  lines.set_field(smoothest_cross_field(torus).map(), 10.);
+  lines.solve();
+  CHECK_THROWS_AS(lines.map_area(), SD::Invalid_constraints);
+}
+
 TEMPLATE_TEST_CASE("Field-aligned quads on a surface with a boundary: the boundary is a loop of the quads, its "
                    "vertices regular, the cones the inside's irregular vertices",
                    "[field_aligned_quads][boundary]", SD_MESH_TYPES)
@@ -873,15 +940,16 @@ TEMPLATE_TEST_CASE("Field-aligned quads from a kept parameterizer: the remesher'
   Quad_mesh reference;
   const auto r0 = SD::field_aligned_quad_remeshing(mesh, field.map(), reference, SD::parameters::target_edge_length(h));
 
+  // at the remesher's spacing (h calibrated on the map's area: `edge_length` of its result)
   SD::Branched_stripe_parameterizer bsp(mesh, SD::parameters::symmetry_order(4));
-  bsp.set_field(field.map(), 1. / h);
+  bsp.set_field(field.map(), 1. / r0.edge_length);
   bsp.set_lattice_branch_points(true);
   Quad_mesh out;
   const auto r = SD::extract_field_aligned_quads(bsp, out); // solves first
   CHECK(quad_mesh_problem(mesh, cones, out) == "");
   CHECK(r.faces == r0.faces);
   CHECK(r.stiffening_rounds == r0.stiffening_rounds);
-  CHECK(std::abs(r.edge_length - h) < 1e-12 * h);
+  CHECK(std::abs(r.edge_length - r0.edge_length) < 1e-12 * h);
 
   // an edit: one +1/4 cone moves a quarter of the way around the torus; the same parameterizer
   // gives the quads of the new field, the cone's valence-3 vertex where it now is

@@ -559,9 +559,9 @@ void field_aligned_quads(const Mesh& surface, const std::map<long, int>& given_c
       const SD::Field_aligned_quad_remeshing_result r =
         o.sharp_angle > 0. ? SD::field_aligned_quad_remeshing(mesh, field, quads, np.edge_is_constrained_map(sharp))
                            : SD::field_aligned_quad_remeshing(mesh, field, quads, np);
-      std::printf("field-aligned quads (h = %.4g): %zu cones, %zu faces folded in the first map, %zu rounds of "
-                  "stiffening, %zu folded at the end\n",
-                  spacing, r.cones, r.initially_folded, r.stiffening_rounds, r.folded_faces);
+      std::printf("field-aligned quads (h = %.4g, lines %.4g apart): %zu cones, %zu faces folded in the first map, "
+                  "%zu rounds of stiffening, %zu folded at the end\n",
+                  spacing, r.edge_length, r.cones, r.initially_folded, r.stiffening_rounds, r.folded_faces);
       if(o.edge_length_ratio > 1.)
         std::printf("curvature-adapted sizing: local spacing from %.4g to %.4g\n", r.smallest_edge_length,
                     r.largest_edge_length);

@@ -316,8 +316,7 @@ public:
   /// The index of family `family` (0, or 1 for the second family of a cross field) prescribed in f.
   int index(face_descriptor f, int family = 0) const { return m_index[checked_face(f)][checked_family(family)]; }
   /// Prescribes index k of family `family` in face f (on the face's reference direction).
-  /// \throws Invalid_constraints if f is a branch face or has an edge on the boundary and k != 0;
-  ///         nothing changes then
+  /// \throws Invalid_constraints if f is a branch face or has an edge on the boundary and k != 0
   void set_index(face_descriptor f, int k, int family = 0) { set_index(checked_face(f), k, family); }
   /// Same, with the face given by its index.
   void set_index(std::size_t f, int k, int family = 0)
@@ -335,8 +334,7 @@ public:
     m_solved = false;
     m_windings_valid = false;
   }
-  /// The largest absolute stripe index accepted (far beyond what a mesh resolves; it keeps the
-  /// sums of indices exact).
+  /// The largest absolute stripe index accepted (far beyond what a mesh resolves; sums stay exact).
   static constexpr int max_index = 1 << 20;
   void clear_indices()
   {
@@ -542,8 +540,7 @@ public:
   /// `solve()` next.
   /// `ring_factor` multiplies the terms of the other faces that share a vertex with one of
   /// `faces` (default 1: none): a graded stiffening, which keeps the fold from moving next door
-  /// (measured: `extract_field_aligned_quads()` needs 4 rounds instead of 9 on the kitten with
-  /// factors 4 and 2).
+  /// (`extract_field_aligned_quads()` needs 4 rounds instead of 9 on the kitten with 4 and 2).
   /// \throws Invalid_parameter if `factor` or `ring_factor` is not finite and at least 1;
   ///         Invalid_constraints before `set_field()` or if a face is not one of the mesh;
   ///         Linear_solver_failure if the factorization fails (nothing changes when it throws)
@@ -665,8 +662,7 @@ public:
   /// counterclockwise, or that holds a stripe singularity; a branch face of index k / 4 whose
   /// three triangles around the branch point (see `value()`) are not all counterclockwise or do
   /// not turn by 2 pi (1 - k / 4) together. The isolines of a map without such faces and with
-  /// lattice branch points are a quad mesh (`field_aligned_quad_remeshing()`); `stiffen()` moves
-  /// folds away.
+  /// lattice branch points are a quad mesh (`field_aligned_quad_remeshing()`); `stiffen()` unfolds.
   /// \throws Invalid_constraints before `solve()` or if n is not 4
   std::vector<face_descriptor> folded_faces() const
   {
@@ -701,6 +697,26 @@ public:
         folded.push_back(m_idx->face(f));
     }
     return folded;
+  }
+
+  /// The area of the map (u, v) of a cross field (n = 4) in lattice cells of (2 pi)^2: the signed
+  /// areas of the faces' (u, v) triangles (the three around the branch point in a branch face).
+  /// With lattice branch points an integer, and where the map does not fold its quad count.
+  /// \throws Invalid_constraints before `solve()` or if n is not 4
+  double map_area() const
+  {
+    if(number_of_families() != 2)
+      throw Invalid_constraints("map_area() reads the map of the two stripe families of a cross field (n = 4)");
+    double sum = 0.;
+    for(std::size_t f = 0; f < m_idx->number_of_faces(); ++f)
+    {
+      const auto beta = walk(f); // (throws before solve())
+      const bool regular = cover().regular[f];
+      const Value c = regular ? beta[0] : branch_value(f); // the triangles' common corner
+      for(std::size_t k = regular ? 1 : 0; k < (regular ? 2 : 3); ++k)
+        sum += (beta[k] - c).x() * (beta[k + 1] - c).y() - (beta[k] - c).y() * (beta[k + 1] - c).x();
+    }
+    return 0.5 * sum / (internal::two_pi * internal::two_pi);
   }
 
   /// One isoline: `points` (a polyline on the surface, the first point not repeated when
