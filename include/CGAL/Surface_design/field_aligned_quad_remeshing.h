@@ -564,9 +564,10 @@ Field_aligned_quad_remeshing_result field_aligned_quad_remeshing(const TriangleM
   // asked sum_v A_v (s_v / h)^2. Measured at every extraction on eight shared and bundled meshes:
   // the area equals the traced quad count wherever the map gives quads. On the eleven meshes and
   // targets of the manual's table the first map is 1.5% to 16% short, the calibrated ones within
-  // 2.7%, the quads within 3% (the rounds that choose the windings again move them). A step costs one solve (the kitten: 34 ms, against about 100 ms
-  // for the first, which computes the windings' harmonic parts). The area moves in steps as the
-  // windings change, so the closest map is kept (the knot: 1 876, 1 946, 2 115 cells for 2 000).
+  // 2.7%, the quads within 3% (the rounds that choose the windings again move them). A step
+  // costs one solve (the kitten: 34 ms, against about 100 ms for the first, which computes the
+  // windings' harmonic parts). The area moves in steps as the windings change, so the closest map
+  // is kept (the knot: 1 876, 1 946, 2 115 cells for 2 000).
   {
     const auto& idx = bsp.indices();
     const std::vector<double> vertex_area = internal::vertex_areas(idx, internal::face_areas(idx, bsp.vertex_point_map()));
