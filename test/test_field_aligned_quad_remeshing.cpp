@@ -305,6 +305,7 @@ TEMPLATE_TEST_CASE("Field-aligned quads: the map's area in lattice cells is the 
     if(name == "hemisphere.off")
       bsp.set_boundary_on_level_lines(true);
     bsp.set_field(field.map(), 1. / h);
+    CHECK_THROWS_AS(bsp.map_area(), SD::Invalid_constraints); // no map before solve()
     bsp.solve();
     const double cells = bsp.map_area();
     CHECK(std::abs(cells - std::round(cells)) < 1e-6 * cells);

@@ -29,6 +29,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -76,6 +77,27 @@ struct Field_aligned_quads_round
   std::string problem;
   double seconds = 0.; ///< since `extract_field_aligned_quads()` began (the rounds' time alone)
 };
+
+namespace internal {
+
+// What the stripes of `bsp` at spacing h ask for: about sum_v A_v (s_v / h)^2 quads (A_v the
+// vertex area, s_v the frequency scale), and the length of the level-0 lines of such a quad mesh,
+// sum_v 2 A_v s_v / h (two edges of length h / s per quad).
+template <class Parameterizer>
+std::pair<double, double> asked_quads_and_line_length(const Parameterizer& bsp, double h)
+{
+  const auto& idx = bsp.indices();
+  const std::vector<double> area = vertex_areas(idx, face_areas(idx, bsp.vertex_point_map()));
+  double quads = 0., line_length = 0.;
+  for(auto v : vertices(bsp.mesh()))
+  {
+    quads += area[idx.index(v)] * std::pow(bsp.frequency_scale(v) / h, 2);
+    line_length += 2. * area[idx.index(v)] * bsp.frequency_scale(v) / h;
+  }
+  return {quads, line_length};
+}
+
+} // namespace internal
 
 /// \ingroup PkgFieldAlignedParameterizationRef
 ///
@@ -198,18 +220,7 @@ extract_field_aligned_quads(Branched_stripe_parameterizer<TriangleMesh, VertexPo
                                   " holds a stripe singularity: a dislocation is a T-junction, not a quad mesh");
   const internal::Quad_extraction_input surface = internal::quad_extraction_input(idx, bsp.vertex_point_map());
   const double h = 1. / bsp.frequency();
-  // about sum_v A_v (s_v / h)^2 quads, s the frequency scale
-  // and the length of the level-0 lines of such a quad mesh, sum_v 2 A_v s_v / h (two edges of
-  // length h / s per quad)
-  double quads = 0., line_length = 0.;
-  {
-    const std::vector<double> area = internal::vertex_areas(idx, internal::face_areas(idx, bsp.vertex_point_map()));
-    for(auto v : vertices(bsp.mesh()))
-    {
-      quads += area[idx.index(v)] * std::pow(bsp.frequency_scale(v) / h, 2);
-      line_length += 2. * area[idx.index(v)] * bsp.frequency_scale(v) / h;
-    }
-  }
+  const auto [quads, line_length] = internal::asked_quads_and_line_length(bsp, h);
   if(quads > 1e7)
     throw Invalid_parameter("stripes_per_unit_length", "must give at most 10^7 quads (the spacing 1 / frequency is " +
                                                          std::to_string(h) + (quads > surface.area / (h * h) ?
@@ -569,11 +580,7 @@ Field_aligned_quad_remeshing_result field_aligned_quad_remeshing(const TriangleM
   // windings' harmonic parts). The area moves in steps as the windings change, so the closest map
   // is kept (the knot: 1 876, 1 946, 2 115 cells for 2 000).
   {
-    const auto& idx = bsp.indices();
-    const std::vector<double> vertex_area = internal::vertex_areas(idx, internal::face_areas(idx, bsp.vertex_point_map()));
-    double asked = 0.;
-    for(auto v : vertices(tm))
-      asked += vertex_area[idx.index(v)] * std::pow(bsp.frequency_scale(v) / h, 2);
+    const double asked = internal::asked_quads_and_line_length(bsp, h).first;
     // (an integer up to rounding: rounded, so that equal maps tie whatever the solver's rounding)
     auto cells = [&bsp] { return std::round(bsp.map_area()); };
     double best_frequency = bsp.frequency(), best_error = std::abs(cells() / asked - 1.);
