@@ -983,6 +983,18 @@ TEMPLATE_TEST_CASE("Field-aligned quads from a kept parameterizer: the remesher'
   CHECK(num_faces(moved) == before);
 }
 
+// The stripe angles of both families at the corners of every face, in the mesh's face order.
+template <class Mesh, class Parameterizer>
+std::vector<double> both_families_corner_values(const Mesh& mesh, const Parameterizer& bsp)
+{
+  std::vector<double> c;
+  for(auto f : faces(mesh))
+    for(int a = 0; a < 2; ++a)
+      for(double x : bsp.corner_values(f, a))
+        c.push_back(x);
+  return c;
+}
+
 TEMPLATE_TEST_CASE("Stiffening kept across a new field: the new field's map with the old stiffening, the same as "
                    "stiffened anew, and capped at 4^10", "[field_aligned_quads]", SD_MESH_TYPES)
 {
@@ -1006,14 +1018,7 @@ TEMPLATE_TEST_CASE("Stiffening kept across a new field: the new field's map with
     bsp->set_lattice_branch_points(true);
     return bsp;
   };
-  auto corners = [&](const BSP& bsp) {
-    std::vector<double> c;
-    for(auto f : faces(mesh))
-      for(int a = 0; a < 2; ++a)
-        for(double x : bsp.corner_values(f, a))
-          c.push_back(x);
-    return c;
-  };
+  auto corners = [&](const BSP& bsp) { return both_families_corner_values(mesh, bsp); };
   auto same_map = [&](const BSP& a, const BSP& b) {
     CHECK(std::abs(a.energy() - b.energy()) <= 1e-9 * b.energy());
     const std::vector<double> ca = corners(a), cb = corners(b);
@@ -1070,6 +1075,103 @@ TEMPLATE_TEST_CASE("Stiffening kept across a new field: the new field's map with
     b->solve();
   same_map(*rounds, *cap);
   same_map(*huge, *cap);
+}
+
+TEMPLATE_TEST_CASE("Local stiffening: the whole system's map when the patch is the mesh, else the old values "
+                   "outside the patch and an energy between the two", "[field_aligned_quads]", SD_MESH_TYPES)
+{
+  using Mesh = TestType;
+  using face_descriptor = typename boost::graph_traits<Mesh>::face_descriptor;
+  Torus_with_cones<Mesh> torus;
+  const Mesh& mesh = torus.mesh;
+  const double h = torus.h;
+  Field<Mesh> field{&mesh, {}};
+  torus.tc.field(field.map());
+  // 40 faces around a cone stiffened 16 times, their neighbours 2 times
+  const std::vector<face_descriptor> some(faces(mesh).begin(), std::next(faces(mesh).begin(), 40));
+  auto corners = [&](const auto& bsp) { return both_families_corner_values(mesh, bsp); };
+  auto largest_difference = [](const std::vector<double>& a, const std::vector<double>& b) {
+    double worst = 0.;
+    for(std::size_t i = 0; i < a.size(); ++i)
+      worst = (std::max)(worst, std::abs(a[i] - b[i]));
+    return worst;
+  };
+#define SD_LOCAL_STIFFENING(Traits, label)                                                                    \
+  {                                                                                                           \
+    CAPTURE(label);                                                                                           \
+    auto make = [&] {                                                                                         \
+      auto bsp = std::make_unique<SD::Branched_stripe_parameterizer<Mesh, typename boost::property_map<Mesh, CGAL::vertex_point_t>::const_type, Traits>>( \
+        mesh, SD::parameters::symmetry_order(4).sparse_linear_solver(Traits()));                              \
+      bsp->set_field(field.map(), 1. / h);                                                                    \
+      bsp->set_lattice_branch_points(true);                                                                   \
+      bsp->solve();                                                                                           \
+      return bsp;                                                                                             \
+    };                                                                                                        \
+    auto global = make(), whole = make(), wide = make(), narrow = make();                                     \
+    const std::vector<double> before = corners(*global);                                                      \
+    global->stiffen(some, 16., 2.);                                                                           \
+    global->solve_keeping_windings();                                                                         \
+    const std::size_t factored = whole->number_of_factorizations();                                           \
+    whole->stiffen_locally(some, 16., 2., 1e9);                                                               \
+    CHECK(whole->number_of_factorizations() == factored); /* no factorization of the whole system */          \
+    /* the patch is the mesh: the same map as one back-substitution of the whole stiffened system */          \
+    CHECK(largest_difference(corners(*whole), corners(*global)) < 1e-8);                                      \
+    CHECK(std::abs(whole->energy() - global->energy()) <= 1e-9 * global->energy());                          \
+    CHECK(largest_difference(before, corners(*global)) > 1e-3); /* the stiffening moved the map */            \
+    /* patches of 3h and h: values kept at the corners farther than the radius from the stiffened */          \
+    /* faces' corners (in space: along the edges is farther still), and energies in order */                  \
+    wide->stiffen_locally(some, 16., 2., 3. * h);                                                             \
+    narrow->stiffen_locally(some, 16., 2., h);                                                                \
+    std::vector<Eigen::Vector3d> seeds;                                                                       \
+    for(face_descriptor f : some)                                                                             \
+      for(auto v : vertices_around_face(halfedge(f, mesh), mesh))                                             \
+        seeds.push_back(eigen(get(CGAL::vertex_point, mesh, v)));                                             \
+    for(const auto& [bsp, radius] : {std::pair{wide.get(), 3. * h}, std::pair{narrow.get(), h}})              \
+    {                                                                                                         \
+      const std::vector<double> after = corners(*bsp);                                                        \
+      std::size_t j = 0, kept = 0, moved = 0; /* corners() holds 6 values per face */               \
+      for(auto f : faces(mesh))                                                                               \
+      {                                                                                                       \
+        bool far = true;                                                                                      \
+        for(auto v : vertices_around_face(halfedge(f, mesh), mesh))                                           \
+          for(const auto& s : seeds)                                                                          \
+            far = far && (eigen(get(CGAL::vertex_point, mesh, v)) - s).norm() > radius * (1. + 1e-9);        \
+        double change = 0.;                                                                                   \
+        for(std::size_t k = 6 * j; k < 6 * j + 6; ++k)                                                        \
+          change = (std::max)(change, std::abs(after[k] - before[k]));                                        \
+        if(far)                                                                                               \
+        {                                                                                                     \
+          CHECK(change <= 1e-12 * (1. + std::abs(before[6 * j])));                                            \
+          ++kept;                                                                                             \
+        }                                                                                                     \
+        else                                                                                                  \
+          moved += change > 1e-6;                                                                             \
+        ++j;                                                                                                  \
+      }                                                                                                       \
+      CHECK(kept > 0);                                                                                        \
+      CHECK(moved > 0);                                                                                       \
+    }                                                                                                         \
+    CHECK(global->energy() <= wide->energy() * (1. + 1e-12));                                                  \
+    CHECK(wide->energy() <= narrow->energy() * (1. + 1e-12));                                                  \
+    CHECK(wide->energy() < narrow->energy());                                                                 \
+    /* the next whole solve factors the stiffened system first: the map of stiffen() and solve() */           \
+    global->solve();                                                                                          \
+    narrow->solve();                                                                                          \
+    CHECK(narrow->number_of_factorizations() == factored + 1);                                                \
+    CHECK(largest_difference(corners(*narrow), corners(*global)) < 1e-8);                                     \
+    /* refused: bad factors (nothing changes), and no solution to relax */                                    \
+    const std::vector<double> now = corners(*narrow);                                                         \
+    CHECK_THROWS_AS(narrow->stiffen_locally(some, 0.5, 2., h), SD::Invalid_parameter);                        \
+    CHECK_THROWS_AS(narrow->stiffen_locally(some, 4., std::nan(""), h), SD::Invalid_parameter);               \
+    CHECK_THROWS_AS(narrow->stiffen_locally(some, 4., 2., -h), SD::Invalid_parameter);                        \
+    CHECK(largest_difference(corners(*narrow), now) == 0.);                                                   \
+    SD::Branched_stripe_parameterizer<Mesh, typename boost::property_map<Mesh, CGAL::vertex_point_t>::const_type, Traits> unsolved( \
+      mesh, SD::parameters::symmetry_order(4).sparse_linear_solver(Traits()));                                \
+    unsolved.set_field(field.map(), 1. / h);                                                                  \
+    CHECK_THROWS_AS(unsolved.stiffen_locally(some, 4., 2., h), SD::Invalid_constraints);                      \
+  }
+  SD_FOR_EACH_SOLVER(SD_LOCAL_STIFFENING)
+#undef SD_LOCAL_STIFFENING
 }
 
 // How closely the quads' edges follow the creases, read from the two meshes alone: points every

@@ -444,6 +444,7 @@ public:
   void solve()
   {
     require_field();
+    m_factorizations += m_solver->factorization_pending(); // (after stiffen_locally())
     typename Solver::Solution s = m_solver->solve(m_omega, m_index);
     m_solution = std::move(s);
     m_solved = true;
@@ -460,6 +461,7 @@ public:
     if(!m_windings_valid)
       throw Invalid_constraints("solve_keeping_windings(): no solve() with the current field, singularities and "
                                 "lattice setting to take the windings from");
+    m_factorizations += m_solver->factorization_pending();
     typename Solver::Solution s = m_solver->solve_with_windings(m_omega, m_solution);
     m_solution = std::move(s);
     m_solved = true;
@@ -547,11 +549,8 @@ public:
   template <class FaceRange>
   void stiffen(const FaceRange& faces, double factor, double ring_factor = 1.)
   {
-    require_field();
-    if(!std::isfinite(factor) || !(factor >= 1.))
-      throw Invalid_parameter("factor", "must be finite and at least 1, got " + std::to_string(factor));
-    if(!std::isfinite(ring_factor) || !(ring_factor >= 1.))
-      throw Invalid_parameter("ring_factor", "must be finite and at least 1, got " + std::to_string(ring_factor));
+    std::vector<std::size_t> indices;
+    std::vector<double> scaled = stiffness_after(faces, factor, ring_factor, indices);
     // the stiffened systems have one pattern: order and analyse it once (a cache of this object's
     // own, dropped with the next field, unless the traits have one)
     if constexpr(internal::Has_solver_settings<SolverTraits>::value)
@@ -560,23 +559,6 @@ public:
         m_traits.solver().set_analysis_cache(std::make_shared<Symbolic_analysis_cache>());
         m_own_analysis_cache = true;
       }
-    std::vector<double> scaled = m_stiffness;
-    if(scaled.empty())
-      scaled.assign(m_idx->number_of_faces(), 1.);
-    std::vector<double> times(m_idx->number_of_faces(), 1.);
-    for(face_descriptor f : faces)
-      times[checked_face(f)] = factor;
-    if(ring_factor != 1.)
-      for(face_descriptor f : faces)
-        for(auto v : vertices_around_face(halfedge(f, m_tm), m_tm))
-          for(face_descriptor g : faces_around_target(halfedge(v, m_tm), m_tm))
-            if(g != boost::graph_traits<TriangleMesh>::null_face())
-            {
-              double& t = times[m_idx->index(g)];
-              t = (std::max)(t, ring_factor);
-            }
-    for(std::size_t f = 0; f < times.size(); ++f)
-      scaled[f] = (std::min)(scaled[f] * times[f], 1048576.);
     std::swap(scaled, m_stiffness);
     try
     {
@@ -592,6 +574,38 @@ public:
     ++m_factorizations;
     m_relaxation.reset();
     m_solved = false; // the windings stay valid: the same field and indices, other weights
+  }
+  /// `stiffen()` then `solve_keeping_windings()`, locally: the stripe angles are solved again
+  /// only at the vertices within `radius` of `faces` along the edges, the others kept (their
+  /// values the boundary values there), with a factorization of those vertices' block of the
+  /// system; the whole system's waits for the next `solve()` or `solve_keeping_windings()`. The
+  /// map keeps its windings, lattice branch points and topology.
+  /// \throws as `stiffen()`; Invalid_parameter if `radius` is not finite and at least 0; Invalid_constraints
+  ///         without a `solve()` for the current field, singularities and lattice setting
+  template <class FaceRange>
+  void stiffen_locally(const FaceRange& faces, double factor, double ring_factor, double radius)
+  {
+    std::vector<std::size_t> indices;
+    std::vector<double> scaled = stiffness_after(faces, factor, ring_factor, indices);
+    internal::require_nonnegative("radius", radius);
+    if(!m_windings_valid || !m_solved)
+      throw Invalid_constraints("stiffen_locally(): no solve() with the current field, singularities and lattice");
+    std::swap(scaled, m_stiffness);
+    const internal::Direction_field_cover& cover = m_solver->cover();
+    const bool pending = m_solver->factorization_pending();
+    m_solver->set_weights(weights(cover), spoke_weights(cover), false);
+    try
+    {
+      m_solution = m_solver->solve_with_windings_near(m_omega, m_solution,
+                                                      internal::vertices_near_faces(*m_idx, m_vpm, indices, radius));
+    }
+    catch(...)
+    {
+      std::swap(scaled, m_stiffness);
+      m_solver->set_weights(weights(cover), spoke_weights(cover), !pending);
+      throw;
+    }
+    m_relaxation.reset();
   }
   /// Whether `set_field()` keeps the stiffening of `stiffen()` (default: no). An editor moving a
   /// cone face by face keeps it: the new field's map mostly folds where the last one's did, and
@@ -867,6 +881,21 @@ private:
 
   double stiffness(std::size_t f) const { return m_stiffness.empty() ? 1. : m_stiffness[f]; }
 
+  // The stiffness after stiffen(faces, factor, ring_factor), its arguments checked (the faces' indices)
+  template <class FaceRange>
+  std::vector<double> stiffness_after(const FaceRange& faces, double factor, double ring_factor,
+                                      std::vector<std::size_t>& indices) const
+  {
+    require_field();
+    if(!std::isfinite(factor) || !(factor >= 1.))
+      throw Invalid_parameter("factor", "must be finite and at least 1, got " + std::to_string(factor));
+    if(!std::isfinite(ring_factor) || !(ring_factor >= 1.))
+      throw Invalid_parameter("ring_factor", "must be finite and at least 1, got " + std::to_string(ring_factor));
+    for(face_descriptor f : faces)
+      indices.push_back(checked_face(f));
+    return internal::stiffened(*m_idx, m_stiffness, indices, factor, ring_factor);
+  }
+
   // A new solver for the current field, after a change of its constraints (the lattice, the boundary).
   void refactor()
   {
@@ -919,41 +948,11 @@ private:
         *m_idx, m_vpm, field, m_frequency, [this](std::size_t h) { return m_solver->transition_along(h); }));
   }
 
-  // The walk around face f: beta[0..2] at its corners (unwrapped along its first two halfedges),
-  // beta[3] at the first corner again after the third halfedge.
-  std::array<Value, 4> walk(std::size_t f) const
-  {
-    const auto& sol = solution();
-    std::array<Value, 4> beta;
-    const std::size_t v0 = reference_vertex(f);
-    beta[0] = sol.alpha[v0];
-    Eigen::Matrix2d M = Eigen::Matrix2d::Identity();
-    std::size_t t = 0;
-    for(auto h : halfedges_around_face(halfedge(m_idx->face(f), m_tm), m_tm))
-    {
-      const std::size_t hi = m_idx->index(h);
-      beta[t + 1] = beta[t] + M * m_solver->along(sol.y, hi);
-      M = M * m_solver->transition_along(hi);
-      ++t;
-    }
-    return beta;
-  }
-
-  // The value at the branch point: the fixed point of x -> M x + t, where the walk returns to
-  // the first corner's values transformed by M (the product of the transitions) and shifted by t.
+  // The walk around face f and the value at its branch point (stripe_interpolation.h)
+  auto walk(std::size_t f) const { return internal::face_walk(*m_idx, *m_solver, solution(), f, reference_vertex(f)); }
   Value branch_value(std::size_t f) const
   {
-    const auto beta = walk(f);
-    Eigen::Matrix2d M = Eigen::Matrix2d::Identity();
-    for(auto h : halfedges_around_face(halfedge(m_idx->face(f), m_tm), m_tm))
-      M = M * m_solver->transition_along(m_idx->index(h));
-    const int d = cover().d;
-    // beta[3] are the values of the sheets M maps to: beta[3] = M alpha_v0 + t
-    const Value t = beta[3] - M * beta[0];
-    const Eigen::MatrixXd A = Eigen::MatrixXd::Identity(d, d) - M.topLeftCorner(d, d);
-    Value c = Value::Zero();
-    c.head(d) = A.fullPivLu().solve(Eigen::VectorXd(t.head(d)));
-    return c;
+    return internal::branch_point_value(*m_idx, *m_solver, solution(), f, reference_vertex(f), cover().d);
   }
 
   const TriangleMesh& m_tm;

@@ -13,6 +13,7 @@
 #include <CGAL/Surface_design/internal/Core/cover_constraints.h>
 #include <CGAL/Surface_design/internal/Core/dec.h>
 #include <CGAL/Surface_design/internal/Core/direction_field_cover.h>
+#include <CGAL/Surface_design/internal/Core/dual_forest_peeling.h>
 #include <CGAL/Surface_design/internal/Core/Mesh_indices.h>
 #include <CGAL/Surface_design/internal/Core/sparse_one_forms.h>
 #include <CGAL/Surface_design/internal/Core/topology.h>
@@ -108,6 +109,7 @@ public:
     double energy = 0.;
     std::size_t free_directions = 0, winding_changes = 0;
     std::vector<Value> windings; ///< per edge: the particular solution with the chosen windings (2 pi integers)
+    Eigen::VectorXd potential;   ///< per value (v d + a): f with y = windings + d_P f, before the lattice offsets
   };
 
   /// \param weight per edge, with the contributions of branch faces already removed
@@ -143,7 +145,10 @@ public:
   /// on the weights); the windings of earlier solutions stay valid for `solve_with_windings()`.
   /// \throws Linear_solver_failure if the factorization fails; the old weights are then kept
   ///         (and factored again)
-  void set_weights(std::vector<double> weight, const std::vector<std::array<double, 3>>& spoke_weight)
+  /// With `factor_now` false the factorization waits for the next `solve()` or
+  /// `solve_with_windings()` (`solve_with_windings_near()` needs none).
+  void set_weights(std::vector<double> weight, const std::vector<std::array<double, 3>>& spoke_weight,
+                   bool factor_now = true)
   {
     CGAL_precondition(weight.size() == m_weight.size() && spoke_weight.empty() != m_spokes);
     auto swap_weights = [&](std::vector<double>& w, std::vector<std::array<double, 3>>& spokes) {
@@ -155,6 +160,8 @@ public:
     swap_weights(weight, spokes);
     m_basis_ready = m_lattice_ready = false;
     m_potential_basis.resize(0, 0);
+    if((m_stale = !factor_now)) // factored by the next solve
+      return;
     try
     {
       factor();
@@ -205,6 +212,7 @@ public:
   Solution solve(const std::vector<Value>& omega, const std::vector<Face_index>& k)
   {
     check_stokes_sums(m_topology.components, m_cover.regular, m_stokes_component, m_cover.d, k); // cover_constraints.h
+    ensure_factored();
     Solution s;
     std::vector<Value> ystar = particular_solution(k);
     s.y = optimal_one_form(ystar, omega, &s.alpha);
@@ -242,6 +250,7 @@ public:
       else if(changed)
         s.y = optimal_one_form(ystar, omega, &s.alpha);
     }
+    s.potential = potential_vector(s.alpha);
     finish_lattice(ystar, s.alpha); // ystar holds the windings now
     s.energy = energy(s.y, omega);
     s.windings = std::move(ystar);
@@ -250,16 +259,51 @@ public:
 
   /// The optimal solution with the integers of `previous` (of a system with this cover and these
   /// indices, other weights: a stiffening): one back-substitution, no windings chosen.
-  Solution solve_with_windings(const std::vector<Value>& omega, const Solution& previous) const
+  Solution solve_with_windings(const std::vector<Value>& omega, const Solution& previous)
   {
+    ensure_factored();
     Solution s;
     s.windings = previous.windings;
     s.y = optimal_one_form(s.windings, omega, &s.alpha);
     s.free_directions = number_of_directions();
+    s.potential = potential_vector(s.alpha);
     finish_lattice(s.windings, s.alpha);
     s.energy = energy(s.y, omega);
     return s;
   }
+
+  /// As `solve_with_windings()`, but the potential of `previous` is kept at all vertices but
+  /// `vertices` (indices), the boundary values of its minimizer there: a local relaxation (after
+  /// a stiffening of the faces around them). One sparse factorization of their block of L, not
+  /// of L (whose factorization may wait: `set_weights()`); the minimizer of the whole energy with
+  /// these windings when `vertices` holds them all.
+  /// \throws Linear_solver_failure if that factorization fails
+  Solution solve_with_windings_near(const std::vector<Value>& omega, const Solution& previous,
+                                    const std::vector<std::size_t>& vertices)
+  {
+    CGAL_precondition(previous.potential.size() == Eigen::Index(m_fixed.size()));
+    const std::size_t d = std::size_t(m_cover.d);
+    const Sparse_matrix L = assemble(); // (the current weights: the same pins)
+    const Eigen::VectorXd b = potential_rhs(previous.windings, &omega);
+    Eigen::VectorXd f = previous.potential;
+    std::vector<Eigen::Index> relaxed; // the values of those vertices that are not pinned
+    for(std::size_t v : vertices)
+      for(std::size_t a = 0; a < d; ++a)
+        if(!m_fixed[v * d + a])
+          relaxed.push_back(Eigen::Index(v * d + a));
+    solve_on_subset<SolverTraits>(L, b, f, relaxed, "twisted Laplacian of the relaxed vertices");
+    Solution s;
+    s.windings = previous.windings;
+    s.y = one_form_of_potential(s.windings, f, &s.alpha);
+    s.free_directions = number_of_directions();
+    s.potential = std::move(f);
+    finish_lattice(s.windings, s.alpha);
+    s.energy = energy(s.y, omega);
+    return s;
+  }
+
+  /// Whether the weights changed without a factorization since (`set_weights()`).
+  bool factorization_pending() const { return m_stale; }
 
   double energy(const std::vector<Value>& y, const std::vector<Value>& omega) const
   {
@@ -584,53 +628,11 @@ private:
         grow(head);
       }
 
-    m_peel.reserve(order.size()); // peeling steps, leaves first: one per node but the roots,
-    m_peel_others.reserve(2 * order.size()); // with the two other edges of its triangle
-    for(auto it = order.rbegin(); it != order.rend(); ++it)
-    {
-      const std::size_t f = *it;
-      if(parent_edge_of[f] == npos)
-        continue; // a root
-      Peel_step step{std::uint32_t(f), 0, std::uint32_t(m_peel_others.size()), 0, Sign_matrix::Zero()};
-      Eigen::Matrix2d M = Eigen::Matrix2d::Identity();
-      for(auto h : halfedges_around_face(halfedge(m_idx.face(f), tm), tm))
-      {
-        const std::size_t hi = m_idx.index(h), e = m_idx.edge_index(h);
-        // the contribution of y_e to the curl: M y_e along the edge, -M P_e^T y_e against it
-        const Eigen::Matrix2d C = m_idx.orientation_sign(h) > 0 ? M : Eigen::Matrix2d(-M * m_P[e].transpose());
-        if(e == parent_edge_of[f])
-        {
-          step.parent = std::uint32_t(e);
-          step.parent_inverse = C.transpose().cast<std::int8_t>(); // C is a signed permutation
-        }
-        else
-          m_peel_others.push_back({std::uint32_t(e), C.cast<std::int8_t>()});
-        M = M * transition_along(hi);
-      }
-      step.others_end = std::uint32_t(m_peel_others.size());
-      m_peel.push_back(step);
-    }
-    // The free edges, with one of odd matching per component last (cross fields): the global
-    // shifts c of alpha with (P_e - I) c in 2 pi Z^d make some directions integer combinations of
-    // the others, and ensure_harmonic_basis() drops the last dependent ones. On a cross field the
-    // relations are generated by c = pi (1, 1) and pi (1, -1); on the two sheets of an edge with
-    // odd matching they form a unimodular block, so dropping that edge keeps the whole lattice,
-    // while dropping an edge with matching 2 (block of determinant 2) would lose half of it.
-    std::vector<std::size_t> free_edges, last;
-    std::vector<bool> component_has_last(m_topology.components.size(), false);
-    for(std::size_t e = 0; e < in_forest.size(); ++e)
-      if(!t.edge_in_tree[e] && !in_forest[e] && !stokes_fixed[e])
-      {
-        const std::size_t c = m_topology.components.vertex_component[m_ends[e].first];
-        if(m_cover.n == 4 && m_cover.matching[e] % 2 == 1 && !component_has_last[c])
-        {
-          component_has_last[c] = true;
-          last.push_back(e);
-        }
-        else
-          free_edges.push_back(e);
-      }
-    free_edges.insert(free_edges.end(), last.begin(), last.end());
+    m_peeling = Dual_forest_peeling(m_idx, m_P, order, parent_edge_of, [&](std::size_t h) { return transition_along(h); });
+    std::vector<bool> off(in_forest.size()); // the edges in neither the tree nor the forest, nor fixed by Stokes
+    for(std::size_t e = 0; e < off.size(); ++e)
+      off[e] = !t.edge_in_tree[e] && !in_forest[e] && !stokes_fixed[e];
+    const std::vector<std::size_t> free_edges = free_winding_edges(m_topology.components, m_ends, m_cover, off);
     auto free_sheet = [&](std::size_t e, int a) { return m_level_sheets.empty() || !((m_level_sheets[e] >> a) & 1); };
     for(std::size_t e : free_edges)
       for(int a = 0; a < m_cover.d; ++a)
@@ -652,6 +654,26 @@ private:
   // transported without twist. Pinned: one vertex of every piece whose transport around its
   // loops is trivial (a single vertex whose faces all branch is such a piece).
   void factor()
+  {
+    m_system.factor(assemble());
+    m_stale = false;
+  }
+  void ensure_factored()
+  {
+    if(m_stale)
+      factor();
+  }
+  Eigen::VectorXd potential_vector(const std::vector<Value>& alpha) const
+  {
+    const std::size_t d = std::size_t(m_cover.d);
+    Eigen::VectorXd f(Eigen::Index(alpha.size() * d));
+    for(std::size_t v = 0; v < alpha.size(); ++v)
+      for(std::size_t a = 0; a < d; ++a)
+        f[Eigen::Index(v * d + a)] = alpha[v][Eigen::Index(a)];
+    return f;
+  }
+  // L with the current weights (and m_fixed, the pins, for them)
+  Sparse_matrix assemble()
   {
     const auto& tm = m_idx.mesh();
     const int d = m_cover.d;
@@ -704,25 +726,14 @@ private:
       for(Sparse_matrix::InnerIterator it(L, c); it; ++it)
         if(m_fixed[std::size_t(it.row())] || m_fixed[std::size_t(c)])
           it.valueRef() = it.row() == c ? 1. : 0.;
-    m_system.factor(std::move(L));
+    return L;
   }
 
   // y* = 2 pi m*: the free edges at `free_values` (zero elsewhere off the forest), the forest
   // edges peeled so that every constrained face gets its curl 2 pi k_f.
   std::vector<Value> peel(std::vector<Value> y, const std::vector<Face_index>* k) const
   {
-    for(const Peel_step& step : m_peel)
-    {
-      Value target = Value::Zero();
-      if(k)
-        target = two_pi * (*k)[step.face].template cast<double>();
-      for(std::size_t i = step.others_begin; i < step.others_end; ++i)
-        target -= m_peel_others[i].coefficient.template cast<double>() * y[m_peel_others[i].edge];
-      y[step.parent] = step.parent_inverse.template cast<double>() * target;
-      if(m_cover.d == 1)
-        y[step.parent][1] = 0.;
-    }
-    return y;
+    return m_peeling.peel(std::move(y), k, m_cover.d);
   }
 
   std::vector<Value> particular_solution(const std::vector<Face_index>& k) const
@@ -935,17 +946,6 @@ private:
   };
   static constexpr std::size_t potential_budget = std::size_t(1) << 24; // doubles (128 MB)
   static constexpr std::size_t solve_block = 32;                        // right-hand sides per solve
-  using Sign_matrix = Eigen::Matrix<std::int8_t, 2, 2>; // peeling: signed permutations, 32-bit indices
-  struct Peel_other
-  {
-    std::uint32_t edge;
-    Sign_matrix coefficient;
-  };
-  struct Peel_step
-  {
-    std::uint32_t face, parent, others_begin, others_end;
-    Sign_matrix parent_inverse;
-  };
 
   std::shared_ptr<const Indices> m_idx_ptr;
   std::shared_ptr<const Topology> m_topology_ptr;
@@ -965,11 +965,11 @@ private:
   std::vector<std::pair<std::size_t, int>> m_level_values;
   std::vector<Sparse_form> m_chain_eta;
   std::vector<Value> m_free_offset; // per vertex of an untwisted piece: its generic lattice offset
-  std::vector<Peel_step> m_peel;
-  std::vector<Peel_other> m_peel_others;
+  Dual_forest_peeling m_peeling;
   std::vector<Free_direction> m_free;
   Vertex_block_pattern m_block_pattern; // of L
   bool m_basis_ready = false;
+  bool m_stale = false; // set_weights() without a factorization
   std::vector<Sparse_form> m_eta;
   std::vector<std::size_t> m_kept;
   Eigen::MatrixXd m_potential_basis; // per kept direction, its potential (a column), or empty

@@ -12,10 +12,12 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <Eigen/LU>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <utility>
 
 namespace CGAL {
@@ -157,6 +159,48 @@ inline double branch_face_value(const std::array<double, 4>& beta, double centre
   const auto [k, l] = branch_sub_triangle(o, b);
   const int i = (k + 1) % 3; // the sub-triangle (i, i + 1, o)
   return l[0] * beta[std::size_t(i)] + l[1] * beta[std::size_t(i + 1)] + l[2] * centre;
+}
+
+/// The walk of a solution of `solver` (`Branched_one_form_solver`) around face f from its corner
+/// v0 = source(halfedge(f)): beta[0..2] the values at its corners (unwrapped along its first two
+/// halfedges), beta[3] at the first corner again after the third halfedge.
+template <class Indices, class Solver>
+std::array<Eigen::Vector2d, 4> face_walk(const Indices& idx, const Solver& solver,
+                                         const typename Solver::Solution& solution, std::size_t f, std::size_t v0)
+{
+  const auto& tm = idx.mesh();
+  std::array<Eigen::Vector2d, 4> beta;
+  beta[0] = solution.alpha[v0];
+  Eigen::Matrix2d M = Eigen::Matrix2d::Identity();
+  std::size_t t = 0;
+  for(auto h : halfedges_around_face(halfedge(idx.face(f), tm), tm))
+  {
+    const std::size_t hi = idx.index(h);
+    beta[t + 1] = beta[t] + M * solver.along(solution.y, hi);
+    M = M * solver.transition_along(hi);
+    ++t;
+  }
+  return beta;
+}
+
+/// The value at the branch point of face f: the fixed point of x -> M x + t, where the walk
+/// (`face_walk()`) returns to the first corner's values transformed by M (the product of the
+/// transitions) and shifted by t; the first `d` values.
+template <class Indices, class Solver>
+Eigen::Vector2d branch_point_value(const Indices& idx, const Solver& solver, const typename Solver::Solution& solution,
+                                   std::size_t f, std::size_t v0, int d)
+{
+  const auto& tm = idx.mesh();
+  const auto beta = face_walk(idx, solver, solution, f, v0);
+  Eigen::Matrix2d M = Eigen::Matrix2d::Identity();
+  for(auto h : halfedges_around_face(halfedge(idx.face(f), tm), tm))
+    M = M * solver.transition_along(idx.index(h));
+  // beta[3] are the values of the sheets M maps to: beta[3] = M alpha_v0 + t
+  const Eigen::Vector2d t = beta[3] - M * beta[0];
+  const Eigen::MatrixXd A = Eigen::MatrixXd::Identity(d, d) - M.topLeftCorner(d, d);
+  Eigen::Vector2d c = Eigen::Vector2d::Zero();
+  c.head(d) = A.fullPivLu().solve(Eigen::VectorXd(t.head(d)));
+  return c;
 }
 
 } // namespace internal

@@ -12,17 +12,90 @@
 #include <CGAL/Surface_design/internal/Core/geometry.h>
 #include <CGAL/Surface_design/internal/Field_aligned_parameterization/stripe_interpolation.h>
 
+#include <boost/graph/graph_traits.hpp>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Surface_design {
 namespace internal {
+
+/// The stiffness per face (`Branched_stripe_parameterizer::stiffen()`) after multiplying by
+/// `factor` that of `faces` (indices) and by `ring_factor` that of the other faces sharing a
+/// vertex with one of them (the larger of the two where both apply), capped at 4^10; `stiffness`
+/// empty: all 1 before.
+template <class Indices>
+std::vector<double> stiffened(const Indices& idx, std::vector<double> stiffness, const std::vector<std::size_t>& faces,
+                              double factor, double ring_factor)
+{
+  const auto& tm = idx.mesh();
+  if(stiffness.empty())
+    stiffness.assign(idx.number_of_faces(), 1.);
+  std::vector<double> times(idx.number_of_faces(), 1.);
+  for(std::size_t f : faces)
+    times[f] = factor;
+  if(ring_factor != 1.)
+    for(std::size_t f : faces)
+      for(auto v : vertices_around_face(halfedge(idx.face(f), tm), tm))
+        for(auto g : faces_around_target(halfedge(v, tm), tm))
+          if(g != boost::graph_traits<typename Indices::Mesh>::null_face())
+          {
+            double& t = times[idx.index(g)];
+            t = (std::max)(t, ring_factor);
+          }
+  for(std::size_t f = 0; f < times.size(); ++f)
+    stiffness[f] = (std::min)(stiffness[f] * times[f], 1048576.);
+  return stiffness;
+}
+
+/// The vertices (indices) of `faces` (indices) and those within `radius` of them along the edges
+/// (Dijkstra's distances from the faces' corners).
+template <class Indices, class VertexPointMap>
+std::vector<std::size_t> vertices_near_faces(const Indices& idx, const VertexPointMap& vpm,
+                                             const std::vector<std::size_t>& faces, double radius)
+{
+  const auto& tm = idx.mesh();
+  std::vector<double> distance(idx.number_of_vertices(), std::numeric_limits<double>::infinity());
+  using Entry = std::pair<double, std::size_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  for(std::size_t f : faces)
+    for(auto v : vertices_around_face(halfedge(idx.face(f), tm), tm))
+      if(distance[idx.index(v)] > 0.)
+      {
+        distance[idx.index(v)] = 0.;
+        queue.emplace(0., idx.index(v));
+      }
+  std::vector<std::size_t> out;
+  while(!queue.empty())
+  {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if(d > distance[v])
+      continue;
+    out.push_back(v);
+    const Eigen::Vector3d p = position(vpm, idx.vertex(v));
+    for(auto w : vertices_around_target(halfedge(idx.vertex(v), tm), tm))
+    {
+      const double dw = d + (position(vpm, w) - p).norm();
+      if(dw <= radius && dw < distance[idx.index(w)])
+      {
+        distance[idx.index(w)] = dw;
+        queue.emplace(dw, idx.index(w));
+      }
+    }
+  }
+  return out;
+}
 
 /// The corners of face f, in the order source(h), target(h), target(next(h)) for h = halfedge(f)
 /// (vertices_around_face() starts at target(h): not this order).

@@ -200,6 +200,43 @@ private:
   bool m_factored = false;
 };
 
+/// Solves A x = b for the values of x at `free` (indices, each once), those elsewhere given: A's
+/// block of the free rows and columns factored (a fresh `SolverTraits`), the given values' terms
+/// moved to the right-hand side. A is symmetric and stored whole; the block must be definite.
+/// \throws Linear_solver_failure as `Factored_system::factor()` and `solve()`
+template <class SolverTraits>
+void solve_on_subset(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                 const std::vector<Eigen::Index>& free, const std::string& name)
+{
+  if(free.empty())
+    return;
+  std::vector<Eigen::Index> local(std::size_t(a.rows()), -1);
+  for(std::size_t k = 0; k < free.size(); ++k)
+    local[std::size_t(free[k])] = Eigen::Index(k);
+  const Eigen::Index n = Eigen::Index(free.size());
+  Eigen::VectorXd r(n);
+  std::vector<Eigen::Triplet<double>> entries;
+  for(Eigen::Index k = 0; k < n; ++k)
+  {
+    r[k] = b[free[std::size_t(k)]];
+    for(Eigen::SparseMatrix<double>::InnerIterator it(a, free[std::size_t(k)]); it; ++it) // (column = row)
+    {
+      const Eigen::Index row = local[std::size_t(it.row())];
+      if(row >= 0)
+        entries.emplace_back(row, k, it.value());
+      else
+        r[k] -= it.value() * x[it.row()];
+    }
+  }
+  Eigen::SparseMatrix<double> block(n, n);
+  block.setFromTriplets(entries.begin(), entries.end());
+  Factored_system<SolverTraits> system(SolverTraits(), name);
+  system.factor(std::move(block));
+  const Eigen::VectorXd solved = system.solve(r);
+  for(Eigen::Index k = 0; k < n; ++k)
+    x[free[std::size_t(k)]] = solved[k];
+}
+
 } // namespace internal
 } // namespace Surface_design
 } // namespace CGAL
