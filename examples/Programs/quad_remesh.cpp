@@ -640,6 +640,12 @@ std::map<long, int> carried_cones(const Mesh& from, const Mesh& to, const std::m
   return carried;
 }
 
+// The field method's failure after its repairs: no quad mesh of the field (the message says why)
+struct No_field_quads : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
 // The field-aligned quads of `surface` (the input or one of its connected components) at h: on its
 // own triangles (at h and h +- 5%), then, unless --no-input-remeshing, on the surface remeshed
 // isotropically at h; throws the last attempt's failure.
@@ -666,6 +672,10 @@ void quads_with_repair(const Mesh& input, const std::map<long, int>& cones, doub
     try
     {
       field_aligned_quads(remeshed, carried_cones(input, remeshed, cones), h, o, traits, quads);
+    }
+    catch(const SD::Remeshing_failure& again)
+    {
+      throw No_field_quads(std::string("on the remeshed input too: ") + again.what());
     }
     catch(const std::exception& again)
     {
@@ -717,8 +727,13 @@ void quads_by_component(const std::vector<Mesh>& parts, double h, const Options&
       {
         const double finer = spacing / 1.25, added = a / (finer * finer) - a / (h * h);
         if(added > 0.05 * total_quads)
-          throw std::runtime_error("component " + std::to_string(c + 1) + " of " + std::to_string(parts.size()) +
-                                   " (" + std::to_string(num_faces(parts[c])) + " faces) gives no quads: " + e.what());
+        {
+          const std::string what = "component " + std::to_string(c + 1) + " of " + std::to_string(parts.size()) +
+                                   " (" + std::to_string(num_faces(parts[c])) + " faces) gives no quads: " + e.what();
+          if(dynamic_cast<const SD::Remeshing_failure*>(&e) || dynamic_cast<const No_field_quads*>(&e))
+            throw No_field_quads(what);
+          throw std::runtime_error(what);
+        }
         std::printf("  component %zu: no quads at h = %.4g (%s); tried at %.4g (%.2f h), which adds about %.0f quads "
                     "(at most 5%% of the mesh's)\n",
                     c + 1, spacing, e.what(), finer, finer / h, added);
@@ -757,10 +772,21 @@ int run_field(const Options& o, Traits traits)
   Mesh quads;
   // with given cones, one field over all the components (the cones are the whole mesh's)
   const std::vector<Mesh> parts = o.cones.empty() ? connected_components(input) : std::vector<Mesh>{};
-  if(parts.size() > 1)
-    quads_by_component(parts, h, o, traits, quads);
-  else
-    quads_with_repair(input, o.cones, h, o, traits, quads);
+  try
+  {
+    if(parts.size() > 1)
+      quads_by_component(parts, h, o, traits, quads);
+    else
+      quads_with_repair(input, o.cones, h, o, traits, quads);
+  }
+  catch(const std::runtime_error& e)
+  {
+    // no quads after every repair (h +- 5%, the remeshed input, finer components): what still works
+    if(!dynamic_cast<const SD::Remeshing_failure*>(&e) && !dynamic_cast<const No_field_quads*>(&e))
+      throw;
+    throw No_field_quads(std::string(e.what()) + "; --method harmonic (the default) takes every manifold mesh, "
+                         "with irregular vertices of its own");
+  }
   return report_and_write(input, quads, o, clock);
 }
 

@@ -488,14 +488,17 @@ fi
 # extraction, whose crossings took minutes on such maps
 refuse quad_remesh "$DATA/triceratops.off" --method field --target-faces 4000 --stiffening-rounds 0 --no-input-remeshing \
   --output "$O/q.off"
-if ! grep -qE "the lines are [0-9]+ times as long as the quad mesh's edges" "$WORK/stderr"; then
+if ! grep -qE "the lines are [0-9]+ times as long as the quad mesh's edges" "$WORK/stderr" ||
+   ! grep -q "; --method harmonic (the default) takes every manifold mesh" "$WORK/stderr"; then
   echo "FAILED: quad_remesh triceratops.off --target-faces 4000: $(cat "$WORK/stderr")"
   failures=$((failures + 1))
 fi
 # a component that gives no quads fails the whole, naming it (blobby_3cc: its second component's
-# boundary zigzags at the scale of the quads, see the manual)
+# boundary zigzags at the scale of the quads, see the manual), and the message names the method
+# that takes every manifold mesh
 refuse quad_remesh "$DATA/blobby_3cc.off" --method field --target-faces 1833 --output "$O/q.off"
-if ! grep -q "component 2 of 3 (680 faces) gives no quads" "$WORK/stderr"; then
+if ! grep -q "component 2 of 3 (680 faces) gives no quads" "$WORK/stderr" ||
+   ! grep -q "; --method harmonic (the default) takes every manifold mesh" "$WORK/stderr"; then
   echo "FAILED: quad_remesh blobby_3cc.off --method field: $(cat "$WORK/stderr")"
   failures=$((failures + 1))
 fi
