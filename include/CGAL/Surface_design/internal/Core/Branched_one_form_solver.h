@@ -262,14 +262,7 @@ public:
   Solution solve_with_windings(const std::vector<Value>& omega, const Solution& previous)
   {
     ensure_factored();
-    Solution s;
-    s.windings = previous.windings;
-    s.y = optimal_one_form(s.windings, omega, &s.alpha);
-    s.free_directions = number_of_directions();
-    s.potential = potential_vector(s.alpha);
-    finish_lattice(s.windings, s.alpha);
-    s.energy = energy(s.y, omega);
-    return s;
+    return with_potential(omega, previous, m_system.solve(potential_rhs(previous.windings, &omega)));
   }
 
   /// As `solve_with_windings()`, but the potential of `previous` is kept at all vertices but
@@ -292,14 +285,7 @@ public:
         if(!m_fixed[v * d + a])
           relaxed.push_back(Eigen::Index(v * d + a));
     solve_on_subset<SolverTraits>(L, b, f, relaxed, "twisted Laplacian of the relaxed vertices");
-    Solution s;
-    s.windings = previous.windings;
-    s.y = one_form_of_potential(s.windings, f, &s.alpha);
-    s.free_directions = number_of_directions();
-    s.potential = std::move(f);
-    finish_lattice(s.windings, s.alpha);
-    s.energy = energy(s.y, omega);
-    return s;
+    return with_potential(omega, previous, std::move(f));
   }
 
   /// Whether the weights changed without a factorization since (`set_weights()`).
@@ -662,6 +648,18 @@ private:
   {
     if(m_stale)
       factor();
+  }
+  // The solution with the windings of `previous` and the potential f (`Solution::potential`)
+  Solution with_potential(const std::vector<Value>& omega, const Solution& previous, Eigen::VectorXd f) const
+  {
+    Solution s;
+    s.windings = previous.windings;
+    s.y = one_form_of_potential(s.windings, f, &s.alpha);
+    s.free_directions = number_of_directions();
+    s.potential = std::move(f);
+    finish_lattice(s.windings, s.alpha);
+    s.energy = energy(s.y, omega);
+    return s;
   }
   Eigen::VectorXd potential_vector(const std::vector<Value>& alpha) const
   {
