@@ -43,7 +43,11 @@ const char* usage =
   "usage: quad_remesh INPUT --output OUT.off [options]\n"
   "  Remeshes a manifold triangle mesh into a quad mesh with the input's topology (Euler\n"
   "  characteristic, boundary loops, components), or fails (exit 1, no file).\n"
-  "  --method harmonic (default): the net of the isolines and gradient lines of a harmonic function\n"
+  "  --method auto (default): the field method's quads (below) where it gives them, component by\n"
+  "  component, and the harmonic method's at the same h on a component where it does not, after all\n"
+  "  its repairs (the report names the method of each): the field's quads have several times fewer\n"
+  "  irregular vertices, the harmonic net takes every manifold mesh.\n"
+  "  --method harmonic: the net of the isolines and gradient lines of a harmonic function\n"
   "  (Dong, Kircher & Garland 2005), its odd faces paired into quads; any manifold mesh. When the\n"
   "  net comes out with another topology, the program falls back (without spectacles, the intrinsic\n"
   "  Delaunay Laplacian, h / 2 near the saddles, h / sqrt 2, h / 2).\n"
@@ -53,15 +57,18 @@ const char* usage =
   "  the quads (valence 3 along it; 2 at a convex corner, 4 at a concave one), its direction\n"
   "  smoothed at 2h (--boundary-smoothing). Where the lines do not form such a mesh, h is tried 5%\n"
   "  smaller and 5% larger, then the input is remeshed isotropically at edge length h (its triangles'\n"
-  "  shapes can fold the map: decimated meshes) and the whole tried again, before the program fails.\n"
+  "  shapes can fold the map: decimated meshes) and the whole tried again, before the program fails\n"
+  "  (auto: the harmonic method instead).\n"
   "  Several connected components (without --singularity) are remeshed one by one, each with its own\n"
   "  field and cones; one that gives no quads at h is tried at h / 1.25, h / 1.25^2, ... while that\n"
   "  adds at most 5% to the mesh's quads (components smaller than a few quads).\n"
-  "options of both methods:\n"
-  "  --method harmonic|field\n"
+  "options of every method:\n"
+  "  --method auto|field|harmonic\n"
   "  --edge-length H       target edge length (default: sqrt(area / 3000), about 3000 faces)\n"
-  "  --target-faces N      about N faces: edge length sqrt(area / N) (not with --edge-length)\n"
-  "options of --method field:\n"
+  "  --target-faces N      about N faces (not with --edge-length): from the edge length sqrt(area / N),\n"
+  "                        the field method's spacing calibrated on its map's area, the harmonic\n"
+  "                        method's net made again at h sqrt(faces / N) until within 10% (4 nets at most)\n"
+  "options of --method field (and auto, but --singularity: field only):\n"
   "  --field auto|smoothest|principal  the cross field: the smoothest one (Knoeppel et al. 2013), the\n"
   "                        smoothest one aligned with the principal curvature directions, or (auto,\n"
   "                        default) of these two the one with fewer cones once they are apart\n"
@@ -82,8 +89,9 @@ const char* usage =
   "                        chord error, with the largest R times the smallest (R in [1, 100]; default\n"
   "                        1: uniform), as many faces as h everywhere would give\n"
   "  --stiffening-rounds R rounds of local stiffening where the map folds (default 10, R in [0, 64])\n"
-  "  --no-input-remeshing  fail where the input's own triangles do not give the quads (given cones\n"
-  "                        go, on the remeshed input, to the faces nearest theirs)\n"
+  "  --no-input-remeshing  fail (auto: the harmonic method) where the input's own triangles do not give\n"
+  "                        the quads (without it, given cones go, on the remeshed input, to the faces\n"
+  "                        nearest theirs)\n"
   "  --sharp-angle DEG     the quads follow the creases, the edges whose faces' normals differ by more\n"
   "                        than DEG degrees (0 < DEG < 180): the field follows them (its own cones,\n"
   "                        not separated), a cone next to a corner of them moves onto it, and the row\n"
@@ -119,7 +127,7 @@ const char* usage =
 
 struct Options
 {
-  std::string input, output, picture, up = "+Y", solver = "default", method = "harmonic", field = "auto";
+  std::string input, output, picture, up = "+Y", solver = "default", method = "auto", field = "auto";
   std::vector<long> minima, maxima;
   std::map<long, int> cones; // --singularity FACE:K/4
   double edge_length = 0., target_faces = 0., curvature_adaptation = 0., cone_distance = 1., sharp_angle = 0.,
@@ -137,7 +145,7 @@ Options parse(int argc, char** argv)
   };
   program::Option_parser p;
   p.input(o.input)
-    .value("--method", [&](const std::string& v) { o.method = program::parse_choice(v, "--method", {"harmonic", "field"}); })
+    .value("--method", [&](const std::string& v) { o.method = program::parse_choice(v, "--method", {"auto", "field", "harmonic"}); })
     .value("--target-faces",
            [&](const std::string& v) { o.target_faces = double(program::parse_integer(v, "--target-faces", 1, 10000000)); })
     .value("--field", [&](const std::string& v) { o.field = program::parse_choice(v, "--field", {"auto", "smoothest", "principal"}); })
@@ -185,10 +193,14 @@ Options parse(int argc, char** argv)
   if(p.given("--edge-length") && p.given("--target-faces"))
     throw program::Usage_error("give --edge-length or --target-faces, not both");
   for(const char* option :
-      {"--field", "--cone-distance", "--singularity", "--stiffening-rounds", "--no-input-remeshing", "--sharp-angle",
+      {"--field", "--cone-distance", "--stiffening-rounds", "--no-input-remeshing", "--sharp-angle",
        "--boundary-smoothing", "--edge-length-ratio"})
-    if(p.given(option) && o.method != "field")
-      throw program::Usage_error(std::string(option) + " applies to --method field");
+    if(p.given(option) && o.method == "harmonic")
+      throw program::Usage_error(std::string(option) + " applies to --method field (or auto)");
+  // auto may remesh a component with the harmonic method, whose irregular vertices are not the given cones
+  if(!o.cones.empty() && o.method != "field")
+    throw program::Usage_error("--singularity applies to --method field (with auto, a component without field quads "
+                               "would get the harmonic net's irregular vertices instead of these cones)");
   for(const char* option : {"--min", "--max", "--no-protrusions", "--curvature-adaptation", "--intrinsic-delaunay",
                             "--triangle-poles", "--no-spectacles", "--quad-dominant"})
     if(p.given(option) && o.method != "harmonic")
@@ -352,6 +364,119 @@ double edge_length(const Mesh& input, const Options& o)
     return 0.;
   return std::sqrt(area(input) / o.target_faces);
 }
+
+// The harmonic method's quads of `input` at h (0: its default, about 3000 faces), what it did
+// printed; with target_faces > 0, about so many (the spacing calibrated from h).
+template <class Traits>
+void harmonic_quads(const Mesh& input, double h, double target_faces, const Options& o, Traits traits, Mesh& quads)
+{
+  const SD::Harmonic_weights weights =
+    o.intrinsic_delaunay ? SD::Harmonic_weights::intrinsic_delaunay : SD::Harmonic_weights::cotangent;
+  SD::Harmonic_quad_remesher<Mesh, Mesh::Property_map<Mesh::Vertex_index, Point>, Traits> remesher(
+    input, P::harmonic_weights(weights, P::protrusion_maxima(o.protrusions, CGAL::parameters::sparse_linear_solver(traits))));
+  if(!o.minima.empty())
+  {
+    std::vector<std::pair<Mesh::Vertex_index, double>> c;
+    for(const auto& [list, value] : {std::make_pair(&o.minima, 0.), std::make_pair(&o.maxima, 1.)})
+      for(long v : *list)
+      {
+        if(std::size_t(v) >= num_vertices(input)) // checked before the index is narrowed
+          throw program::Usage_error((value == 0. ? "--min " : "--max ") + std::to_string(v) + ": the mesh has " +
+                                     std::to_string(num_vertices(input)) + " vertices");
+        c.emplace_back(Mesh::Vertex_index(Mesh::size_type(v)), value);
+      }
+    remesher.set_constraints(c);
+  }
+  const SD::Harmonic_critical_points cp = remesher.critical_points();
+  std::printf("harmonic function: %zu constraints, %s weights (%zu negative, %zu flips); %zu minima, %zu maxima, "
+              "%zu saddles (multiplicity %d), %zu of them on the boundary; %zu spurious extrema\n",
+              remesher.constraints().size(), o.intrinsic_delaunay ? "intrinsic Delaunay" : "cotangent",
+              remesher.number_of_negative_weights(), remesher.number_of_flips(), cp.minima.size(), cp.maxima.size(),
+              cp.saddles.size(), cp.saddle_multiplicity(), cp.on_boundary, cp.spurious_extrema);
+  if(CGAL::is_closed(input))
+    std::printf("  %zu + %zu - %d = %ld = Euler characteristic\n", cp.minima.size(), cp.maxima.size(),
+                cp.saddle_multiplicity(), long(cp.minima.size() + cp.maxima.size()) - cp.saddle_multiplicity());
+  else
+    std::printf("  sum of the indices 1 - chi(lower link) = %ld = Euler characteristic\n", cp.index_sum);
+
+  const auto options = P::quad_poles(
+    o.quad_poles,
+    P::spectacles(o.spectacles,
+                  P::all_quads(o.all_quads, P::curvature_adaptation(o.curvature_adaptation,
+                                                                    P::feature_snapping(o.feature_snapping)))));
+  // at h, and with a face count asked for, again at the spacing scaled by sqrt(faces / asked) until
+  // the net lands within 10% of it (three more nets at most, the closest kept): the net's splits
+  // into quads make 1.5 to 4 times the faces of sqrt(area / N) on the shared meshes
+  auto print = [&o](const SD::Harmonic_quad_remeshing_result& r) {
+    if(o.spectacles)
+    {
+      std::printf("spectacles: %zu of %zu saddles (%zu lines from bridges and junctions)\n", r.spectacles, r.saddles,
+                  r.spectacles_lines);
+      for(const auto& [v, why] : r.skipped_saddles)
+        std::printf("  saddle at vertex %zu skipped: %s\n", v, why.c_str());
+    }
+    for(const auto& f : r.fallbacks)
+      std::printf("fall-back: %s\n", f.c_str());
+    if(r.repaired_cells > 0)
+      std::printf("%zu cells of the net whose boundary ran through a node twice were cut by a chord\n", r.repaired_cells);
+    std::printf("net (h = %.4g): %zu levels, %zu isolines (%zu between saddles), %zu gradient lines (%zu started, %zu "
+                "stopped, %zu met another), %zu vertices on boundary detail\n",
+                r.spacing, r.levels, r.isolines, r.saddle_levels, r.gradient_lines, r.started_lines,
+                r.stopped_lines, r.merged_lines, r.boundary_detail_vertices);
+    if(o.all_quads)
+      std::printf("quads only: %zu faces with an odd number of sides paired by %zu paths, %zu edges split\n",
+                  r.odd_faces, r.odd_face_paths, r.split_edges);
+    if(o.feature_snapping)
+      print_snapping(r);
+    std::printf("times: harmonic %.3f s, spectacles (re-solve) %.3f s, curves %.3f s, meshing %.3f s (quads only %.3f s, "
+                "snapping %.3f s)\n",
+                r.harmonic_seconds, r.spectacles_seconds, r.curves_seconds, r.meshing_seconds, r.all_quads_seconds,
+                r.snapping_seconds);
+  };
+  if(!(h > 0.))
+  {
+    print(remesher.remesh(quads, options));
+    return;
+  }
+  double spacing = h, best = std::numeric_limits<double>::infinity();
+  for(int net = 0;; ++net)
+  {
+    Mesh out;
+    try
+    {
+      print(remesher.remesh(out, P::target_edge_length(spacing, options)));
+    }
+    catch(const SD::Remeshing_failure& e)
+    {
+      if(net == 0)
+        throw;
+      std::printf("  no net at h = %.4g (%s): the closest one kept\n", spacing, e.what());
+      break;
+    }
+    const double faces = double(num_faces(out)), off = std::abs(faces - target_faces);
+    if(off < best)
+    {
+      best = off;
+      quads = std::move(out);
+    }
+    if(!(target_faces > 0.) || off <= 0.1 * target_faces || net == 3 || faces == 0.)
+      break;
+    spacing *= std::sqrt(faces / target_faces);
+    std::printf("  %.0f faces for about %.0f asked (--target-faces): the net again at h = %.4g\n", faces, target_faces,
+                spacing);
+  }
+}
+
+template <class Traits>
+int run_harmonic(const Options& o, Traits traits)
+{
+  program::Stopwatch clock;
+  const Mesh input = read_input(o);
+  Mesh quads;
+  harmonic_quads(input, edge_length(input, o), o.target_faces, o, traits, quads);
+  return report_and_write(input, quads, o, clock);
+}
+
 
 // A face where the field turns by two quarter turns or more (two cones in one triangle: seen on
 // remeshed inputs, the triceratops and bones) is no vertex of a quad mesh, and no vertex-based
@@ -700,10 +825,14 @@ std::vector<Mesh> connected_components(Mesh input)
 // one component's failure at h does not fail the others (bones: 26 components, 21 give quads at
 // the h of 3000 quads, the 5 smallest only at a finer one). A component that gives no quads at h
 // (with its h +- 5% and its remeshed triangles) is tried at h / 1.25, h / 1.25^2, ... while that adds
-// at most 5% to the whole mesh's quads at h, so the face count stays near the target.
+// at most 5% to the whole mesh's quads at h, so the face count stays near the target. With --method
+// auto, a component that gives no field quads then gets the harmonic method's at h. Returns the
+// components remeshed so (numbered from 1).
 template <class Traits>
-void quads_by_component(const std::vector<Mesh>& parts, double h, const Options& o, Traits traits, Mesh& quads)
+std::vector<std::size_t> quads_by_component(const std::vector<Mesh>& parts, double h, const Options& o, Traits traits,
+                                            Mesh& quads)
 {
+  std::vector<std::size_t> harmonic;
   double total_area = 0.;
   for(const Mesh& part : parts)
     total_area += area(part);
@@ -726,6 +855,15 @@ void quads_by_component(const std::vector<Mesh>& parts, double h, const Options&
       catch(const std::exception& e)
       {
         const double finer = spacing / 1.25, added = a / (finer * finer) - a / (h * h);
+        if(added > 0.05 * total_quads && o.method == "auto" && dynamic_cast<const std::runtime_error*>(&e))
+        {
+          std::printf("component %zu: no field quads (%s); the harmonic method's quads at h = %.4g instead\n", c + 1,
+                      e.what(), h);
+          part_quads = Mesh();
+          harmonic_quads(parts[c], h, o.target_faces > 0. ? o.target_faces * a / total_area : 0., o, traits, part_quads);
+          harmonic.push_back(c + 1);
+          break;
+        }
         if(added > 0.05 * total_quads)
         {
           const std::string what = "component " + std::to_string(c + 1) + " of " + std::to_string(parts.size()) +
@@ -742,6 +880,7 @@ void quads_by_component(const std::vector<Mesh>& parts, double h, const Options&
     }
     CGAL::copy_face_graph(part_quads, quads);
   }
+  return harmonic;
 }
 
 template <class Traits>
@@ -772,92 +911,47 @@ int run_field(const Options& o, Traits traits)
   Mesh quads;
   // with given cones, one field over all the components (the cones are the whole mesh's)
   const std::vector<Mesh> parts = o.cones.empty() ? connected_components(input) : std::vector<Mesh>{};
+  std::vector<std::size_t> harmonic; // the components (from 1) remeshed by the harmonic method (auto)
   try
   {
     if(parts.size() > 1)
-      quads_by_component(parts, h, o, traits, quads);
+      harmonic = quads_by_component(parts, h, o, traits, quads);
     else
       quads_with_repair(input, o.cones, h, o, traits, quads);
   }
   catch(const std::runtime_error& e)
   {
-    // no quads after every repair (h +- 5%, the remeshed input, finer components): what still works
-    if(!dynamic_cast<const SD::Remeshing_failure*>(&e) && !dynamic_cast<const No_field_quads*>(&e))
-      throw;
-    throw No_field_quads(std::string(e.what()) + "; --method harmonic (the default) takes every manifold mesh, "
-                         "with irregular vertices of its own");
+    if(o.method == "auto" && parts.size() <= 1) // (several components fall back one by one)
+    {
+      std::printf("no field quads (%s); the harmonic method's quads at h = %.4g instead\n", e.what(), h);
+      quads = Mesh();
+      harmonic_quads(input, h, o.target_faces, o, traits, quads);
+      harmonic.push_back(1);
+    }
+    else
+    {
+      // no quads after every repair (h +- 5%, the remeshed input, finer components): what still works
+      if(!dynamic_cast<const SD::Remeshing_failure*>(&e) && !dynamic_cast<const No_field_quads*>(&e))
+        throw;
+      throw No_field_quads(std::string(e.what()) + "; --method harmonic (or auto, the default) takes every manifold "
+                           "mesh, with irregular vertices of its own");
+    }
   }
-  return report_and_write(input, quads, o, clock);
-}
-
-template <class Traits>
-int run(const Options& o, Traits traits)
-{
-  program::Stopwatch clock;
-  const Mesh input = read_input(o);
-  const SD::Harmonic_weights weights =
-    o.intrinsic_delaunay ? SD::Harmonic_weights::intrinsic_delaunay : SD::Harmonic_weights::cotangent;
-  SD::Harmonic_quad_remesher<Mesh, Mesh::Property_map<Mesh::Vertex_index, Point>, Traits> remesher(
-    input, P::harmonic_weights(weights, P::protrusion_maxima(o.protrusions, CGAL::parameters::sparse_linear_solver(traits))));
-  if(!o.minima.empty())
+  if(o.method == "auto")
   {
-    std::vector<std::pair<Mesh::Vertex_index, double>> c;
-    for(const auto& [list, value] : {std::make_pair(&o.minima, 0.), std::make_pair(&o.maxima, 1.)})
-      for(long v : *list)
-      {
-        if(std::size_t(v) >= num_vertices(input)) // checked before the index is narrowed
-          throw program::Usage_error((value == 0. ? "--min " : "--max ") + std::to_string(v) + ": the mesh has " +
-                                     std::to_string(num_vertices(input)) + " vertices");
-        c.emplace_back(Mesh::Vertex_index(Mesh::size_type(v)), value);
-      }
-    remesher.set_constraints(c);
+    const std::size_t components = (std::max)(parts.size(), std::size_t(1));
+    std::string which;
+    for(std::size_t c : harmonic)
+      which += (which.empty() ? " " : ", ") + std::to_string(c);
+    if(harmonic.empty())
+      std::printf("method: field (auto: the field gave quads%s)\n", components > 1 ? " on every component" : "");
+    else if(components == 1)
+      std::printf("method: harmonic (auto: the field gave no quads)\n");
+    else
+      std::printf("method: field on %zu of %zu components, harmonic on component%s%s (auto: the field gave no quads "
+                  "there)\n",
+                  components - harmonic.size(), components, harmonic.size() > 1 ? "s" : "", which.c_str());
   }
-  const SD::Harmonic_critical_points cp = remesher.critical_points();
-  std::printf("harmonic function: %zu constraints, %s weights (%zu negative, %zu flips); %zu minima, %zu maxima, "
-              "%zu saddles (multiplicity %d), %zu of them on the boundary; %zu spurious extrema\n",
-              remesher.constraints().size(), o.intrinsic_delaunay ? "intrinsic Delaunay" : "cotangent",
-              remesher.number_of_negative_weights(), remesher.number_of_flips(), cp.minima.size(), cp.maxima.size(),
-              cp.saddles.size(), cp.saddle_multiplicity(), cp.on_boundary, cp.spurious_extrema);
-  if(CGAL::is_closed(input))
-    std::printf("  %zu + %zu - %d = %ld = Euler characteristic\n", cp.minima.size(), cp.maxima.size(),
-                cp.saddle_multiplicity(), long(cp.minima.size() + cp.maxima.size()) - cp.saddle_multiplicity());
-  else
-    std::printf("  sum of the indices 1 - chi(lower link) = %ld = Euler characteristic\n", cp.index_sum);
-
-  Mesh quads;
-  const auto options = P::quad_poles(
-    o.quad_poles,
-    P::spectacles(o.spectacles,
-                  P::all_quads(o.all_quads, P::curvature_adaptation(o.curvature_adaptation,
-                                                                    P::feature_snapping(o.feature_snapping)))));
-  const double h = edge_length(input, o);
-  const SD::Harmonic_quad_remeshing_result r = h > 0. ? remesher.remesh(quads, P::target_edge_length(h, options))
-                                                      : remesher.remesh(quads, options);
-  if(o.spectacles)
-  {
-    std::printf("spectacles: %zu of %zu saddles (%zu lines from bridges and junctions)\n", r.spectacles, r.saddles,
-                r.spectacles_lines);
-    for(const auto& [v, why] : r.skipped_saddles)
-      std::printf("  saddle at vertex %zu skipped: %s\n", v, why.c_str());
-  }
-  for(const auto& f : r.fallbacks)
-    std::printf("fall-back: %s\n", f.c_str());
-  if(r.repaired_cells > 0)
-    std::printf("%zu cells of the net whose boundary ran through a node twice were cut by a chord\n", r.repaired_cells);
-  std::printf("net (h = %.4g): %zu levels, %zu isolines (%zu between saddles), %zu gradient lines (%zu started, %zu "
-              "stopped, %zu met another), %zu vertices on boundary detail\n",
-              r.spacing, r.levels, r.isolines, r.saddle_levels, r.gradient_lines, r.started_lines,
-              r.stopped_lines, r.merged_lines, r.boundary_detail_vertices);
-  if(o.all_quads)
-    std::printf("quads only: %zu faces with an odd number of sides paired by %zu paths, %zu edges split\n",
-                r.odd_faces, r.odd_face_paths, r.split_edges);
-  if(o.feature_snapping)
-    print_snapping(r);
-  std::printf("times: harmonic %.3f s, spectacles (re-solve) %.3f s, curves %.3f s, meshing %.3f s (quads only %.3f s, "
-              "snapping %.3f s)\n",
-              r.harmonic_seconds, r.spectacles_seconds, r.curves_seconds, r.meshing_seconds, r.all_quads_seconds,
-              r.snapping_seconds);
-
   return report_and_write(input, quads, o, clock);
 }
 
@@ -868,6 +962,6 @@ int main(int argc, char** argv)
   return program::run_main("quad_remesh", usage, argc, [&] {
     const Options o = parse(argc, argv);
     return program::with_solver(o.solver,
-                                [&](auto traits) { return o.method == "field" ? run_field(o, traits) : run(o, traits); });
+                                [&](auto traits) { return o.method == "harmonic" ? run_harmonic(o, traits) : run_field(o, traits); });
   });
 }

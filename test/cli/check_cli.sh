@@ -307,23 +307,25 @@ for args in "--min 0" "--max 5" "--min 0 --max 0" "--min -1 --max 5" "--min 0 --
             "--no-feature-snapping --no-feature-snapping" "--no-feature-snapping 1" \
             "--curvature-adaptation -1" "--curvature-adaptation nan" "--curvature-adaptation" "--curvature-adaptation 1e9" "$E"; do
   # shellcheck disable=SC2086
-  refuse quad_remesh "$E" $args --output "$O/q.off"
+  refuse quad_remesh "$E" --method harmonic $args --output "$O/q.off"
 done
-# --method field and the options of either method
-for args in "--method" "--method magic" "--target-faces 0" "--target-faces -5" "--target-faces x" \
-            "--target-faces 100 --edge-length 0.1" "--field smoothest" "--cone-distance 1" "--singularity 3:1/4" \
-            "--stiffening-rounds 3" "--method field --field magic" "--method field --field auto --field smoothest" "--method field --cone-distance -1" \
+# --method field (or auto) and the options of either method
+for args in "--method" "--method magic" "--method Auto" "--target-faces 0" "--target-faces -5" "--target-faces x" \
+            "--target-faces 100 --edge-length 0.1" "--method harmonic --field smoothest" "--method harmonic --cone-distance 1" \
+            "--singularity 3:1/4" "--method auto --singularity 3:1/4" "--method harmonic --singularity 3:1/4" \
+            "--min 0 --max 5" "--method auto --min 0 --max 5" "--no-spectacles" "--method auto --quad-dominant" \
+            "--method harmonic --stiffening-rounds 3" "--method auto --stiffening-rounds 65" "--method field --field magic" "--method field --field auto --field smoothest" "--method field --cone-distance -1" \
             "--method field --cone-distance nan" "--method field --singularity 3:1" "--method field --singularity 3:2/4" \
             "--method field --singularity -1:1/4" "--method field --singularity 3:1/4 --singularity 3:-1/4" \
             "--method field --singularity 3:1/4 --field smoothest" "--method field --stiffening-rounds 65" \
             "--method field --min 0 --max 5" "--method field --no-spectacles" "--method field --singularity 999999:1/4" \
-            "--method field --singularity 0:1/4" "--no-input-remeshing" "--method field --no-input-remeshing 1" \
-            "--sharp-angle 30" "--method field --sharp-angle 0" "--method field --sharp-angle 180" \
+            "--method field --singularity 0:1/4" "--method harmonic --no-input-remeshing" "--method field --no-input-remeshing 1" \
+            "--method harmonic --sharp-angle 30" "--sharp-angle 0" "--method field --sharp-angle 0" "--method field --sharp-angle 180" \
             "--method field --sharp-angle nan" "--method field --sharp-angle -5" "--method field --sharp-angle x" \
             "--method field --sharp-angle 30 --singularity 3:1/4" "--method field --sharp-angle 30 --cone-distance 1" \
-            "--boundary-smoothing 1" "--method field --boundary-smoothing -1" "--method field --boundary-smoothing 11" \
+            "--method harmonic --boundary-smoothing 1" "--method field --boundary-smoothing -1" "--method field --boundary-smoothing 11" \
             "--method field --boundary-smoothing nan" "--method field --boundary-smoothing x" \
-            "--edge-length-ratio 2" "--method field --edge-length-ratio 0.5" "--method field --edge-length-ratio 101" \
+            "--method harmonic --edge-length-ratio 2" "--method field --edge-length-ratio 0.5" "--method field --edge-length-ratio 101" \
             "--method field --edge-length-ratio nan" "--method field --edge-length-ratio x" "--method field --edge-length-ratio"; do
   # shellcheck disable=SC2086
   refuse quad_remesh "$E" $args --output "$O/q.off"
@@ -489,7 +491,7 @@ fi
 refuse quad_remesh "$DATA/triceratops.off" --method field --target-faces 4000 --stiffening-rounds 0 --no-input-remeshing \
   --output "$O/q.off"
 if ! grep -qE "the lines are [0-9]+ times as long as the quad mesh's edges" "$WORK/stderr" ||
-   ! grep -q "; --method harmonic (the default) takes every manifold mesh" "$WORK/stderr"; then
+   ! grep -q "; --method harmonic (or auto, the default) takes every manifold mesh" "$WORK/stderr"; then
   echo "FAILED: quad_remesh triceratops.off --target-faces 4000: $(cat "$WORK/stderr")"
   failures=$((failures + 1))
 fi
@@ -498,7 +500,7 @@ fi
 # that takes every manifold mesh
 refuse quad_remesh "$DATA/blobby_3cc.off" --method field --target-faces 1833 --output "$O/q.off"
 if ! grep -q "component 2 of 3 (680 faces) gives no quads" "$WORK/stderr" ||
-   ! grep -q "; --method harmonic (the default) takes every manifold mesh" "$WORK/stderr"; then
+   ! grep -q "; --method harmonic (or auto, the default) takes every manifold mesh" "$WORK/stderr"; then
   echo "FAILED: quad_remesh blobby_3cc.off --method field: $(cat "$WORK/stderr")"
   failures=$((failures + 1))
 fi
@@ -512,16 +514,51 @@ refuse quad_remesh "$WORK/quad.off" --output "$O/q.off"
 refuse quad_remesh "$WORK/nan.off" --output "$O/q.off"
 refuse quad_remesh "$DATA/degtri_four.off" --output "$O/q.off"
 refuse quad_remesh "$WORK/input.off" --output "$WORK/input.off"
+# --method auto (the default): the field's quads where it gives them (the eight: its cones, 8
+# irregular vertices), the harmonic method's on a component where it does not, after all its repairs
 accept quad_remesh "$E" --output "$O/ok.off"
-accept quad_remesh "$E" --min 0 --max 300 --edge-length 0.1 --intrinsic-delaunay --triangle-poles --output "$O/ok.obj"
+if ! grep -q "^method: field (auto: the field gave quads)" "$WORK/stdout" ||
+   ! grep -q "^  8 irregular vertices" "$WORK/stdout"; then
+  echo "FAILED: quad_remesh eight.off (auto): $(grep -E "^method|irregular" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
+# blobby_3cc, which --method field refuses (above): the field's quads on its first component, the
+# harmonic method's on the other two; every component, boundary loop and the Euler characteristic
+# kept (the program's own check before it writes)
+accept quad_remesh "$DATA/blobby_3cc.off" --target-faces 1833 --output "$O/blobby.off"
+if ! grep -q "^method: field on 1 of 3 components, harmonic on components 2, 3 (auto" "$WORK/stdout" ||
+   ! grep -q "^component 2: no field quads (on the remeshed input too: " "$WORK/stdout" ||
+   ! grep -q "Euler characteristic 2, 4 boundary loops, 3 components (as the input's)" "$WORK/stdout"; then
+  echo "FAILED: quad_remesh blobby_3cc.off (auto): $(grep -E "^method|^component|Euler" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
+# one component without field quads (the triceratops' map refused above): the harmonic method's
+accept quad_remesh "$DATA/triceratops.off" --target-faces 4000 --stiffening-rounds 0 --no-input-remeshing \
+  --output "$O/triceratops.off"
+if ! grep -q "^method: harmonic (auto: the field gave no quads)" "$WORK/stdout" ||
+   ! grep -q "^no field quads (CGAL::Surface_design: remeshing failure: " "$WORK/stdout" ||
+   ! grep -q "100.0% quads" "$WORK/stdout"; then
+  echo "FAILED: quad_remesh triceratops.off (auto): $(grep -E "^method|field quads|quads" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
+# --target-faces N with the harmonic method: about N faces (its net's splits into quads make 1.5 to 4
+# times the faces of sqrt(area / N): the spacing is calibrated, within 10% or the closest of 4 nets)
+accept quad_remesh "$E" --method harmonic --target-faces 800 --output "$O/harmonic_800.off"
+faces=$(awk '/^output:/ { print $4 }' "$WORK/stdout")
+if ! grep -q "faces for about 800 asked (--target-faces): the net again at h = " "$WORK/stdout" ||
+   [ -z "$faces" ] || [ "$faces" -lt 600 ] || [ "$faces" -gt 1000 ]; then
+  echo "FAILED: quad_remesh eight.off --method harmonic --target-faces 800: $faces faces: $(grep -E "asked|output" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
+accept quad_remesh "$E" --method harmonic --min 0 --max 300 --edge-length 0.1 --intrinsic-delaunay --triangle-poles --output "$O/ok.obj"
 accept quad_remesh "$DATA/hemisphere.off" --output "$O/ok.ply"
-accept quad_remesh "$DATA/torus.off" --no-spectacles --output "$O/ok_no_spectacles.off"
-accept quad_remesh "$DATA/torus.off" --quad-dominant --output "$O/ok_quad_dominant.off"
-accept quad_remesh "$DATA/torus.off" --curvature-adaptation 2 --output "$O/ok_curvature.off"
-accept quad_remesh "$DATA/torus.off" --no-feature-snapping --output "$O/ok_no_snapping.off"
+accept quad_remesh "$DATA/torus.off" --method harmonic --no-spectacles --output "$O/ok_no_spectacles.off"
+accept quad_remesh "$DATA/torus.off" --method harmonic --quad-dominant --output "$O/ok_quad_dominant.off"
+accept quad_remesh "$DATA/torus.off" --method harmonic --curvature-adaptation 2 --output "$O/ok_curvature.off"
+accept quad_remesh "$DATA/torus.off" --method harmonic --no-feature-snapping --output "$O/ok_no_snapping.off"
 # item 7 of the remeshing issue on an open mesh with a serrated boundary loop and a narrow pit:
-# with no options, all quads and a Hausdorff distance of at most 1.5% of the diagonal
-accept quad_remesh "$DATA/mech-holes-shark.off" --output "$O/shark.off"
+# with the harmonic method, all quads and a Hausdorff distance of at most 1.5% of the diagonal
+accept quad_remesh "$DATA/mech-holes-shark.off" --method harmonic --output "$O/shark.off"
 if ! grep -q "100.0% quads" "$WORK/stdout" ||
    ! awk '/Hausdorff distance/ { gsub("%", "", $3); exit !($3 <= 1.5) }' "$WORK/stdout"; then
   echo "FAILED: quad_remesh mech-holes-shark.off: $(grep -E "quads|Hausdorff" "$WORK/stdout")"
@@ -530,13 +567,13 @@ fi
 # the topology is kept or the program fails: on the torus (tube circumference about 1.3) at
 # spacing 3 the net was a sphere and at 5 empty, both written with exit 0 before; now spacing 3
 # falls back to h / 2, and at 5 (2.5 at the finest fall-back) it fails with the attempts listed
-accept quad_remesh "$DATA/torus.off" --edge-length 3 --output "$O/coarse_torus.off"
+accept quad_remesh "$DATA/torus.off" --method harmonic --edge-length 3 --output "$O/coarse_torus.off"
 if ! grep -q "fall-back: used: spacing h / 2" "$WORK/stdout" ||
    ! grep -q "Euler characteristic 0, 0 boundary loops, 1 components (as the input's)" "$WORK/stdout"; then
   echo "FAILED: quad_remesh torus.off --edge-length 3: $(grep -E "fall-back|Euler" "$WORK/stdout")"
   failures=$((failures + 1))
 fi
-refuse quad_remesh "$DATA/torus.off" --edge-length 5 --output "$O/q.off"
+refuse quad_remesh "$DATA/torus.off" --method harmonic --edge-length 5 --output "$O/q.off"
 if ! grep -q "spacing h / 2: the net is empty" "$WORK/stderr"; then
   echo "FAILED: quad_remesh torus.off --edge-length 5: $(cat "$WORK/stderr")"
   failures=$((failures + 1))
