@@ -366,12 +366,27 @@ TEMPLATE_TEST_CASE("Control: a 3 x 3 quad grid has four irregular vertices, its 
   CHECK(q.edge_length_mean == Approx(1.).epsilon(tight));
   CHECK(q.edge_length_min == Approx(1.).epsilon(tight));
   CHECK(q.edge_length_max == Approx(1.).epsilon(tight));
+  CHECK(q.degenerate_edges == 0);
   CHECK(q.valid);
   CHECK(q.euler_characteristic == 1);
   CHECK(q.boundary_loops == 1);
   CHECK(q.connected_components == 1);
   CHECK(q.same_topology);
   CHECK(q.hausdorff_distance == Approx(0.).margin(1e-3 * std::sqrt(18.)));
+
+  // the same grid with its interior vertex (1, 1) moved onto its neighbour (2, 1), as a remesher
+  // that made two nodes at one point would leave it: one edge of length 0, the mesh still valid
+  Soup_points moved = points;
+  moved[5] = moved[6];
+  const SD::Quad_mesh_quality d = SD::quad_mesh_quality(polygon_mesh<Mesh>(moved, quads), reference);
+  CHECK(d.valid);
+  CHECK(d.degenerate_edges == 1);
+  CHECK(d.edge_length_min == 0.);
+  // nearly coincident (10^-12 apart) is degenerate too; 10^-6 apart is not
+  moved[5] = {2. - 1e-12, 1., 0.};
+  CHECK(SD::quad_mesh_quality(polygon_mesh<Mesh>(moved, quads), reference).degenerate_edges == 1);
+  moved[5] = {2. - 1e-6, 1., 0.};
+  CHECK(SD::quad_mesh_quality(polygon_mesh<Mesh>(moved, quads), reference).degenerate_edges == 0);
 }
 
 TEMPLATE_TEST_CASE("Control: a quad mesh with one hanging node has one T-junction", "[oracle][quad_quality]",

@@ -307,9 +307,11 @@ int report_and_write(const Mesh& input, const Mesh& quads, const Options& o, pro
               100. * q.relative_hausdorff_distance, q.valid ? "valid" : "INVALID", q.euler_characteristic,
               q.boundary_loops, q.connected_components, q.same_topology ? "as" : "NOT as");
 
-  if(!q.valid || !q.same_topology) // (the remesher checks this: a second look before writing)
-    throw std::runtime_error("the quad mesh is not a valid mesh with the input's topology (a bug: please report it "
-                             "with the input mesh); nothing written");
+  if(q.degenerate_edges > 0)
+    std::printf("  %zu edges of length 0 (two vertices at one point)\n", q.degenerate_edges);
+  if(!q.valid || !q.same_topology || q.degenerate_edges > 0) // (the remesher checks this: a second look)
+    throw std::runtime_error("the quad mesh is not a valid mesh with the input's topology and no degenerate face (a "
+                             "bug: please report it with the input mesh); nothing written");
   program::Output_files outputs;
   if(!CGAL::IO::write_polygon_mesh(outputs.stage(o.output), quads, CGAL::parameters::stream_precision(17)))
     throw std::runtime_error("cannot write " + o.output);

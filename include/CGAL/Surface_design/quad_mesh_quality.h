@@ -48,6 +48,9 @@ struct Quad_mesh_quality
   double angle_deviation_mean = 0., angle_deviation_rms = 0., angle_deviation_max = 0.; ///< |quad corner - 90|
   double edge_length_mean = 0., edge_length_min = 0., edge_length_max = 0.;
   double edge_length_variation = 0.; ///< standard deviation / mean
+  /// edges whose two vertices (nearly) coincide, no longer than 10^-9 times the mean edge length:
+  /// the faces on their sides are degenerate (a remesher's output should have none)
+  std::size_t degenerate_edges = 0;
   /// two-sided Hausdorff distance to the reference (the faces fanned into triangles), an upper
   /// bound within `hausdorff_error_bound` of the exact value (certified: no more than that above a
   /// distance found between the surfaces); and relative to the diagonal of the reference's
@@ -210,6 +213,9 @@ Quad_mesh_quality quad_mesh_quality(const PolygonMesh& pm, const TriangleMesh& r
     q.edge_length_mean = sum / double(q.edges);
     q.edge_length_variation =
       std::sqrt((std::max)(0., sq / double(q.edges) - q.edge_length_mean * q.edge_length_mean)) / q.edge_length_mean;
+    for(auto e : edges(pm))
+      q.degenerate_edges += (internal::position(vpm, source(e, pm)) - internal::position(vpm, target(e, pm))).norm() <=
+                            1e-9 * q.edge_length_mean;
   }
   else
     q.edge_length_min = 0.;

@@ -154,6 +154,7 @@ inline Polygon_soup Quad_net_builder::assemble()
       kept.push_back(edges[k]);
   edges.swap(kept);
   // isoline edges
+  std::map<std::size_t, bool> path_ends; // crossings made boundary nodes (below): at the path's start?
   for(std::size_t c = 0; c < m_iso.size(); ++c)
   {
     auto& cr = m_crossings[c];
@@ -162,12 +163,39 @@ inline Polygon_soup Quad_net_builder::assemble()
     const Isoline& iso = m_iso[c];
     if(iso.role == Curve_role::spectacles_bridge) // a bridge: its edges are keyed edges
       continue;
+    // A path's ends get boundary nodes. A line that came up along the boundary lands on the path
+    // at its end (found on blobby_3cc and the elephant with holes): that crossing becomes the
+    // boundary node, rather than a second node at the same point joined to it by an isoline edge
+    // of length 0 (a degenerate face on either side of it).
+    std::size_t first = 0, last = cr.size(); // the crossings [first, last) between the ends
+    auto boundary_end = [&](bool front) {
+      const std::size_t b = front ? boundary_node(iso.point_edge.front(), iso.point.front())
+                                  : boundary_node(iso.point_edge.back(), iso.point.back());
+      if(first == last)
+        return b;
+      const Crossing& x = front ? cr[first] : cr[last - 1];
+      if(x.fixed || !((front ? x.s : iso.length() - x.s) < 1e-3 * m_opt.edge_length))
+        return b;
+      Node& n = m_nodes[x.node];
+      n.point = m_nodes[b].point;
+      n.kind = Net_point_kind::boundary;
+      n.loop = m_nodes[b].loop;
+      n.loop_position = m_nodes[b].loop_position;
+      m_nodes.pop_back(); // b
+      if(front)
+        ++first;
+      else
+        --last;
+      path_ends[x.node] = front;
+      return x.node;
+    };
     if(!iso.closed)
-      chain.push_back(boundary_node(iso.point_edge.front(), iso.point.front()));
-    for(const Crossing& x : cr)
-      chain.push_back(x.node);
+      chain.push_back(boundary_end(true));
+    const std::size_t back = iso.closed ? npos : boundary_end(false);
+    for(std::size_t k = first; k < last; ++k)
+      chain.push_back(cr[k].node);
     if(!iso.closed)
-      chain.push_back(boundary_node(iso.point_edge.back(), iso.point.back()));
+      chain.push_back(back);
     for(std::size_t k = 0; k + 1 < chain.size(); ++k)
       edges.push_back({chain[k], chain[k + 1], Net_edge_kind::isoline, nan, nan});
     if(iso.closed && chain.size() >= 2)
@@ -223,6 +251,22 @@ inline Polygon_soup Quad_net_builder::assemble()
       edges.push_back({from, q[(k + 1) % q.size()].second, Net_edge_kind::boundary, nan, nan});
     }
   }
+  // At such an end, the crossing's order (up, along the isoline, down: see faces_of) between the
+  // loop's next direction (key 0) and its previous one (key 10), not the angles of the chords
+  // (a line along the boundary leaves no room for them): lower values lie on the left of an
+  // isoline, so that from the loop's next direction come the lines up, the isoline, the lines
+  // down at a path's start, and the other way round at its end.
+  for(Edge& e : edges)
+    for(const bool at_a : {true, false})
+    {
+      const auto it = path_ends.find(at_a ? e.a : e.b);
+      if(it == path_ends.end() || e.kind == Net_edge_kind::boundary)
+        continue;
+      double key = 2.; // the isoline
+      if(e.kind != Net_edge_kind::isoline) // a line (a below b)
+        key = at_a == it->second ? 1. : 3.;
+      (at_a ? e.key_a : e.key_b) = key;
+    }
   return faces_of(edges);
 }
 
