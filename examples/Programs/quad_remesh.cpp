@@ -64,11 +64,12 @@ const char* usage =
   "  adds at most 5% to the mesh's quads (components smaller than a few quads).\n"
   "options of every method:\n"
   "  --method auto|field|harmonic\n"
-  "  --edge-length H       target edge length (default: sqrt(area / 3000), about 3000 faces)\n"
+  "  --edge-length H       target edge length (default: sqrt(area / 3000): about 3000 faces with the\n"
+  "                        field method and auto, 1.5 to 4 times as many with --method harmonic)\n"
   "  --target-faces N      about N faces (not with --edge-length): from the edge length sqrt(area / N),\n"
   "                        the field method's spacing calibrated on its map's area, the harmonic\n"
   "                        method's net made again at h sqrt(faces / N) until within 10% (4 nets at most)\n"
-  "options of --method field (and auto, but --singularity: field only):\n"
+  "options of --method field (and auto, where it uses the field method; --singularity: field only):\n"
   "  --field auto|smoothest|principal  the cross field: the smoothest one (Knoeppel et al. 2013), the\n"
   "                        smoothest one aligned with the principal curvature directions, or (auto,\n"
   "                        default) of these two the one with fewer cones once they are apart\n"
@@ -309,7 +310,8 @@ int report_and_write(const Mesh& input, const Mesh& quads, const Options& o, pro
 
   if(q.degenerate_edges > 0)
     std::printf("  %zu edges of length 0 (two vertices at one point)\n", q.degenerate_edges);
-  if(!q.valid || !q.same_topology || q.degenerate_edges > 0) // (the remesher checks this: a second look)
+  // (the remeshers check the validity and the topology: a second look; edges of length 0 only here)
+  if(!q.valid || !q.same_topology || q.degenerate_edges > 0)
     throw std::runtime_error("the quad mesh is not a valid mesh with the input's topology and no degenerate face (a "
                              "bug: please report it with the input mesh); nothing written");
   program::Output_files outputs;
@@ -367,7 +369,7 @@ double edge_length(const Mesh& input, const Options& o)
   return std::sqrt(area(input) / o.target_faces);
 }
 
-// The harmonic method's quads of `input` at h (0: its default, about 3000 faces), what it did
+// The harmonic method's quads of `input` at h (0: its default, sqrt(area / 3000)), what it did
 // printed; with target_faces > 0, about so many (the spacing calibrated from h).
 template <class Traits>
 void harmonic_quads(const Mesh& input, double h, double target_faces, const Options& o, Traits traits, Mesh& quads)
@@ -448,9 +450,9 @@ void harmonic_quads(const Mesh& input, double h, double target_faces, const Opti
     {
       print(remesher.remesh(out, P::target_edge_length(spacing, options)));
     }
-    catch(const SD::Remeshing_failure& e)
+    catch(const std::exception& e) // (a later net: Remeshing_failure, a solver's failure, too many faces)
     {
-      if(net == 0)
+      if(net == 0 || !(dynamic_cast<const std::runtime_error*>(&e) || dynamic_cast<const SD::Invalid_parameter*>(&e)))
         throw;
       std::printf("  no net at h = %.4g (%s): the closest one kept\n", spacing, e.what());
       break;
@@ -464,8 +466,7 @@ void harmonic_quads(const Mesh& input, double h, double target_faces, const Opti
     if(!(target_faces > 0.) || off <= 0.1 * target_faces || net == 3 || faces == 0.)
       break;
     spacing *= std::sqrt(faces / target_faces);
-    std::printf("  %.0f faces for about %.0f asked (--target-faces): the net again at h = %.4g\n", faces, target_faces,
-                spacing);
+    std::printf("  %.0f faces for about %.0f asked: the net again at h = %.4g\n", faces, target_faces, spacing);
   }
 }
 
@@ -804,9 +805,18 @@ void quads_with_repair(const Mesh& input, const std::map<long, int>& cones, doub
     {
       throw No_field_quads(std::string("on the remeshed input too: ") + again.what());
     }
-    catch(const std::exception& again)
+    // (the same kinds, so that auto falls back on failures only, not on bad input or internal errors)
+    catch(const std::runtime_error& again)
     {
       throw std::runtime_error(std::string("on the remeshed input too: ") + again.what());
+    }
+    catch(const std::invalid_argument& again)
+    {
+      throw std::invalid_argument(std::string("on the remeshed input too: ") + again.what());
+    }
+    catch(const std::logic_error& again)
+    {
+      throw std::logic_error(std::string("on the remeshed input too: ") + again.what());
     }
   }
 }
@@ -828,11 +838,11 @@ std::vector<Mesh> connected_components(Mesh input)
 // the h of 3000 quads, the 5 smallest only at a finer one). A component that gives no quads at h
 // (with its h +- 5% and its remeshed triangles) is tried at h / 1.25, h / 1.25^2, ... while that adds
 // at most 5% to the whole mesh's quads at h, so the face count stays near the target. With --method
-// auto, a component that gives no field quads then gets the harmonic method's at h. Returns the
-// components remeshed so (numbered from 1).
+// auto, a component that gives no field quads then gets the harmonic method's at h (about its share
+// by area of target_faces, when that is not 0). Returns the components remeshed so (numbered from 1).
 template <class Traits>
-std::vector<std::size_t> quads_by_component(const std::vector<Mesh>& parts, double h, const Options& o, Traits traits,
-                                            Mesh& quads)
+std::vector<std::size_t> quads_by_component(const std::vector<Mesh>& parts, double h, double target_faces,
+                                            const Options& o, Traits traits, Mesh& quads)
 {
   std::vector<std::size_t> harmonic;
   double total_area = 0.;
@@ -859,10 +869,19 @@ std::vector<std::size_t> quads_by_component(const std::vector<Mesh>& parts, doub
         const double finer = spacing / 1.25, added = a / (finer * finer) - a / (h * h);
         if(added > 0.05 * total_quads && o.method == "auto" && dynamic_cast<const std::runtime_error*>(&e))
         {
-          std::printf("component %zu: no field quads (%s); the harmonic method's quads at h = %.4g instead\n", c + 1,
-                      e.what(), h);
+          std::printf("component %zu: no field quads (%s); the harmonic method's quads at h = %.4g instead (the field "
+                      "method's options do not apply to them)\n", c + 1, e.what(), h);
           part_quads = Mesh();
-          harmonic_quads(parts[c], h, o.target_faces > 0. ? o.target_faces * a / total_area : 0., o, traits, part_quads);
+          try
+          {
+            harmonic_quads(parts[c], h, target_faces * a / total_area, o, traits, part_quads);
+          }
+          catch(const std::runtime_error& again)
+          {
+            throw std::runtime_error("component " + std::to_string(c + 1) + " of " + std::to_string(parts.size()) +
+                                     ": no quads from the field method (" + e.what() + ") nor from the harmonic method (" +
+                                     again.what() + ")");
+          }
           harmonic.push_back(c + 1);
           break;
         }
@@ -910,6 +929,9 @@ int run_field(const Options& o, Traits traits)
                                    "face inside");
   }
 
+  // the faces asked for, which a harmonic fall-back (auto) is calibrated to: --target-faces, or the
+  // default's 3000 (not with --edge-length)
+  const double target_faces = o.target_faces > 0. ? o.target_faces : o.edge_length > 0. ? 0. : 3000.;
   Mesh quads;
   // with given cones, one field over all the components (the cones are the whole mesh's)
   const std::vector<Mesh> parts = o.cones.empty() ? connected_components(input) : std::vector<Mesh>{};
@@ -917,7 +939,7 @@ int run_field(const Options& o, Traits traits)
   try
   {
     if(parts.size() > 1)
-      harmonic = quads_by_component(parts, h, o, traits, quads);
+      harmonic = quads_by_component(parts, h, target_faces, o, traits, quads);
     else
       quads_with_repair(input, o.cones, h, o, traits, quads);
   }
@@ -925,9 +947,18 @@ int run_field(const Options& o, Traits traits)
   {
     if(o.method == "auto" && parts.size() <= 1) // (several components fall back one by one)
     {
-      std::printf("no field quads (%s); the harmonic method's quads at h = %.4g instead\n", e.what(), h);
+      std::printf("no field quads (%s); the harmonic method's quads at h = %.4g instead (the field method's options do "
+                  "not apply to them)\n", e.what(), h);
       quads = Mesh();
-      harmonic_quads(input, h, o.target_faces, o, traits, quads);
+      try
+      {
+        harmonic_quads(input, h, target_faces, o, traits, quads);
+      }
+      catch(const std::runtime_error& again)
+      {
+        throw std::runtime_error(std::string("no quads from the field method (") + e.what() +
+                                 ") nor from the harmonic method (" + again.what() + ")");
+      }
       harmonic.push_back(1);
     }
     else

@@ -522,6 +522,12 @@ if ! grep -q "^method: field (auto: the field gave quads)" "$WORK/stdout" ||
   echo "FAILED: quad_remesh eight.off (auto): $(grep -E "^method|irregular" "$WORK/stdout")"
   failures=$((failures + 1))
 fi
+# the field method's options apply under auto
+accept quad_remesh "$E" --cone-distance 0 --stiffening-rounds 12 --target-faces 800 --output "$O/auto_options.off"
+if ! grep -q "^method: field (auto: the field gave quads)" "$WORK/stdout"; then
+  echo "FAILED: quad_remesh eight.off --cone-distance 0 (auto): $(grep -E "^method" "$WORK/stdout")"
+  failures=$((failures + 1))
+fi
 # blobby_3cc, which --method field refuses (above): the field's quads on its first component, the
 # harmonic method's on the other two; every component, boundary loop and the Euler characteristic
 # kept (the program's own check before it writes)
@@ -545,8 +551,8 @@ fi
 # times the faces of sqrt(area / N): the spacing is calibrated, within 10% or the closest of 4 nets)
 accept quad_remesh "$E" --method harmonic --target-faces 800 --output "$O/harmonic_800.off"
 faces=$(awk '/^output:/ { print $4 }' "$WORK/stdout")
-if ! grep -q "faces for about 800 asked (--target-faces): the net again at h = " "$WORK/stdout" ||
-   [ -z "$faces" ] || [ "$faces" -lt 600 ] || [ "$faces" -gt 1000 ]; then
+if ! grep -q "faces for about 800 asked: the net again at h = " "$WORK/stdout" ||
+   [ -z "$faces" ] || [ "$faces" -lt 720 ] || [ "$faces" -gt 880 ]; then
   echo "FAILED: quad_remesh eight.off --method harmonic --target-faces 800: $faces faces: $(grep -E "asked|output" "$WORK/stdout")"
   failures=$((failures + 1))
 fi
